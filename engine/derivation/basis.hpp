@@ -1,0 +1,42 @@
+#pragma once
+// Step 1, `basis`: contact coordinates from the contact normal.
+//
+// The chapter: "If we use this point as the origin, and the contact normal as one axis, we can form an
+// orthonormal basis around it". Contact x is the normal; the two tangents span the contact plane, where
+// friction acts. The basis matrix has the three axes as its COLUMNS, so it maps contact -> world, and its
+// transpose maps world -> contact.
+
+#include "math/types.hpp"
+
+namespace impulse {
+
+// Which world axis the normal was crossed with to seed tangent 1.
+enum class TangentSeed { world_x, world_y };
+
+struct Basis {
+    Vec3 normal;            // contact x: the contact normal (unit)
+    TangentSeed seed;       // world axis used to build tangent 1
+    Vec3 tangent1;          // contact y: normalise(seed x n)
+    Vec3 tangent2;          // contact z: n x tangent1
+    Mat3 contact_to_world;  // columns (normal, tangent1, tangent2)
+
+    bool operator==(const Basis&) const = default;
+};
+
+// Tangent construction (stated here, in the trace and in docs/trace-format.md):
+//   if |n.x| > |n.y|: tangent1 = normalise(world Y x n)   (the normal leans towards X, so Y is far from it)
+//   otherwise:        tangent1 = normalise(world X x n)
+//   tangent2 = n x tangent1
+// Crossing with the world axis the normal is farther from keeps the length before normalising at least
+// 1/sqrt(2) for any unit normal, so no axis is ever degenerate. Unlike the reference engine, tangent 2 is
+// the true cross product in both branches, so the basis is orthonormal and right-handed for every normal.
+Basis basis(const Vec3& unit_normal);
+
+inline Vec3 to_contact(const Basis& b, const Vec3& world) {
+    return b.contact_to_world.transpose() * world;
+}
+inline Vec3 to_world(const Basis& b, const Vec3& contact) {
+    return b.contact_to_world * contact;
+}
+
+}  // namespace impulse

@@ -1,0 +1,40 @@
+#pragma once
+// Step 5, `desired_delta_velocity`: the change of separating velocity the impulse must make.
+// The chapter: v_s' = -c v_s, so delta v = -(1 + c) v_s. The reference engine adds two chapter-15
+// refinements, each a named, recorded option here.
+
+#include "derivation/contact_velocity.hpp"
+#include "math/types.hpp"
+
+namespace impulse {
+
+struct VelocityRefinements {
+    // Contacts closing slower than this (m/s) bounce with restitution 0, so resting contacts do not
+    // jitter; 0 switches the cut-off off. Reference engine: 0.25.
+    double restitution_cutoff = 0.25;
+    // Remove from the bounce the velocity that last frame's acceleration built up along the normal.
+    bool velocity_from_acceleration = true;
+    // Add the tangential part of last frame's acceleration to the contact velocity (step 4).
+    bool tangential_acceleration_velocity = true;
+
+    bool operator==(const VelocityRefinements&) const = default;
+};
+
+struct DesiredDeltaVelocity {
+    double separating_velocity;               // v_s = contact_velocity.x (negative = closing)
+    double restitution;                       // c as given for the contact
+    double restitution_cutoff;                // the cut-off speed in force (0 = off)
+    bool restitution_cutoff_applied;          // |v_s| < cut-off, so the restitution used is 0
+    double restitution_used;                  // c, or 0 when the cut-off applied
+    bool velocity_from_acceleration_applied;  // the refinement is on
+    double velocity_from_acceleration;        // (a0 - a1) . n x duration; 0 when off
+    double desired_delta_velocity;            // -v_s - c_used (v_s - velocity_from_acceleration)
+
+    bool operator==(const DesiredDeltaVelocity&) const = default;
+};
+
+DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double restitution, const Vec3& normal,
+                                            const PerBody<BodyMotion>& motion, double duration,
+                                            const VelocityRefinements& refinements);
+
+}  // namespace impulse

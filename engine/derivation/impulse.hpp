@@ -1,0 +1,60 @@
+#pragma once
+// Step 6, `impulse_contact` and `impulse_world`: the impulse that makes the desired velocity change.
+// Frictionless (the chapter, 14.3) when the contact's friction is exactly 0, as in the reference engine;
+// otherwise the reference engine's chapter-15 friction impulse: a 3x3 solve in contact coordinates that
+// also stops all sliding, limited by the friction cone.
+
+#include "derivation/basis.hpp"
+#include "derivation/velocity_per_unit_impulse.hpp"
+#include "math/types.hpp"
+
+#include <optional>
+
+namespace impulse {
+
+enum class ImpulseModel {
+    frictionless,      // g = delta v / d along the normal only
+    static_friction,   // the solve's impulse lies inside the cone: sliding stops
+    sliding_friction,  // outside the cone: the tangential impulse is cut back to mu times the normal one
+};
+
+struct FrictionSolve {
+    // K: change of contact velocity per unit impulse, both in contact coordinates,
+    // K = C^T (sum_i m_i^-1 1 - [q_rel_i]x I_i^-1 [q_rel_i]x) C.
+    Mat3 delta_velocity_matrix;
+    Vec3 target_delta_velocity;  // (desired delta v, -v_t1, -v_t2): reach the bounce, stop the sliding
+    bool solvable;               // K is invertible (false only when neither body can translate)
+    Vec3 static_impulse;         // K^-1 target: the impulse if friction can hold
+    double tangential_impulse;   // |(g_t1, g_t2)| of the static impulse
+    double cone_limit;           // mu g_n of the static impulse
+    // Sliding only: the tangential direction kept from the static solution, and the normal velocity change
+    // per unit normal impulse when the tangential impulse follows it on the cone,
+    // K00 + mu (K01 y + K02 z).
+    std::optional<Eigen::Vector2d> sliding_direction;
+    std::optional<double> sliding_normal_response;
+
+    bool operator==(const FrictionSolve&) const = default;
+};
+
+struct Impulse {
+    ImpulseModel model;
+    std::optional<FrictionSolve> friction;  // present when the contact has friction
+    Vec3 impulse_contact;                   // (g_n, g_t1, g_t2)
+    Vec3 impulse_world;                     // basis . impulse_contact
+
+    bool operator==(const Impulse&) const = default;
+};
+
+// g = v / d  (14.3), along the contact normal only.
+Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_per_unit_impulse);
+
+FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
+                             const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
+                             double desired_delta_velocity, double friction);
+
+// The whole step: picks the model, returns the impulse in contact and world coordinates.
+Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relative_position,
+                          const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
+                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction);
+
+}  // namespace impulse

@@ -1,0 +1,23 @@
+#pragma once
+// Step 7, `velocity_change` and `rotation_change`: the impulse split into each body's linear and angular
+// response. Body 0 receives +g, body 1 receives -g.
+
+#include "derivation/velocity_per_unit_impulse.hpp"
+#include "math/types.hpp"
+
+namespace impulse {
+
+struct VelocityChange {
+    PerBody<Vec3> impulsive_torque;  // u = q_rel x (+-g)  (14.2)
+    PerBody<Vec3> velocity_change;   // delta p-dot = (+-g) m^-1  (7.5)
+    PerBody<Vec3> rotation_change;   // delta theta-dot = I^-1 u  (14.1)
+
+    bool operator==(const VelocityChange&) const = default;
+};
+
+// Follows equation 14.2, u = q_rel x g. (The chapter's code snippet writes g x q_rel, which has the
+// opposite sign; the reference engine's code agrees with the equation.)
+VelocityChange velocity_change(const Vec3& impulse_world, const PerBody<Vec3>& relative_position,
+                               const PerBody<MassProperties>& mass);
+
+}  // namespace impulse

@@ -1,0 +1,61 @@
+#include "io/atomic_file.hpp"
+
+#include "io/input_error.hpp"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <string>
+#include <unistd.h>
+
+namespace impulse::io {
+
+namespace {
+
+[[noreturn]] void fail(std::string_view flag, const std::filesystem::path& path, const std::string& reason) {
+    throw InputError(std::string(flag), "cannot write '" + path.string() + "': " + reason);
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view flag) {
+    if (path.empty()) fail(flag, path, "empty file name");
+    const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
+    std::string temporary = (directory / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+    const int fd = ::mkstemp(temporary.data());
+    if (fd < 0) fail(flag, path, std::strerror(errno));
+    // mkstemp creates the file 0600; give it the permissions a normally created file would have.
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    ::fchmod(fd, 0666 & ~mask);
+
+    std::size_t written = 0;
+    while (written < contents.size()) {
+        const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            const std::string reason = std::strerror(errno);
+            ::close(fd);
+            ::unlink(temporary.c_str());
+            fail(flag, path, reason);
+        }
+        written += static_cast<std::size_t>(n);
+    }
+    const bool synced = ::fsync(fd) == 0;
+    const std::string sync_reason = synced ? "" : std::strerror(errno);
+    const bool closed = ::close(fd) == 0;
+    if (!synced || !closed) {
+        const std::string reason = synced ? std::strerror(errno) : sync_reason;
+        ::unlink(temporary.c_str());
+        fail(flag, path, reason);
+    }
+    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+        const std::string reason = std::strerror(errno);
+        ::unlink(temporary.c_str());
+        fail(flag, path, reason);
+    }
+}
+
+}  // namespace impulse::io

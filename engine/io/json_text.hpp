@@ -1,0 +1,22 @@
+#pragma once
+// JSON text in and out. Reading is strict where nlohmann is lenient: a key given twice in one object is an
+// error (the second would silently win), and so is nesting deeper than a fixed limit. Writing keeps short
+// arrays (vectors, matrix rows) on one line so a person can read a trace.
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace impulse::io {
+
+inline constexpr int max_json_depth = 64;
+
+// Throws InputError: "invalid JSON at line 3, column 7: ..." (no path), or "<path>: key given twice".
+nlohmann::ordered_json parse_json_text(std::string_view text);
+
+// Indented two spaces; arrays of numbers (and arrays of such arrays) on one line. Doubles keep 17
+// significant digits, so a value read back is the same to the last bit.
+std::string format_json(const nlohmann::ordered_json& value);
+
+}  // namespace impulse::io

@@ -1,0 +1,63 @@
+#include "io/schemas.hpp"
+
+#include "io/input_error.hpp"
+#include "io/schema_validator.hpp"
+
+namespace impulse::io {
+
+namespace embedded {
+extern const std::string_view case_schema;   // schemas/case.schema.json, compiled in by CMake
+extern const std::string_view trace_schema;  // schemas/trace.schema.json
+}  // namespace embedded
+
+std::string_view case_schema_text() {
+    return embedded::case_schema;
+}
+std::string_view trace_schema_text() {
+    return embedded::trace_schema;
+}
+
+namespace {
+
+json parsed(std::string_view text) {
+    return json::parse(text.begin(), text.end());
+}
+
+// The validators are built on each call rather than kept in statics (no global state); parsing the schemas
+// costs well under a millisecond against the file being checked.
+SchemaValidator case_validator() {
+    return SchemaValidator(parsed(case_schema_text()));
+}
+
+SchemaValidator trace_validator() {
+    return SchemaValidator(parsed(trace_schema_text()), {{"case.schema.json", parsed(case_schema_text())}});
+}
+
+// A path inside `object` validated on its own becomes a path under `prefix`.
+std::string under(std::string_view prefix, const std::string& where) {
+    if (prefix.empty()) return where;
+    if (where.empty()) return std::string(prefix);
+    return std::string(prefix) + (where.front() == '[' ? "" : ".") + where;
+}
+
+}  // namespace
+
+void validate_case_document(const json& document) {
+    case_validator().validate(document);
+}
+
+void validate_trace_document(const json& document) {
+    trace_validator().validate(document);
+}
+
+void validate_settings_object(const json& settings, std::string_view path) {
+    const SchemaValidator validator(json{{"$ref", "case.schema.json#/$defs/settings"}},
+                                    {{"case.schema.json", parsed(case_schema_text())}});
+    try {
+        validator.validate(settings);
+    } catch (const InputError& e) {
+        throw InputError(under(path, e.where()), e.problem());
+    }
+}
+
+}  // namespace impulse::io

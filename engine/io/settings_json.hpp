@@ -1,0 +1,26 @@
+#pragma once
+// Resolver settings in JSON: a preset, then any single field changed. The same object appears in case
+// files (every field optional) and in trace headers (every field written, so a trace says exactly what ran).
+
+#include "io/json_values.hpp"
+#include "resolver/settings.hpp"
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace impulse::io {
+
+// `settings` may be null (no settings given). The preset is `preset_override` when given, else the
+// object's "preset", else "book"; the object's other fields then apply on top. Assumes the object passed
+// the settings schema; throws InputError (path under `path`) for what a schema cannot say.
+ResolverSettings read_settings(const json* settings, std::string_view path,
+                               const std::optional<std::string>& preset_override = std::nullopt);
+
+json settings_json(const ResolverSettings& settings);
+
+// Applies one `name=value` override, as `--set` gives it (value in JSON syntax, or a bare word for a
+// name); throws InputError naming `flag`.
+void apply_setting(ResolverSettings& settings, std::string_view assignment, std::string_view flag);
+
+}  // namespace impulse::io

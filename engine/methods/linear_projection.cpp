@@ -1,0 +1,34 @@
+// Linear projection: the chapter's first strategy, carried over from particles. The bodies move apart
+// along the contact normal, each in proportion to its inverse mass, and never turn. "Unfortunately it
+// isn't very realistic": a box resting on one corner slides sideways out of the ground instead of tipping.
+
+#include "methods/position_resolution.hpp"
+
+namespace impulse {
+
+PositionResolution linear_projection(const PreparedContact& contact, double amount) {
+    const ContactPreparation& d = contact.derivation;
+    PositionResolution r;
+    r.method = PositionMethod::linear_projection;
+    r.penetration = contact.penetration;
+    r.amount = amount;
+    // Nonlinear projection with every angular inertia taken as zero: all of the move is linear.
+    r.inertia.total_inertia = 0.0;
+    for (int i = 0; i < 2; ++i) {
+        if (!contact.mass[i]) continue;
+        r.inertia.linear_inertia[i] = contact.mass[i]->inverse_mass;
+        r.inertia.angular_inertia[i] = 0.0;
+        r.inertia.total_inertia += contact.mass[i]->inverse_mass;
+    }
+    if (r.inertia.total_inertia > 0.0) {
+        r.moves = move_split(amount, r.inertia);
+    } else {
+        // Neither body can translate: linear projection has nothing to move.
+        for (int i = 0; i < 2; ++i)
+            if (contact.mass[i]) r.moves.linear_move[i] = r.moves.angular_move[i] = 0.0;
+    }
+    r.change = position_change(r.moves, d.normal, d.velocity_per_unit_impulse);
+    return r;
+}
+
+}  // namespace impulse

@@ -1,0 +1,46 @@
+// Relaxation: "resolves only a proportion of the interpenetration at one go ... Each gets to resolve a
+// little, and then the others take their turns. This typically is repeated several times." Each pass
+// visits every contact still above the epsilon once, deepest first at the moment of choosing, and removes
+// `fraction` of its current penetration by nonlinear projection. Contacts that fight over one body (a
+// brick in a wall) then share the remaining penetration instead of one of them keeping all of it; the
+// price is that an isolated contact keeps (1 - fraction)^passes of its penetration.
+
+#include "resolver/phases.hpp"
+
+#include <algorithm>
+#include <vector>
+
+namespace impulse {
+
+PhaseOutcome relax_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
+                             const ResolverSettings& settings, Recorder& recorder) {
+    const auto penetration_of = [](const PreparedContact& c) { return c.penetration; };
+    PhaseOutcome outcome;
+    outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));
+    std::vector<char> visited(contacts.size());
+    for (int pass = 0; pass < settings.relaxation.passes; ++pass) {
+        if (!any_above(contacts, penetration_of, settings.position_epsilon)) break;
+        std::fill(visited.begin(), visited.end(), 0);
+        const auto already_visited = [&visited](int i) { return visited[static_cast<std::size_t>(i)] != 0; };
+        while (outcome.iterations_used < outcome.iteration_limit) {
+            const std::optional<int> chosen =
+                worst_contact(contacts, penetration_of, settings.position_epsilon, already_visited);
+            if (!chosen) break;
+            visited[static_cast<std::size_t>(*chosen)] = 1;
+            const double amount =
+                settings.relaxation.fraction * contacts[static_cast<std::size_t>(*chosen)].penetration;
+            resolve_penetration(bodies, contacts, *chosen, amount, outcome.iterations_used, pass, settings, recorder);
+            ++outcome.iterations_used;
+        }
+    }
+    // Relaxation leaves penetration by design; the stop reason says whether any is left above the epsilon,
+    // and whether the iteration limit cut the passes short.
+    const bool remaining = any_above(contacts, penetration_of, settings.position_epsilon);
+    outcome.stop = !remaining                                           ? StopReason::resolved
+                   : outcome.iterations_used == outcome.iteration_limit ? StopReason::iteration_limit
+                                                                        : StopReason::passes_complete;
+    recorder.end_phase(Phase::position, outcome);
+    return outcome;
+}
+
+}  // namespace impulse

@@ -1,0 +1,55 @@
+// Velocity-based resolution: "move the bodies back to the point of first collision ... we can move these
+// two points back along the paths they followed until they no longer overlap in the direction of the
+// contact normal". Each body goes back by the same time t along its straight-line and rotational path;
+// t is the penetration divided by the closing speed of the contact points, and never more than the frame
+// (they cannot go back before it began). What the paths cannot explain (a contact that was not closing, or
+// one deeper than a frame's travel) is removed by nonlinear projection, recorded beside the rewind.
+
+#include "methods/position_resolution.hpp"
+
+#include <algorithm>
+
+namespace impulse {
+
+PositionResolution velocity_based(const PreparedContact& contact, const PerBody<BodyMotion>& motion, double duration,
+                                  const AngularLimitSettings& limit, OrientationUpdate orientation_update) {
+    const ContactPreparation& d = contact.derivation;
+
+    // Only the motion a body can undo counts: an immovable body stays where it is even if it has a speed.
+    PerBody<Vec3> path_velocity, path_rotation;
+    Rewind rewind{};
+    double separating = 0.0;
+    for (int i = 0; i < 2; ++i) {
+        if (!contact.mass[i]) continue;
+        const bool translates = contact.mass[i]->inverse_mass > 0.0;
+        const bool turns = !contact.mass[i]->inverse_inertia_world.isZero(0.0);
+        path_velocity[i] = translates ? motion[i]->velocity : Vec3::Zero();
+        path_rotation[i] = turns ? motion[i]->angular_velocity : Vec3::Zero();
+        const Vec3 point_velocity = path_rotation[i]->cross(*d.relative_position[i]) + *path_velocity[i];
+        separating += body_sign(i) * point_velocity.dot(d.normal);
+    }
+    rewind.closing_velocity = -separating;
+    rewind.time_limit = duration;
+    rewind.time =
+        rewind.closing_velocity > 0.0 ? std::min(contact.penetration / rewind.closing_velocity, duration) : 0.0;
+    rewind.removed_penetration = rewind.closing_velocity * rewind.time;
+    for (int i = 0; i < 2; ++i) {
+        if (!contact.mass[i]) continue;
+        rewind.linear_change[i] = -*path_velocity[i] * rewind.time;
+        rewind.angular_change[i] = -*path_rotation[i] * rewind.time;
+    }
+
+    // The rest, if any, by nonlinear projection.
+    PositionResolution r =
+        nonlinear_projection(contact, contact.penetration - rewind.removed_penetration, limit, orientation_update);
+    r.method = PositionMethod::velocity_based;
+    for (int i = 0; i < 2; ++i) {
+        if (!contact.mass[i]) continue;
+        *r.change.linear_change[i] += *rewind.linear_change[i];
+        *r.change.angular_change[i] += *rewind.angular_change[i];
+    }
+    r.rewind = rewind;
+    return r;
+}
+
+}  // namespace impulse

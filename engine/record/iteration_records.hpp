@@ -1,0 +1,92 @@
+#pragma once
+// What one resolver iteration did, as plain structs: the contact chosen and why, the derivation values of
+// the move or impulse, and every update it made to the bookkeeping of the contacts that share a body.
+
+#include "derivation/desired_delta_velocity.hpp"
+#include "derivation/impulse.hpp"
+#include "derivation/velocity_change.hpp"
+#include "methods/position_resolution.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace impulse {
+
+enum class Phase { position, velocity };
+
+// One contact's penetration changed because one of its bodies moved:
+// penetration -= (linear_change + angular_change x q_rel) . n for its body 0, += for its body 1.
+struct PenetrationUpdate {
+    int contact;   // the contact updated
+    int body;      // the moved body (index in the body list)
+    int slot;      // 0 or 1: which of the updated contact's bodies that is
+    double delta;  // change of its penetration
+    double before;
+    double after;
+
+    bool operator==(const PenetrationUpdate&) const = default;
+};
+
+// One contact's velocity changed because one of its bodies received an impulse:
+// contact_velocity += +-C^T (velocity_change + rotation_change x q_rel), then step 5 again.
+struct VelocityUpdate {
+    int contact;
+    int body;
+    int slot;
+    Vec3 delta;  // change of its contact velocity, contact coordinates
+    Vec3 before;
+    Vec3 after;
+    double desired_delta_velocity_before;
+    double desired_delta_velocity_after;
+
+    bool operator==(const VelocityUpdate&) const = default;
+};
+
+struct PositionIteration {
+    int iteration;
+    int contact;         // the contact chosen: the deepest above the epsilon
+    double penetration;  // its penetration, compared with the epsilon
+    double epsilon;
+    std::optional<int> pass;  // relaxation only: which pass this iteration belongs to
+    // Absent when the recorder's contact filter leaves the chosen contact out.
+    std::optional<PositionResolution> resolution;
+    std::vector<PenetrationUpdate> updates;
+
+    bool operator==(const PositionIteration&) const = default;
+};
+
+struct VelocityResolution {
+    Vec3 contact_velocity;                        // step 4 as the bookkeeping has it now
+    DesiredDeltaVelocity desired_delta_velocity;  // step 5 re-evaluated on that velocity
+    Impulse impulse;                              // step 6
+    VelocityChange velocity_change;               // step 7
+
+    bool operator==(const VelocityResolution&) const = default;
+};
+
+struct VelocityIteration {
+    int iteration;
+    int contact;                    // the contact chosen: the largest desired delta v above the epsilon
+    double desired_delta_velocity;  // its value, compared with the epsilon
+    double epsilon;
+    std::optional<VelocityResolution> resolution;  // absent when filtered out
+    std::vector<VelocityUpdate> updates;
+
+    bool operator==(const VelocityIteration&) const = default;
+};
+
+enum class StopReason {
+    resolved,         // nothing left above the epsilon
+    iteration_limit,  // the limit was reached with something still above the epsilon
+    passes_complete,  // relaxation ran all its passes; what remains above the epsilon is left by design
+};
+
+struct PhaseOutcome {
+    int iteration_limit = 0;
+    int iterations_used = 0;
+    StopReason stop = StopReason::resolved;
+
+    bool operator==(const PhaseOutcome&) const = default;
+};
+
+}  // namespace impulse

@@ -1,0 +1,31 @@
+#pragma once
+// The recorder is a sink the resolver reports to. The default does nothing, so resolving unobserved costs
+// nothing beyond the derivation values the resolver computes anyway; the maths never knows whether it is
+// being watched.
+
+#include "body/rigid_body.hpp"
+#include "record/iteration_records.hpp"
+#include "resolver/prepared_contact.hpp"
+
+#include <span>
+
+namespace impulse {
+
+class Recorder {
+public:
+    virtual ~Recorder() = default;
+
+    // Whether iterations should carry their lists of updates to other contacts (an allocation per
+    // iteration, skipped when nobody listens).
+    virtual bool wants_updates() const { return false; }
+
+    virtual void begin_frame(int /*frame*/, std::span<const RigidBody> /*bodies*/,
+                             std::span<const MassProperties> /*mass*/) {}
+    virtual void contacts_prepared(std::span<const PreparedContact> /*contacts*/) {}
+    virtual void position_iteration(const PositionIteration& /*iteration*/) {}
+    virtual void velocity_iteration(const VelocityIteration& /*iteration*/) {}
+    virtual void end_phase(Phase /*phase*/, const PhaseOutcome& /*outcome*/) {}
+    virtual void end_frame(std::span<const RigidBody> /*bodies*/) {}
+};
+
+}  // namespace impulse

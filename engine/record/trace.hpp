@@ -1,0 +1,71 @@
+#pragma once
+// A trace: everything one run of the resolver computed, as plain structs. The JSON recorder fills it, the
+// trace file stores it (engine/io/trace_json), and the inspector, lessons and `diff` read it back.
+
+#include "record/iteration_records.hpp"
+#include "resolver/prepared_contact.hpp"
+#include "scene/case.hpp"
+
+#include <climits>
+#include <optional>
+#include <vector>
+
+namespace impulse {
+
+inline constexpr int trace_format_version = 1;
+
+// The part of a body's state that resolution changes.
+struct BodyState {
+    Vec3 position;
+    Quat orientation;
+    Vec3 velocity;
+    Vec3 angular_velocity;
+
+    bool operator==(const BodyState&) const = default;
+};
+
+template <typename Iteration>
+struct PhaseLog {
+    PhaseOutcome outcome;
+    std::vector<Iteration> iterations;
+
+    bool operator==(const PhaseLog&) const = default;
+};
+
+struct FrameRecord {
+    int frame = 0;
+    std::vector<BodyState> bodies_before;
+    std::vector<Mat3> inverse_inertia_world;   // per body, as the whole frame uses it
+    std::vector<ContactPreparation> contacts;  // steps 1-5 of each recorded contact
+    PhaseOrder phase_order = PhaseOrder::positions_first;
+    PhaseLog<PositionIteration> position;
+    PhaseLog<VelocityIteration> velocity;
+    std::vector<BodyState> bodies_after;
+
+    bool operator==(const FrameRecord&) const = default;
+};
+
+// Which part of a run is recorded, so large scenes stay small.
+struct TraceFilter {
+    int first_frame = 0;
+    int last_frame = INT_MAX;
+    std::optional<std::vector<int>> contacts;  // absent = every contact
+
+    bool records_frame(int frame) const { return frame >= first_frame && frame <= last_frame; }
+    bool records_contact(int contact) const;
+
+    bool operator==(const TraceFilter&) const = default;
+};
+
+struct Trace {
+    int version = trace_format_version;
+    Case scene;  // the bodies and contacts as loaded, with the settings that ran
+    TraceFilter recording;
+    std::vector<FrameRecord> frames;
+
+    bool operator==(const Trace&) const = default;
+};
+
+BodyState state_of(const RigidBody& body);
+
+}  // namespace impulse

@@ -1,0 +1,60 @@
+#include "resolver/bookkeeping.hpp"
+
+namespace impulse {
+
+namespace {
+
+// Calls visit(other, slot, m) for every contact `other` whose body `slot` is the moved body `m` (0 or 1 of
+// the resolved contact). The world never moves. A contact sharing both moved bodies is visited twice.
+template <typename Visit>
+void for_each_contact_sharing(std::vector<PreparedContact>& contacts, const std::array<int, 2>& moved, Visit visit) {
+    for (PreparedContact& other : contacts)
+        for (int slot = 0; slot < 2; ++slot) {
+            const int body = other.derivation.bodies[slot];
+            if (body == world_body) continue;
+            for (int m = 0; m < 2; ++m)
+                if (moved[m] == body) visit(other, slot, m);
+        }
+}
+
+}  // namespace
+
+void update_penetrations(std::vector<PreparedContact>& contacts, const std::array<int, 2>& moved,
+                         const PositionChange& change, std::vector<PenetrationUpdate>* log) {
+    for_each_contact_sharing(contacts, moved, [&](PreparedContact& other, int slot, int m) {
+        const ContactPreparation& d = other.derivation;
+        // How far this contact's point on the moved body travelled along this contact's normal:
+        // the translation plus the rotation's linear effect at the point, (dtheta x q_rel) . n.
+        const Vec3 point_move = *change.linear_change[m] + change.angular_change[m]->cross(*d.relative_position[slot]);
+        // Body 0 moving along +n opens the contact; body 1 moving along +n closes it.
+        const double delta = -body_sign(slot) * point_move.dot(d.normal);
+        const double before = other.penetration;
+        other.penetration += delta;
+        if (log) log->push_back({d.contact, moved[m], slot, delta, before, other.penetration});
+    });
+}
+
+void update_contact_velocities(std::vector<PreparedContact>& contacts, const std::array<int, 2>& moved,
+                               const VelocityChange& change, const ResolverSettings& settings,
+                               std::vector<VelocityUpdate>* log) {
+    for_each_contact_sharing(contacts, moved, [&](PreparedContact& other, int slot, int m) {
+        const ContactPreparation& d = other.derivation;
+        // The velocity change of this contact's point on the changed body (9.5), in its contact
+        // coordinates, counted positive for body 0 and negative for body 1.
+        const Vec3 point_change =
+            *change.velocity_change[m] + change.rotation_change[m]->cross(*d.relative_position[slot]);
+        const Vec3 delta = body_sign(slot) * to_contact(d.basis, point_change);
+        const Vec3 before = other.contact_velocity;
+        const double desired_before = other.desired_delta_velocity.desired_delta_velocity;
+        other.contact_velocity += delta;
+        // The reference engine re-runs step 5 on the partly resolved velocity, so the restitution cut-off is
+        // judged again against the current closing speed.
+        other.desired_delta_velocity = desired_delta_velocity(other.contact_velocity.x(), d.restitution, d.normal,
+                                                              other.motion, settings.duration, settings.refinements);
+        if (log)
+            log->push_back({d.contact, moved[m], slot, delta, before, other.contact_velocity, desired_before,
+                            other.desired_delta_velocity.desired_delta_velocity});
+    });
+}
+
+}  // namespace impulse

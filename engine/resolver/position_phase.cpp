@@ -1,0 +1,108 @@
+#include "methods/position_resolution.hpp"
+#include "resolver/bookkeeping.hpp"
+#include "resolver/phases.hpp"
+
+namespace impulse {
+
+std::optional<int> worst_contact(const std::vector<PreparedContact>& contacts,
+                                 const std::function<double(const PreparedContact&)>& value, double epsilon,
+                                 const std::function<bool(int)>& skip) {
+    std::optional<int> worst;
+    double largest = epsilon;
+    for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
+        const PreparedContact& c = contacts[static_cast<std::size_t>(i)];
+        if (c.derivation.inert || (skip && skip(i))) continue;
+        const double v = value(c);
+        if (v > largest) {
+            largest = v;
+            worst = i;
+        }
+    }
+    return worst;
+}
+
+bool any_above(const std::vector<PreparedContact>& contacts, const std::function<double(const PreparedContact&)>& value,
+               double epsilon) {
+    return worst_contact(contacts, value, epsilon).has_value();
+}
+
+namespace {
+
+double penetration_of(const PreparedContact& c) {
+    return c.penetration;
+}
+
+PositionResolution projection_for(const PreparedContact& contact, double amount, std::span<const RigidBody> bodies,
+                                  const ResolverSettings& settings) {
+    switch (settings.position_method) {
+        case PositionMethod::linear_projection:
+            return linear_projection(contact, amount);
+        case PositionMethod::velocity_based: {
+            PerBody<BodyMotion> motion;
+            for (int i = 0; i < 2; ++i) {
+                const int id = contact.derivation.bodies[i];
+                if (id == world_body) continue;
+                const RigidBody& body = bodies[static_cast<std::size_t>(id)];
+                motion[i] = BodyMotion{body.velocity, body.angular_velocity, body.last_frame_acceleration};
+            }
+            return velocity_based(contact, motion, settings.duration, settings.angular_limit,
+                                  settings.orientation_update);
+        }
+        case PositionMethod::nonlinear_projection:
+        case PositionMethod::relaxation: {
+            PositionResolution r =
+                nonlinear_projection(contact, amount, settings.angular_limit, settings.orientation_update);
+            r.method = settings.position_method;
+            return r;
+        }
+    }
+    return linear_projection(contact, amount);
+}
+
+}  // namespace
+
+void resolve_penetration(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts, int chosen,
+                         double amount, int iteration, std::optional<int> pass, const ResolverSettings& settings,
+                         Recorder& recorder) {
+    const PreparedContact& contact = contacts[static_cast<std::size_t>(chosen)];
+    PositionIteration record{iteration,
+                             chosen,
+                             contact.penetration,
+                             settings.position_epsilon,
+                             pass,
+                             projection_for(contact, amount, bodies, settings),
+                             {}};
+    const std::array<int, 2> moved = contact.derivation.bodies;
+    const PositionChange& change = record.resolution->change;
+    for (int i = 0; i < 2; ++i) {
+        if (moved[i] == world_body) continue;
+        RigidBody& body = bodies[static_cast<std::size_t>(moved[i])];
+        body.position += *change.linear_change[i];
+        body.orientation = rotated(body.orientation, *change.angular_change[i], settings.orientation_update);
+    }
+    update_penetrations(contacts, moved, change, recorder.wants_updates() ? &record.updates : nullptr);
+    recorder.position_iteration(record);
+}
+
+PhaseOutcome resolve_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
+                               const ResolverSettings& settings, Recorder& recorder) {
+    if (settings.position_method == PositionMethod::relaxation)
+        return relax_positions(bodies, contacts, settings, recorder);
+
+    PhaseOutcome outcome;
+    outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));
+    while (outcome.iterations_used < outcome.iteration_limit) {
+        const std::optional<int> chosen = worst_contact(contacts, penetration_of, settings.position_epsilon);
+        if (!chosen) break;
+        const double penetration = contacts[static_cast<std::size_t>(*chosen)].penetration;
+        resolve_penetration(bodies, contacts, *chosen, penetration, outcome.iterations_used, std::nullopt, settings,
+                            recorder);
+        ++outcome.iterations_used;
+    }
+    outcome.stop = any_above(contacts, penetration_of, settings.position_epsilon) ? StopReason::iteration_limit
+                                                                                  : StopReason::resolved;
+    recorder.end_phase(Phase::position, outcome);
+    return outcome;
+}
+
+}  // namespace impulse

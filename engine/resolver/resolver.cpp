@@ -1,0 +1,33 @@
+#include "resolver/resolver.hpp"
+
+#include "resolver/phases.hpp"
+#include "resolver/prepared_contact.hpp"
+
+namespace impulse {
+
+ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
+                                   const ResolverSettings& settings, Recorder& recorder, int frame) {
+    const std::vector<MassProperties> mass = mass_properties(bodies);
+    recorder.begin_frame(frame, bodies, mass);
+    std::vector<PreparedContact> prepared = prepare_contacts(contacts, bodies, mass, settings);
+    recorder.contacts_prepared(prepared);
+
+    ResolutionSummary summary;
+    if (settings.phase_order == PhaseOrder::positions_first) {
+        summary.position = resolve_positions(bodies, prepared, settings, recorder);
+        summary.velocity = resolve_velocities(bodies, prepared, settings, recorder);
+    } else {
+        summary.velocity = resolve_velocities(bodies, prepared, settings, recorder);
+        summary.position = resolve_positions(bodies, prepared, settings, recorder);
+    }
+    recorder.end_frame(bodies);
+    return summary;
+}
+
+ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
+                                   const ResolverSettings& settings) {
+    Recorder nobody;
+    return resolve_contacts(bodies, contacts, settings, nobody);
+}
+
+}  // namespace impulse

@@ -1,0 +1,31 @@
+#pragma once
+// The resolver: prepare every contact (steps 1-5), then run the position and velocity phases in the order
+// the settings give (the book: positions first). Stateless: all it needs travels in its arguments.
+
+#include "body/rigid_body.hpp"
+#include "contact/contact.hpp"
+#include "record/recorder.hpp"
+#include "resolver/settings.hpp"
+
+#include <span>
+#include <vector>
+
+namespace impulse {
+
+struct ResolutionSummary {
+    PhaseOutcome position;
+    PhaseOutcome velocity;
+
+    bool operator==(const ResolutionSummary&) const = default;
+};
+
+// Resolves `contacts` between `bodies` once (one frame), changing the bodies' positions, orientations and
+// velocities. Contacts must name bodies inside the list, body 0 and body 1 different, unit normals.
+ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
+                                   const ResolverSettings& settings, Recorder& recorder, int frame = 0);
+
+// The same with nobody listening.
+ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
+                                   const ResolverSettings& settings);
+
+}  // namespace impulse

@@ -1,0 +1,66 @@
+#pragma once
+// The snake_case names of the settings' enumerations: the same words in case files, traces, the command
+// line and the inspector. One table per enumeration, read both ways.
+
+#include "derivation/basis.hpp"
+#include "derivation/impulse.hpp"
+#include "resolver/settings.hpp"
+
+#include <array>
+#include <optional>
+#include <string_view>
+#include <utility>
+
+namespace impulse {
+
+template <typename Enum, std::size_t N>
+using NameTable = std::array<std::pair<Enum, std::string_view>, N>;
+
+inline constexpr NameTable<PhaseOrder, 2> phase_order_names{{
+    {PhaseOrder::positions_first, "positions_first"},
+    {PhaseOrder::velocities_first, "velocities_first"},
+}};
+inline constexpr NameTable<PositionMethod, 4> position_method_names{{
+    {PositionMethod::linear_projection, "linear_projection"},
+    {PositionMethod::nonlinear_projection, "nonlinear_projection"},
+    {PositionMethod::velocity_based, "velocity_based"},
+    {PositionMethod::relaxation, "relaxation"},
+}};
+inline constexpr NameTable<VelocityMethod, 1> velocity_method_names{{
+    {VelocityMethod::worst_first, "worst_first"},
+}};
+inline constexpr NameTable<AngularLimitPolicy, 4> angular_limit_policy_names{{
+    {AngularLimitPolicy::none, "none"},
+    {AngularLimitPolicy::fixed, "fixed"},
+    {AngularLimitPolicy::lever_arm, "lever_arm"},
+    {AngularLimitPolicy::angle, "angle"},
+}};
+inline constexpr NameTable<OrientationUpdate, 2> orientation_update_names{{
+    {OrientationUpdate::first_order, "first_order"},
+    {OrientationUpdate::exact, "exact"},
+}};
+inline constexpr NameTable<TangentSeed, 2> tangent_seed_names{{
+    {TangentSeed::world_x, "world_x"},
+    {TangentSeed::world_y, "world_y"},
+}};
+inline constexpr NameTable<ImpulseModel, 3> impulse_model_names{{
+    {ImpulseModel::frictionless, "frictionless"},
+    {ImpulseModel::static_friction, "static"},
+    {ImpulseModel::sliding_friction, "sliding"},
+}};
+
+template <typename Enum, std::size_t N>
+constexpr std::string_view name_of(const NameTable<Enum, N>& table, Enum value) {
+    for (const auto& [e, n] : table)
+        if (e == value) return n;
+    return "?";
+}
+
+template <typename Enum, std::size_t N>
+constexpr std::optional<Enum> value_of(const NameTable<Enum, N>& table, std::string_view name) {
+    for (const auto& [e, n] : table)
+        if (n == name) return e;
+    return std::nullopt;
+}
+
+}  // namespace impulse

@@ -1,0 +1,58 @@
+#include "derivation/impulse.hpp"
+#include "derivation/velocity_change.hpp"
+#include "resolver/bookkeeping.hpp"
+#include "resolver/phases.hpp"
+
+namespace impulse {
+
+namespace {
+
+double desired_of(const PreparedContact& c) {
+    return c.desired_delta_velocity.desired_delta_velocity;
+}
+
+// Steps 6 and 7 for the chosen contact, on its current (partly resolved) velocity.
+VelocityResolution resolve_velocity(const PreparedContact& contact) {
+    const ContactPreparation& d = contact.derivation;
+    VelocityResolution r;
+    r.contact_velocity = contact.contact_velocity;
+    r.desired_delta_velocity = contact.desired_delta_velocity;
+    r.impulse = calculate_impulse(d.basis, d.relative_position, contact.mass, contact.contact_velocity,
+                                  contact.desired_delta_velocity.desired_delta_velocity,
+                                  d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, d.friction);
+    r.velocity_change = velocity_change(r.impulse.impulse_world, d.relative_position, contact.mass);
+    return r;
+}
+
+}  // namespace
+
+PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
+                                const ResolverSettings& settings, Recorder& recorder) {
+    PhaseOutcome outcome;
+    outcome.iteration_limit = velocity_iteration_limit(settings, static_cast<int>(contacts.size()));
+    while (outcome.iterations_used < outcome.iteration_limit) {
+        const std::optional<int> chosen = worst_contact(contacts, desired_of, settings.velocity_epsilon);
+        if (!chosen) break;
+        const PreparedContact& contact = contacts[static_cast<std::size_t>(*chosen)];
+        VelocityIteration record{outcome.iterations_used,   *chosen, desired_of(contact), settings.velocity_epsilon,
+                                 resolve_velocity(contact), {}};
+        const std::array<int, 2> changed = contact.derivation.bodies;
+        const VelocityChange& change = record.resolution->velocity_change;
+        for (int i = 0; i < 2; ++i) {
+            if (changed[i] == world_body) continue;
+            RigidBody& body = bodies[static_cast<std::size_t>(changed[i])];
+            body.velocity += *change.velocity_change[i];
+            body.angular_velocity += *change.rotation_change[i];
+        }
+        update_contact_velocities(contacts, changed, change, settings,
+                                  recorder.wants_updates() ? &record.updates : nullptr);
+        recorder.velocity_iteration(record);
+        ++outcome.iterations_used;
+    }
+    outcome.stop =
+        any_above(contacts, desired_of, settings.velocity_epsilon) ? StopReason::iteration_limit : StopReason::resolved;
+    recorder.end_phase(Phase::velocity, outcome);
+    return outcome;
+}
+
+}  // namespace impulse

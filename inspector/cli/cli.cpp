@@ -1,0 +1,98 @@
+#include "cli/cli.hpp"
+
+#include "cli/commands.hpp"
+#include "cli/input_files.hpp"
+#include "io/input_error.hpp"
+#include "record/trace.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+
+namespace impulse::cli {
+
+namespace {
+
+constexpr const char* version_text = "impulse-lab " IMPULSE_LAB_VERSION;
+
+void add_resolve(CLI::App& app, ResolveOptions& o) {
+    CLI::App* resolve = app.add_subcommand("resolve",
+                                           "Resolve a case's contacts once and record every derivation step.\n"
+                                           "Example: impulse-lab resolve scenes/cases/ruler.json --explain");
+    resolve->add_option("CASE", o.case_file, "Case file (JSON): bodies, explicit contacts, settings")->required();
+    resolve->add_option("--preset", o.preset, "Settings preset the case's own settings apply on top of")
+        ->check(CLI::IsMember({"book", "chapter"}));
+    resolve->add_option("--set", o.settings,
+                        "Change one setting, e.g. --set position_method=linear_projection or "
+                        "--set angular_limit.policy=angle (repeatable; applied after the case's settings)");
+    resolve->add_option("--trace", o.trace_file, "Write the trace (JSON) to this file, atomically");
+    resolve->add_option("--record", o.record,
+                        "Record only part of the run: frames=A..B or contacts=I,J,... (repeatable)");
+    resolve->add_flag("--explain", o.explain,
+                      "Print every derivation step as a table: quantity, value, formula, equation, meaning");
+}
+
+void add_validate(CLI::App& app, std::vector<std::string>& files) {
+    CLI::App* validate = app.add_subcommand("validate", "Check case and trace files against their schemas");
+    validate->add_option("FILE", files, "Case or trace files (JSON)")->required();
+}
+
+// CLI11 forms of a user's mistake as one line: "impulse-lab resolve: --preset: ..." with a pointer to help.
+std::string one_line(const std::string& text) {
+    std::string line = text;
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    return line;
+}
+
+}  // namespace
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    CLI::App app{"Impulse Lab: step through rigid-body collision resolution (Millington, ch. 14)", "impulse-lab"};
+    app.set_version_flag("--version", version_text);
+    app.require_subcommand(1);
+    ResolveOptions resolve;
+    std::vector<std::string> validate_files;
+    add_resolve(app, resolve);
+    add_validate(app, validate_files);
+
+    // CLI11 would say only "A subcommand is required" for a misspelt command; name it instead.
+    const auto is_command = [&app](const std::string& name) {
+        return !app.get_subcommands([&name](const CLI::App* sub) { return sub->get_name() == name; }).empty();
+    };
+    if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_command(args[0])) {
+        err << "impulse-lab: unknown command \"" << args[0]
+            << "\" (commands: resolve, validate; see impulse-lab --help)\n";
+        return exit_bad_input;
+    }
+    try {
+        std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 parses a reversed vector
+        app.parse(reversed);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e, out, err);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e, out, err);
+    } catch (const CLI::CallForVersion& e) {
+        out << version_text << '\n';
+        return exit_ok;
+    } catch (const CLI::ParseError& e) {
+        err << "impulse-lab: " << one_line(e.what()) << " (see impulse-lab --help)\n";
+        return exit_bad_input;
+    }
+
+    try {
+        if (app.got_subcommand("resolve")) return resolve_command(resolve, out);
+        return validate_command(validate_files, out, err);
+    } catch (const FileError& e) {
+        err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
+        return exit_bad_input;
+    } catch (const io::InputError& e) {
+        err << "impulse-lab: " << e.what() << '\n';
+        return exit_bad_input;
+    } catch (const std::exception& e) {
+        err << "impulse-lab: internal error: " << e.what() << '\n';
+        return exit_failure;
+    }
+}
+
+}  // namespace impulse::cli

@@ -1,0 +1,18 @@
+#pragma once
+// The impulse-lab command line. Runnable in-process so tests can check exit codes, messages and files
+// without spawning the program.
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace impulse::cli {
+
+inline constexpr int exit_ok = 0;
+inline constexpr int exit_failure = 1;    // something went wrong inside the program
+inline constexpr int exit_bad_input = 2;  // a file or flag the user gave is wrong
+
+// `args` excludes the program name.
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
+}  // namespace impulse::cli

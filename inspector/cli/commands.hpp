@@ -1,0 +1,26 @@
+#pragma once
+// The commands behind the CLI, each taking its parsed options. They throw io::InputError for bad input;
+// `where` is then prefixed with the file it concerns by the caller (cli.cpp).
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace impulse::cli {
+
+struct ResolveOptions {
+    std::string case_file;
+    std::optional<std::string> preset;
+    std::vector<std::string> settings;  // --set name=value, in order
+    std::optional<std::string> trace_file;
+    std::vector<std::string> record;  // --record frames=A..B / contacts=I,J
+    bool explain = false;
+};
+
+int resolve_command(const ResolveOptions& options, std::ostream& out);
+
+// Prints one line per file; returns exit_bad_input if any file is invalid (all files are checked).
+int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
+
+}  // namespace impulse::cli

@@ -1,0 +1,76 @@
+#include "cli/input_files.hpp"
+
+#include "io/input_error.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace impulse::cli {
+
+std::string read_input_file(const std::string& path) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0)
+        throw FileError{path, "", std::string("cannot read: ") + std::strerror(errno)};
+    if (S_ISDIR(info.st_mode)) throw FileError{path, "", "is a directory, not a file"};
+    if (static_cast<std::size_t>(info.st_size) > max_input_bytes)
+        throw FileError{path, "",
+                        "is " + std::to_string(info.st_size >> 20) + " MiB; the limit is " +
+                            std::to_string(max_input_bytes >> 20) + " MiB"};
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw FileError{path, "", std::string("cannot read: ") + std::strerror(errno)};
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+namespace {
+
+int parse_count(std::string_view text, std::string_view spec) {
+    int value = 0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (error != std::errc{} || end != text.data() + text.size() || value < 0)
+        throw io::InputError(
+            "--record", "\"" + std::string(text) + "\" in \"" + std::string(spec) + "\" is not a whole number >= 0");
+    return value;
+}
+
+}  // namespace
+
+void apply_record_spec(std::string_view spec, TraceFilter& filter) {
+    const std::size_t equals = spec.find('=');
+    const std::string_view key = spec.substr(0, equals);
+    const std::string_view value = equals == std::string_view::npos ? std::string_view{} : spec.substr(equals + 1);
+    if (key == "frames" && !value.empty()) {
+        const std::size_t dots = value.find("..");
+        if (dots == std::string_view::npos) {
+            filter.first_frame = filter.last_frame = parse_count(value, spec);
+        } else {
+            filter.first_frame = parse_count(value.substr(0, dots), spec);
+            filter.last_frame = parse_count(value.substr(dots + 2), spec);
+        }
+        if (filter.last_frame < filter.first_frame)
+            throw io::InputError("--record", "frames=A..B needs A <= B, got \"" + std::string(spec) + "\"");
+        return;
+    }
+    if (key == "contacts" && !value.empty()) {
+        std::vector<int> contacts;
+        std::size_t start = 0;
+        while (start <= value.size()) {
+            const std::size_t comma = std::min(value.find(',', start), value.size());
+            contacts.push_back(parse_count(value.substr(start, comma - start), spec));
+            start = comma + 1;
+        }
+        std::sort(contacts.begin(), contacts.end());
+        contacts.erase(std::unique(contacts.begin(), contacts.end()), contacts.end());
+        filter.contacts = contacts;
+        return;
+    }
+    throw io::InputError("--record", "expected frames=A..B or contacts=I,J,..., got \"" + std::string(spec) + "\"");
+}
+
+}  // namespace impulse::cli

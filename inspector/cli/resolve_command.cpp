@@ -1,0 +1,49 @@
+// `impulse-lab resolve CASE.json`: resolve the case's contacts once (one frame), write the trace, and
+// explain or summarise what happened.
+
+#include "cli/commands.hpp"
+#include "cli/input_files.hpp"
+#include "explain/explain.hpp"
+#include "io/atomic_file.hpp"
+#include "io/case_file.hpp"
+#include "io/input_error.hpp"
+#include "io/json_text.hpp"
+#include "io/settings_json.hpp"
+#include "io/trace_json.hpp"
+#include "record/trace_recorder.hpp"
+#include "resolver/resolver.hpp"
+
+namespace impulse::cli {
+
+int resolve_command(const ResolveOptions& options, std::ostream& out) {
+    Trace trace;
+    try {
+        trace.scene = io::read_case_text(read_input_file(options.case_file), options.preset);
+    } catch (const io::InputError& e) {
+        throw FileError{options.case_file, e.where(), e.problem()};
+    }
+    for (const std::string& assignment : options.settings) io::apply_setting(trace.scene.settings, assignment, "--set");
+    for (const std::string& spec : options.record) apply_record_spec(spec, trace.recording);
+    if (trace.recording.contacts)
+        for (int contact : *trace.recording.contacts)
+            if (contact >= static_cast<int>(trace.scene.contacts.size()))
+                throw io::InputError("--record", "there is no contact " + std::to_string(contact) + " (the case has " +
+                                                     std::to_string(trace.scene.contacts.size()) + ")");
+
+    std::vector<RigidBody> bodies = trace.scene.bodies;
+    TraceRecorder recorder(trace);
+    resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
+
+    // Everything the user asked for is checked before anything is written, and the trace is written
+    // atomically, so a failed run leaves no file behind.
+    if (options.trace_file)
+        io::write_file_atomically(*options.trace_file, io::format_json(io::trace_json(trace)), "--trace");
+    if (options.explain)
+        explain::write_explanation(out, trace);
+    else
+        explain::write_summary(out, trace);
+    if (options.trace_file) out << "trace written to " << *options.trace_file << '\n';
+    return 0;
+}
+
+}  // namespace impulse::cli

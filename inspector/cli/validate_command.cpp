@@ -1,0 +1,56 @@
+// `impulse-lab validate FILE...`: check case and trace files against their schemas and against what a
+// schema cannot say (names, references, unit quaternions, inertia). A trace is told from a case by its
+// "format" marker.
+
+#include "cli/cli.hpp"
+#include "cli/commands.hpp"
+#include "cli/input_files.hpp"
+#include "io/case_file.hpp"
+#include "io/input_error.hpp"
+#include "io/json_text.hpp"
+#include "io/trace_json.hpp"
+
+namespace impulse::cli {
+
+namespace {
+
+std::string count(std::size_t n, std::string_view one, std::string_view many) {
+    return std::to_string(n) + " " + std::string(n == 1 ? one : many);
+}
+
+std::string check_file(const std::string& path) {
+    const io::json document = io::parse_json_text(read_input_file(path));
+    if (document.is_object() && document.contains("format") && document["format"] == io::trace_format_name) {
+        const Trace trace = io::read_trace(document);
+        std::size_t iterations = 0;
+        for (const FrameRecord& f : trace.frames)
+            iterations += f.position.iterations.size() + f.velocity.iterations.size();
+        return "valid trace (format version " + std::to_string(trace.version) + ", " +
+               count(trace.frames.size(), "frame", "frames") + ", " + count(iterations, "iteration", "iterations") +
+               ")";
+    }
+    const Case c = io::read_case(document);
+    return "valid case (" + count(c.bodies.size(), "body", "bodies") + ", " +
+           count(c.contacts.size(), "contact", "contacts") + ")";
+}
+
+}  // namespace
+
+int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
+    int result = exit_ok;
+    for (const std::string& file : files) {
+        try {
+            const std::string verdict = check_file(file);
+            out << file << ": " << verdict << '\n';
+        } catch (const io::InputError& e) {
+            err << "impulse-lab: " << file << ": " << e.what() << '\n';
+            result = exit_bad_input;
+        } catch (const FileError& e) {
+            err << "impulse-lab: " << e.file << ": " << e.problem << '\n';
+            result = exit_bad_input;
+        }
+    }
+    return result;
+}
+
+}  // namespace impulse::cli

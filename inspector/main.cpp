@@ -1,0 +1,7 @@
+#include "cli/cli.hpp"
+
+#include <iostream>
+
+int main(int argc, char** argv) {
+    return impulse::cli::run(std::vector<std::string>(argv + 1, argv + argc), std::cout, std::cerr);
+}

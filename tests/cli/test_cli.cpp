@@ -1,0 +1,132 @@
+// The command line as a user meets it: the main job, validation, help and version, and one-line errors
+// with exit code 2 for bad flags.
+
+#include "support/run_cli.hpp"
+#include "support/temp_dir.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+using namespace impulse::test;
+
+namespace {
+
+const std::string cases = IMPULSE_SOURCE_DIR "/scenes/cases/";
+
+std::size_t count_of(const std::string& text, const std::string& what) {
+    std::size_t n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("resolve --explain prints every derivation step of the ruler as an annotated table") {
+    const CliResult r = run_cli({"resolve", cases + "ruler.json", "--explain"});
+    CHECK(r.code == 0);
+    CHECK(r.err.empty());
+    for (const char* step : {"Step 1 · basis", "Step 2 · relative_position", "Step 3 · velocity per unit impulse",
+                             "Step 4 · contact_velocity", "Step 5 · desired_delta_velocity", "Step 6 · impulse_contact",
+                             "Step 7 · velocity_change", "Step 8 · inertia along the normal"})
+        CHECK_MESSAGE(r.out.find(step) != std::string::npos, step);
+    // Every table has the five columns, and the chapter's equations appear beside their values.
+    CHECK(count_of(r.out, "quantity") == count_of(r.out, "Step ") + count_of(r.out, "Updates"));
+    CHECK(r.out.find("formula") != std::string::npos);
+    for (const char* equation : {"(1.8)", "(14.1)", "(14.2)", "(14.3)", "(9.5)", "(7.5)"})
+        CHECK_MESSAGE(r.out.find(equation) != std::string::npos, equation);
+    CHECK(r.out.find("u = q_rel × n") != std::string::npos);
+}
+
+TEST_CASE("resolve writes a trace that validate accepts, and says where it went") {
+    TempDir dir;
+    const std::string trace = dir.file("ruler.trace.json").string();
+    const CliResult r = run_cli({"resolve", cases + "ruler.json", "--trace", trace});
+    CHECK(r.code == 0);
+    CHECK(r.out.find("trace written to " + trace) != std::string::npos);
+    const CliResult v = run_cli({"validate", trace});
+    CHECK(v.code == 0);
+    CHECK(v.out == trace + ": valid trace (format version 1, 1 frame, 2 iterations)\n");
+}
+
+TEST_CASE("every shipped case validates") {
+    std::vector<std::string> args{"validate"};
+    for (const auto& entry : std::filesystem::directory_iterator(cases)) args.push_back(entry.path().string());
+    REQUIRE(args.size() > 5);
+    const CliResult r = run_cli(args);
+    CHECK(r.code == 0);
+    CHECK(r.err.empty());
+    CHECK(count_of(r.out, ": valid case (") == args.size() - 1);
+}
+
+TEST_CASE("validate checks every file and fails if any is invalid") {
+    TempDir dir;
+    const std::string bad = dir.write("bad.json", R"({"bodies": [], "contacts": []})").string();
+    const CliResult r = run_cli({"validate", cases + "ruler.json", bad});
+    CHECK(r.code == 2);
+    CHECK(r.out == cases + "ruler.json: valid case (1 body, 1 contact)\n");
+    CHECK(r.err == "impulse-lab: " + bad + ": bodies: must have at least 1 item, got 0\n");
+}
+
+TEST_CASE("--version and --help answer with exit code 0") {
+    const CliResult version = run_cli({"--version"});
+    CHECK(version.code == 0);
+    CHECK(version.out.rfind("impulse-lab ", 0) == 0);
+    const CliResult help = run_cli({"--help"});
+    CHECK(help.code == 0);
+    CHECK(help.out.find("resolve") != std::string::npos);
+    const CliResult resolve_help = run_cli({"resolve", "--help"});
+    CHECK(resolve_help.code == 0);
+    CHECK(resolve_help.out.find("--explain") != std::string::npos);
+    const CliResult validate_help = run_cli({"validate", "--help"});
+    CHECK(validate_help.code == 0);
+}
+
+TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
+    struct BadFlag {
+        std::vector<std::string> args;
+        std::string starts;  // the beginning of the one-line message
+    };
+    TempDir dir;
+    const std::string ruler = cases + "ruler.json";
+    const std::string trace = dir.file("t.json").string();
+    const std::vector<BadFlag> table{
+        {{"resolve", ruler, "--preset", "fast"}, "impulse-lab: --preset: fast not in {book,chapter}"},
+        {{"resolve", ruler, "--set", "position_method=teleport"},
+         "impulse-lab: --set position_method: must be one of \"linear_projection\", \"nonlinear_projection\", "
+         "\"velocity_based\", \"relaxation\"; got \"teleport\""},
+        {{"resolve", ruler, "--set", "angular_limit.factor=-1"},
+         "impulse-lab: --set angular_limit.factor: must be >= 0, got -1"},
+        {{"resolve", ruler, "--set", "position_epsilon"},
+         "impulse-lab: --set: expected name=value, got \"position_epsilon\""},
+        {{"resolve", ruler, "--set", "positon_epsilon=1"},
+         "impulse-lab: --set positon_epsilon: unknown field (did you mean \"position_epsilon\"?)"},
+        {{"resolve", ruler, "--record", "contacts=5"}, "impulse-lab: --record: there is no contact 5 (the case has 1)"},
+        {{"resolve", ruler, "--record", "frames=x"},
+         "impulse-lab: --record: \"x\" in \"frames=x\" is not a whole number >= 0"},
+        {{"resolve", ruler, "--record", "bodies=1"},
+         "impulse-lab: --record: expected frames=A..B or contacts=I,J,..., got \"bodies=1\""},
+        {{"resolve", ruler, "--trace", dir.file("no/such/dir/t.json").string()},
+         "impulse-lab: --trace: cannot write '" + dir.file("no/such/dir/t.json").string() +
+             "': No such file or directory"},
+        {{"resolve", ruler, "--explian"}, "impulse-lab: The following argument was not expected: --explian"},
+        {{"resolve"}, "impulse-lab: CASE is required"},
+        {{"frobnicate"}, "impulse-lab: unknown command \"frobnicate\" (commands: resolve, validate"},
+    };
+    for (const BadFlag& b : table) {
+        std::vector<std::string> args = b.args;
+        if (args.size() > 1 && args[0] == "resolve" && std::find(args.begin(), args.end(), "--trace") == args.end()) {
+            args.push_back("--trace");
+            args.push_back(trace);
+        }
+        CAPTURE(b.starts);
+        const CliResult r = run_cli(args);
+        CHECK(r.code == 2);
+        CHECK(r.err.rfind(b.starts, 0) == 0);
+        CHECK(count_of(r.err, "\n") == 1);
+        CHECK(r.out.empty());
+        CHECK_FALSE(std::filesystem::exists(trace));
+    }
+    CHECK(dir.entries() == 0);
+}

@@ -1,0 +1,178 @@
+// Case files: what a minimal case means (its defaults), and a table of malformed cases, each rejected with
+// one line naming the JSON path, exit code 2, and no output file written.
+
+#include "io/case_file.hpp"
+#include "math/rotation.hpp"
+#include "support/approx.hpp"
+#include "support/run_cli.hpp"
+#include "support/temp_dir.hpp"
+
+#include <filesystem>
+
+using namespace impulse;
+using namespace impulse::test;
+
+TEST_CASE("a minimal case fills every default") {
+    const Case c = io::read_case_text(R"({
+        "bodies": [{"inertia": [[1, 0, 0], [0, 2, 0], [0, 0, 4]]}],
+        "contacts": [{"bodies": [0, null], "point": [0, 0, 0], "normal": [0, 2, 0]}]})");
+    REQUIRE(c.bodies.size() == 1);
+    CHECK(c.body_names[0] == "body0");
+    const RigidBody& b = c.bodies[0];
+    CHECK(b.position == Vec3::Zero());
+    CHECK(b.orientation.coeffs() == Quat::Identity().coeffs());
+    CHECK(b.velocity == Vec3::Zero());
+    CHECK(b.angular_velocity == Vec3::Zero());
+    CHECK(b.last_frame_acceleration == Vec3::Zero());
+    CHECK(b.inverse_mass == 1.0);
+    CHECK_CLOSE(b.inverse_inertia_body, Vec3(1, 0.5, 0.25).asDiagonal().toDenseMatrix());
+    const Contact& contact = c.contacts[0];
+    CHECK(contact.normal == Vec3(0, 1, 0));  // normalised on load
+    CHECK(contact.penetration == 0.0);
+    CHECK(contact.restitution == 0.0);
+    CHECK(contact.friction == 0.0);
+    CHECK(c.settings == *preset("book"));
+}
+
+TEST_CASE("shapes give the exact solid inertia: 2/5 m r^2 for a sphere, m (b^2 + c^2) / 3 for a box") {
+    const Case c = io::read_case_text(R"({
+        "bodies": [{"mass": 2, "shape": {"type": "sphere", "radius": 0.5}},
+                   {"mass": 3, "shape": {"type": "box", "half_size": [1, 0.5, 0.25]}},
+                   {"name": "ground", "inverse_mass": 0}],
+        "contacts": []})");
+    // sphere: I = 0.4 * 2 * 0.25 = 0.2;  box: I = 3 (0.25 + 0.0625)/3, 3 (1 + 0.0625)/3, 3 (1 + 0.25)/3
+    CHECK_CLOSE(c.bodies[0].inverse_inertia_body, (Mat3::Identity() / 0.2).eval());
+    CHECK_CLOSE(c.bodies[1].inverse_inertia_body, Vec3(1 / 0.3125, 1 / 1.0625, 1 / 1.25).asDiagonal().toDenseMatrix());
+    CHECK(is_immovable(c.bodies[2]));
+}
+
+TEST_CASE("orientation is [w, x, y, z] and orientation_deg turns about X, then Y, then Z") {
+    const Case c = io::read_case_text(R"({
+        "bodies": [{"inverse_mass": 0, "orientation": [0.7071067811865476, 0, 0, 0.7071067811865476]},
+                   {"inverse_mass": 0, "orientation_deg": [0, 0, 90]},
+                   {"inverse_mass": 0, "orientation_deg": [90, 90, 0]}],
+        "contacts": []})");
+    CHECK_CLOSE(Vec3(c.bodies[0].orientation * Vec3::UnitX()), Vec3(0, 1, 0));
+    CHECK_CLOSE(Vec3(c.bodies[1].orientation * Vec3::UnitX()), Vec3(0, 1, 0));
+    // X first: y -> z; then Y: z -> x. So body y ends along world x.
+    CHECK_CLOSE(Vec3(c.bodies[2].orientation * Vec3::UnitY()), Vec3(1, 0, 0));
+}
+
+TEST_CASE("a case written out in full reads back to the same bodies, contacts and settings") {
+    const Case c = io::read_case_text(R"({
+        "bodies": [{"name": "a", "mass": 2, "orientation_deg": [10, 20, 30], "velocity": [1, 2, 3],
+                    "shape": {"type": "box", "half_size": [1, 0.5, 0.25]}},
+                   {"name": "b", "mass": 1, "shape": {"type": "sphere", "radius": 0.3}}],
+        "contacts": [{"bodies": [null, "a"], "point": [0, 0.1, 0], "normal": [0.3, -1, 0.2], "penetration": 0.01}],
+        "settings": {"preset": "chapter", "angular_limit": {"policy": "angle"}, "position_iterations": 7}})");
+    const Case again = io::read_case(io::case_json(c, true));
+    CHECK(again == c);
+    CHECK(again.settings.angular_limit.factor == 45.0);
+    CHECK(again.settings.iterations.position == 7);
+}
+
+namespace {
+
+// A case with one valid body and contact, into which each malformed case below changes one thing.
+std::string case_with(const std::string& bodies, const std::string& contacts, const std::string& rest = "") {
+    return R"({"bodies": )" + bodies + R"(, "contacts": )" + contacts + rest + "}";
+}
+
+const std::string ruler = R"({"name": "ruler", "mass": 1, "shape": {"type": "box", "half_size": [0.5, 0.01, 0.02]}})";
+const std::string ground_contact = R"({"bodies": ["ruler", null], "point": [0, 0, 0], "normal": [0, 1, 0]})";
+
+struct Malformed {
+    const char* what;
+    std::string text;
+    std::string message;  // after "impulse-lab: <file>: "
+};
+
+}  // namespace
+
+TEST_CASE("malformed cases are rejected with one line naming the path, exit code 2 and no file written") {
+    const std::vector<Malformed> table{
+        {"negative inverse mass", case_with("[" + ruler + R"(, {"name": "b", "inverse_mass": -2}])", "[]"),
+         "bodies[1].inverse_mass: must be >= 0, got -2"},
+        {"zero mass", case_with(R"([{"mass": 0}])", "[]"), "bodies[0].mass: must be > 0, got 0"},
+        {"misspelt field", case_with(R"([{"masss": 1}])", "[]"),
+         "bodies[0].masss: unknown field (did you mean \"mass\"?)"},
+        {"zero normal",
+         case_with("[" + ruler + "]", R"([{"bodies": ["ruler", null], "point": [0, 0, 0], "normal": [0, 0, 0]}])"),
+         "contacts[0].normal: must not be zero"},
+        {"short normal",
+         case_with("[" + ruler + "]", R"([{"bodies": ["ruler", null], "point": [0, 0, 0], "normal": [0, 1]}])"),
+         "contacts[0].normal: must have exactly 3 items, got 2"},
+        {"misspelt body name",
+         case_with("[" + ruler + "]", R"([{"bodies": ["rular", null], "point": [0, 0, 0], "normal": [0, 1, 0]}])"),
+         "contacts[0].bodies[0]: no body named \"rular\" (did you mean \"ruler\"?)"},
+        {"body index out of range",
+         case_with("[" + ruler + "]", R"([{"bodies": [0, 3], "point": [0, 0, 0], "normal": [0, 1, 0]}])"),
+         "contacts[0].bodies[1]: no body with index 3 (the case has 1 body, numbered from 0)"},
+        {"world against world",
+         case_with("[" + ruler + "]", R"([{"bodies": [null, null], "point": [0, 0, 0], "normal": [0, 1, 0]}])"),
+         "contacts[0].bodies: at least one must be a body (both are the world)"},
+        {"body against itself",
+         case_with("[" + ruler + "]", R"([{"bodies": ["ruler", 0], "point": [0, 0, 0], "normal": [0, 1, 0]}])"),
+         "contacts[0].bodies: a body cannot touch itself (both are \"ruler\")"},
+        {"non-unit quaternion", case_with(R"([{"inverse_mass": 0, "orientation": [2, 0, 0, 0]}])", "[]"),
+         "bodies[0].orientation: must be a unit quaternion [w, x, y, z] (length 1 within 1e-6), got length 2"},
+        {"two orientations",
+         case_with(R"([{"inverse_mass": 0, "orientation": [1, 0, 0, 0], "orientation_deg": [0, 0, 0]}])", "[]"),
+         "bodies[0].orientation_deg: give orientation or orientation_deg, not both"},
+        {"indefinite inertia", case_with(R"([{"inertia": [[1, 0, 0], [0, -1, 0], [0, 0, 1]]}])", "[]"),
+         "bodies[0].inertia: must be positive definite, but its eigenvalues are -1, 1, 1"},
+        {"asymmetric inertia", case_with(R"([{"inertia": [[1, 0.5, 0], [0, 1, 0], [0, 0, 1]]}])", "[]"),
+         "bodies[0].inertia: must be symmetric (row i, column j equal to row j, column i)"},
+        {"no rotational inertia", case_with(R"([{"name": "a"}])", "[]"),
+         "bodies[0]: needs inertia, inverse_inertia or shape: a body with finite mass must resist rotation"},
+        {"sphere without radius", case_with(R"([{"shape": {"type": "sphere"}}])", "[]"),
+         "bodies[0].shape.radius: missing (a sphere needs a radius)"},
+        {"duplicate body name", case_with("[" + ruler + ", " + ruler + "]", "[]"),
+         "bodies[1].name: \"ruler\" is already the name of bodies[0]"},
+        {"unknown limit policy",
+         case_with("[" + ruler + "]", "[]", R"(, "settings": {"angular_limit": {"policy": "huge"}})"),
+         "settings.angular_limit.policy: must be one of \"none\", \"fixed\", \"lever_arm\", \"angle\"; got \"huge\""},
+        {"angle over 180 degrees",
+         case_with("[" + ruler + "]", "[]", R"(, "settings": {"angular_limit": {"policy": "angle", "factor": 200}})"),
+         "settings.angular_limit.factor: the angle policy's factor is a turn in degrees and must be > 0 and < 180, got "
+         "200"},
+        {"restitution above 1",
+         case_with("[" + ruler + "]",
+                   R"([{"bodies": ["ruler", null], "point": [0, 0, 0], "normal": [0, 1, 0], "restitution": 1.5}])"),
+         "contacts[0].restitution: must be <= 1, got 1.5"},
+        {"unknown preset", case_with("[" + ruler + "]", "[]", R"(, "settings": {"preset": "fast"})"),
+         "settings.preset: must be one of \"book\", \"chapter\"; got \"fast\""},
+        {"no contacts list", R"({"bodies": [)" + ruler + "]}", "contacts: missing (required)"},
+        {"no bodies", case_with("[]", "[]"), "bodies: must have at least 1 item, got 0"},
+        {"a string for a number", case_with(R"([{"inverse_mass": 0, "position": [0, "x", 0]}])", "[]"),
+         "bodies[0].position[1]: must be a number, got \"x\""},
+        {"a key given twice", case_with(R"([{"inverse_mass": 0, "inverse_mass": 1}])", "[]"),
+         "bodies[0].inverse_mass: key given twice in the same object"},
+        {"not an object", "[]", "must be an object, got []"},
+        {"a number too large for a double", case_with(R"([{"inverse_mass": 1e999}])", "[]"),
+         "invalid JSON: number overflow parsing '1e999'"},
+        {"broken JSON", "{\n  \"bodies\": [,]\n}",
+         "invalid JSON at line 2, column 14: syntax error while parsing value - unexpected ','; expected '[', '{', or "
+         "a literal"},
+    };
+    for (const Malformed& m : table) {
+        CAPTURE(m.what);
+        TempDir dir;
+        const std::string file = dir.write("case.json", m.text).string();
+        const std::string trace = dir.file("out.json").string();
+        const CliResult r = run_cli({"resolve", file, "--trace", trace});
+        CHECK(r.code == 2);
+        CHECK(r.err == "impulse-lab: " + file + ": " + m.message + "\n");
+        CHECK(r.out.empty());
+        CHECK_FALSE(std::filesystem::exists(trace));
+        CHECK(dir.entries() == 1);  // the case file only: no temporary left either
+    }
+}
+
+TEST_CASE("a file that cannot be read is named in one line with the reason") {
+    TempDir dir;
+    const std::string missing = dir.file("missing.json").string();
+    const CliResult r = run_cli({"resolve", missing});
+    CHECK(r.code == 2);
+    CHECK(r.err == "impulse-lab: " + missing + ": cannot read: No such file or directory\n");
+}

@@ -1,0 +1,155 @@
+// Trace files: written, read back and equal value for value; the written file passes its schema; keys are
+// the derivation vocabulary; indices that point nowhere are rejected.
+
+#include "io/case_file.hpp"
+#include "io/input_error.hpp"
+#include "io/json_text.hpp"
+#include "io/settings_json.hpp"
+#include "io/trace_json.hpp"
+#include "record/trace_recorder.hpp"
+#include "resolver/resolver.hpp"
+
+#include <doctest/doctest.h>
+
+#include <fstream>
+#include <sstream>
+
+using namespace impulse;
+
+namespace {
+
+Case shipped(const std::string& name) {
+    std::ifstream in(IMPULSE_SOURCE_DIR "/scenes/cases/" + name + ".json");
+    std::stringstream text;
+    text << in.rdbuf();
+    return io::read_case_text(text.str());
+}
+
+Trace resolved(const Case& c, const std::vector<std::string>& settings = {}) {
+    Trace trace;
+    trace.scene = c;
+    for (const std::string& s : settings) io::apply_setting(trace.scene.settings, s, "--set");
+    std::vector<RigidBody> bodies = c.bodies;
+    TraceRecorder recorder(trace);
+    resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
+    return trace;
+}
+
+std::string written(const Trace& t) {
+    return io::format_json(io::trace_json(t));
+}
+
+}  // namespace
+
+TEST_CASE("a trace written and read back is equal to the last bit, for every method and impulse model") {
+    const std::vector<std::pair<std::string, std::vector<std::string>>> runs{
+        {"ruler", {}},
+        {"sphere_ground", {"preset=chapter"}},
+        {"three_objects", {}},  // a swapped contact
+        {"two_body_oblique", {"position_method=linear_projection"}},
+        {"sliding_box", {}},  // friction: static and sliding solves
+        {"deep_corner", {"position_method=velocity_based"}},
+        {"deep_corner", {"position_method=relaxation", "relaxation.passes=3"}},
+        {"deep_corner", {"angular_limit.policy=none"}},
+        {"deep_corner", {"angular_limit.policy=angle", "orientation_update=exact"}},
+    };
+    for (const auto& [name, settings] : runs) {
+        CAPTURE(name);
+        const Trace trace = resolved(shipped(name), settings);
+        const std::string text = written(trace);
+        const Trace again = io::read_trace_text(text);  // also checks the schema
+        CHECK(again == trace);
+        CHECK(written(again) == text);
+    }
+}
+
+TEST_CASE("a filtered trace round-trips with its filter") {
+    Trace trace;
+    trace.scene = shipped("sliding_box");
+    trace.recording.contacts = std::vector<int>{2};
+    std::vector<RigidBody> bodies = trace.scene.bodies;
+    TraceRecorder recorder(trace);
+    resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
+    CHECK(io::read_trace_text(written(trace)) == trace);
+}
+
+TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the order of the steps") {
+    const io::json j = io::trace_json(resolved(shipped("ruler")));
+    std::vector<std::string> keys;
+    for (const auto& [key, value] : j["frames"][0]["contacts"][0].items()) keys.push_back(key);
+    const std::vector<std::string> expected{"contact",
+                                            "bodies",
+                                            "swapped",
+                                            "inert",
+                                            "point",
+                                            "normal",
+                                            "penetration",
+                                            "restitution",
+                                            "friction",
+                                            "basis",
+                                            "tangent_seed",
+                                            "relative_position",
+                                            "torque_per_unit_impulse",
+                                            "rotation_per_unit_impulse",
+                                            "velocity_per_unit_impulse",
+                                            "angular_component",
+                                            "linear_component",
+                                            "delta_velocity_per_unit_impulse",
+                                            "point_velocity",
+                                            "tangential_acceleration_velocity",
+                                            "contact_velocity",
+                                            "separating_velocity",
+                                            "restitution_cutoff",
+                                            "restitution_cutoff_applied",
+                                            "restitution_used",
+                                            "velocity_from_acceleration_applied",
+                                            "velocity_from_acceleration",
+                                            "desired_delta_velocity"};
+    CHECK(keys == expected);
+    const io::json& position = j["frames"][0]["phases"][0]["iterations"][0];
+    for (const char* key : {"linear_inertia", "angular_inertia", "total_inertia", "linear_move", "angular_move",
+                            "angular_limit", "linear_change", "angular_change", "updates"})
+        CHECK_MESSAGE(position.contains(key), key);
+    const io::json& velocity = j["frames"][0]["phases"][1]["iterations"][0];
+    for (const char* key : {"contact_velocity", "desired_delta_velocity", "impulse_contact", "impulse_world",
+                            "velocity_change", "rotation_change", "updates"})
+        CHECK_MESSAGE(velocity.contains(key), key);
+}
+
+TEST_CASE("the header says what ran: format, version, conventions, full settings and the scene") {
+    const io::json j = io::trace_json(resolved(shipped("ruler")));
+    CHECK(j["format"] == "impulse-lab-trace");
+    CHECK(j["version"] == 1);
+    CHECK(j["conventions"]["quaternion"] == "[w, x, y, z], unit, body to world");
+    CHECK(j["settings"] == io::settings_json(*preset("book")));
+    CHECK(j["scene"]["bodies"][0]["name"] == "ruler");
+    CHECK(j["scene"]["bodies"][0].contains("inverse_inertia"));
+}
+
+TEST_CASE("a trace whose indices point outside its scene is rejected with the path") {
+    io::json j = io::trace_json(resolved(shipped("ruler")));
+    j["frames"][0]["phases"][1]["iterations"][0]["contact"] = 5;
+    try {
+        io::read_trace(j);
+        FAIL("accepted a trace with an iteration on contact 5");
+    } catch (const io::InputError& e) {
+        CHECK(std::string(e.what()) ==
+              "frames[0].phases[1].iterations[0].contact: no contact 5 in the scene (it has 1)");
+    }
+}
+
+TEST_CASE("a trace from a future format version is refused") {
+    io::json j = io::trace_json(resolved(shipped("ruler")));
+    j["version"] = 2;
+    CHECK_THROWS_WITH_AS(io::read_trace(j), "version: must be 1, got 2", io::InputError);
+}
+
+TEST_CASE("a misspelt derivation key in a trace is named with its path") {
+    io::json j = io::trace_json(resolved(shipped("ruler")));
+    io::json& contact = j["frames"][0]["contacts"][0];
+    contact["relative_positon"] = contact["relative_position"];
+    contact.erase("relative_position");
+    CHECK_THROWS_WITH_AS(io::read_trace(j),
+                         "frames[0].contacts[0].relative_positon: unknown field (did you mean \"relative_position\"?)",
+                         io::InputError);
+}

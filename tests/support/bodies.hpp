@@ -1,0 +1,63 @@
+#pragma once
+// Small builders for the bodies and contacts tests derive by hand.
+
+#include "body/rigid_body.hpp"
+#include "contact/contact.hpp"
+#include "io/case_file.hpp"
+#include "resolver/prepared_contact.hpp"
+#include "resolver/settings.hpp"
+
+#include <vector>
+
+namespace impulse::test {
+
+inline RigidBody sphere(double mass, double radius, const Vec3& position, const Vec3& velocity = Vec3::Zero()) {
+    RigidBody b;
+    b.position = position;
+    b.velocity = velocity;
+    b.inverse_mass = 1.0 / mass;
+    b.inverse_inertia_body = io::sphere_inverse_inertia(b.inverse_mass, radius);
+    return b;
+}
+
+inline RigidBody box(double mass, const Vec3& half_size, const Vec3& position, const Vec3& velocity = Vec3::Zero()) {
+    RigidBody b;
+    b.position = position;
+    b.velocity = velocity;
+    b.inverse_mass = 1.0 / mass;
+    b.inverse_inertia_body = io::box_inverse_inertia(b.inverse_mass, half_size);
+    return b;
+}
+
+inline RigidBody immovable(const Vec3& position = Vec3::Zero()) {
+    RigidBody b;
+    b.position = position;
+    b.inverse_mass = 0.0;
+    b.inverse_inertia_body = Mat3::Zero();
+    return b;
+}
+
+inline Contact contact(int body0, int body1, const Vec3& point, const Vec3& normal, double penetration = 0.0,
+                       double restitution = 0.0, double friction = 0.0) {
+    return Contact{{body0, body1}, point, normal.normalized(), penetration, restitution, friction};
+}
+
+// The chapter's own derivation, without the reference engine's chapter-15 refinements.
+inline ResolverSettings plain_settings() {
+    ResolverSettings s = *preset("book");
+    s.refinements = {0.0, false, false};
+    return s;
+}
+
+inline PreparedContact prepared(const Contact& c, const std::vector<RigidBody>& bodies,
+                                const ResolverSettings& settings = plain_settings()) {
+    const std::vector<MassProperties> mass = mass_properties(bodies);
+    return prepare_contact(0, c, bodies, mass, settings);
+}
+
+// Velocity of a body's material point at world position q, straight from the body (9.5).
+inline Vec3 point_velocity(const RigidBody& b, const Vec3& q) {
+    return b.velocity + b.angular_velocity.cross(q - b.position);
+}
+
+}  // namespace impulse::test

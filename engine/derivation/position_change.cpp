@@ -95,7 +95,7 @@ AngularLimit angular_limit(MoveSplit& moves, const AngularLimitSettings& setting
         if (*limit.applied[i]) {
             const double total_move = linear + angular;
             angular = std::copysign(*limit.maximum[i], angular);
-            linear = total_move - angular;
+            if (chain.bodies[i]->linear_component > 0.0) linear = total_move - angular;
         }
     }
     return limit;

@@ -44,7 +44,7 @@ int read_body_index(const json& j) {
     return j.is_null() ? world_body : j.get<int>();
 }
 
-constexpr std::string_view stop_names[] = {"resolved", "iteration_limit", "passes_complete"};
+constexpr std::string_view stop_names[] = {"resolved", "iteration_limit", "passes_complete", "unmovable_left"};
 
 // --- step 5, shared by prepared contacts and velocity iterations ----------------------------------------
 
@@ -329,7 +329,7 @@ PhaseLog<Iteration> read_phase(const json& j, Read read) {
     log.outcome.iteration_limit = j["iteration_limit"].get<int>();
     log.outcome.iterations_used = j["iterations_used"].get<int>();
     const std::string stop = j["stop"].get<std::string>();
-    for (int i = 0; i < 3; ++i)
+    for (int i = 0; i < static_cast<int>(std::size(stop_names)); ++i)
         if (stop_names[i] == stop) log.outcome.stop = static_cast<StopReason>(i);
     for (const json& it : j["iterations"]) log.iterations.push_back(read(it));
     return log;

@@ -1,9 +1,12 @@
 // Velocity-based resolution: "move the bodies back to the point of first collision ... we can move these
 // two points back along the paths they followed until they no longer overlap in the direction of the
 // contact normal". Each body goes back by the same time t along its straight-line and rotational path;
-// t is the penetration divided by the closing speed of the contact points, and never more than the frame
-// (they cannot go back before it began). What the paths cannot explain (a contact that was not closing, or
-// one deeper than a frame's travel) is removed by nonlinear projection, recorded beside the rewind.
+// t is the penetration divided by the closing speed of the contact points, and never more than what is left
+// of the frame for either body (a body on several contacts cannot go back before the frame began, however
+// many of them rewind it). What the paths cannot explain (a contact that was not closing, or one deeper than
+// the travel left) is removed by nonlinear projection, recorded beside the rewind. The angular limit applies
+// to that projection only: the rewind's turn is the body's own motion undone, so with the `angle` policy
+// the whole turn can exceed the limit by theta-dot t.
 
 #include "methods/position_resolution.hpp"
 
@@ -11,7 +14,7 @@
 
 namespace impulse {
 
-PositionResolution velocity_based(const PreparedContact& contact, const PerBody<BodyMotion>& motion, double duration,
+PositionResolution velocity_based(const PreparedContact& contact, const PerBody<BodyMotion>& motion, double time_left,
                                   const AngularLimitSettings& limit, OrientationUpdate orientation_update) {
     const ContactPreparation& d = contact.derivation;
 
@@ -29,9 +32,10 @@ PositionResolution velocity_based(const PreparedContact& contact, const PerBody<
         separating += body_sign(i) * point_velocity.dot(d.normal);
     }
     rewind.closing_velocity = -separating;
-    rewind.time_limit = duration;
-    rewind.time =
-        rewind.closing_velocity > 0.0 ? std::min(contact.penetration / rewind.closing_velocity, duration) : 0.0;
+    rewind.time_limit = std::max(time_left, 0.0);
+    rewind.time = rewind.closing_velocity > 0.0
+                      ? std::min(contact.penetration / rewind.closing_velocity, rewind.time_limit)
+                      : 0.0;
     rewind.removed_penetration = rewind.closing_velocity * rewind.time;
     for (int i = 0; i < 2; ++i) {
         if (!contact.mass[i]) continue;

@@ -79,6 +79,8 @@ enum class StopReason {
     resolved,         // nothing left above the epsilon
     iteration_limit,  // the limit was reached with something still above the epsilon
     passes_complete,  // relaxation ran all its passes; what remains above the epsilon is left by design
+    unmovable_left,   // what remains above the epsilon the method cannot move (linear projection, bodies
+                      // that cannot translate)
 };
 
 struct PhaseOutcome {

@@ -2,29 +2,9 @@
 #include "resolver/bookkeeping.hpp"
 #include "resolver/phases.hpp"
 
+#include <algorithm>
+
 namespace impulse {
-
-std::optional<int> worst_contact(const std::vector<PreparedContact>& contacts,
-                                 const std::function<double(const PreparedContact&)>& value, double epsilon,
-                                 const std::function<bool(int)>& skip) {
-    std::optional<int> worst;
-    double largest = epsilon;
-    for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
-        const PreparedContact& c = contacts[static_cast<std::size_t>(i)];
-        if (c.derivation.inert || (skip && skip(i))) continue;
-        const double v = value(c);
-        if (v > largest) {
-            largest = v;
-            worst = i;
-        }
-    }
-    return worst;
-}
-
-bool any_above(const std::vector<PreparedContact>& contacts, const std::function<double(const PreparedContact&)>& value,
-               double epsilon) {
-    return worst_contact(contacts, value, epsilon).has_value();
-}
 
 namespace {
 
@@ -33,20 +13,21 @@ double penetration_of(const PreparedContact& c) {
 }
 
 PositionResolution projection_for(const PreparedContact& contact, double amount, std::span<const RigidBody> bodies,
-                                  const ResolverSettings& settings) {
+                                  const PositionPhaseState& state, const ResolverSettings& settings) {
     switch (settings.position_method) {
         case PositionMethod::linear_projection:
             return linear_projection(contact, amount);
         case PositionMethod::velocity_based: {
             PerBody<BodyMotion> motion;
+            double time_left = settings.duration;
             for (int i = 0; i < 2; ++i) {
                 const int id = contact.derivation.bodies[i];
                 if (id == world_body) continue;
                 const RigidBody& body = bodies[static_cast<std::size_t>(id)];
                 motion[i] = BodyMotion{body.velocity, body.angular_velocity, body.last_frame_acceleration};
+                time_left = std::min(time_left, settings.duration - state.rewound_time[static_cast<std::size_t>(id)]);
             }
-            return velocity_based(contact, motion, settings.duration, settings.angular_limit,
-                                  settings.orientation_update);
+            return velocity_based(contact, motion, time_left, settings.angular_limit, settings.orientation_update);
         }
         case PositionMethod::nonlinear_projection:
         case PositionMethod::relaxation: {
@@ -61,21 +42,34 @@ PositionResolution projection_for(const PreparedContact& contact, double amount,
 
 }  // namespace
 
-void resolve_penetration(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts, int chosen,
-                         double amount, int iteration, std::optional<int> pass, const ResolverSettings& settings,
-                         Recorder& recorder) {
+PositionPhaseState position_phase_state(std::size_t body_count) {
+    return {std::vector<double>(body_count, 0.0)};
+}
+
+bool movable_by(PositionMethod method, const PreparedContact& contact) {
+    if (method != PositionMethod::linear_projection) return true;
+    for (const auto& m : contact.mass)
+        if (m && m->inverse_mass > 0.0) return true;
+    return false;
+}
+
+void resolve_penetration(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
+                         PositionPhaseState& state, int chosen, double amount, int iteration, std::optional<int> pass,
+                         const ResolverSettings& settings, Recorder& recorder) {
     const PreparedContact& contact = contacts[static_cast<std::size_t>(chosen)];
     PositionIteration record{iteration,
                              chosen,
                              contact.penetration,
                              settings.position_epsilon,
                              pass,
-                             projection_for(contact, amount, bodies, settings),
+                             projection_for(contact, amount, bodies, state, settings),
                              {}};
     const std::array<int, 2> moved = contact.derivation.bodies;
     const PositionChange& change = record.resolution->change;
     for (int i = 0; i < 2; ++i) {
         if (moved[i] == world_body) continue;
+        if (record.resolution->rewind)
+            state.rewound_time[static_cast<std::size_t>(moved[i])] += record.resolution->rewind->time;
         RigidBody& body = bodies[static_cast<std::size_t>(moved[i])];
         body.position += *change.linear_change[i];
         body.orientation = rotated(body.orientation, *change.angular_change[i], settings.orientation_update);
@@ -91,16 +85,22 @@ PhaseOutcome resolve_positions(std::vector<RigidBody>& bodies, std::vector<Prepa
 
     PhaseOutcome outcome;
     outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));
+    PositionPhaseState state = position_phase_state(bodies.size());
+    const auto unmovable = [&](int i) {
+        return !movable_by(settings.position_method, contacts[static_cast<std::size_t>(i)]);
+    };
     while (outcome.iterations_used < outcome.iteration_limit) {
-        const std::optional<int> chosen = worst_contact(contacts, penetration_of, settings.position_epsilon);
+        const std::optional<int> chosen = worst_contact(contacts, penetration_of, settings.position_epsilon, unmovable);
         if (!chosen) break;
         const double penetration = contacts[static_cast<std::size_t>(*chosen)].penetration;
-        resolve_penetration(bodies, contacts, *chosen, penetration, outcome.iterations_used, std::nullopt, settings,
-                            recorder);
+        resolve_penetration(bodies, contacts, state, *chosen, penetration, outcome.iterations_used, std::nullopt,
+                            settings, recorder);
         ++outcome.iterations_used;
     }
-    outcome.stop = any_above(contacts, penetration_of, settings.position_epsilon) ? StopReason::iteration_limit
-                                                                                  : StopReason::resolved;
+    outcome.stop = worst_contact(contacts, penetration_of, settings.position_epsilon, unmovable)
+                       ? StopReason::iteration_limit
+                   : any_above(contacts, penetration_of, settings.position_epsilon) ? StopReason::unmovable_left
+                                                                                    : StopReason::resolved;
     recorder.end_phase(Phase::position, outcome);
     return outcome;
 }

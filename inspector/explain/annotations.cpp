@@ -45,7 +45,8 @@ constexpr std::array annotations{
     Annotation{"desired_delta_velocity", "Δv = −v_s − c (v_s − v_acc)", "v_s' = −c v_s", "m/s",
                "change of separating velocity the impulse must make"},
     // Step 6
-    Annotation{"impulse_model", "μ = 0: frictionless; else 3×3 solve + cone", "", "", "which impulse calculation applies"},
+    Annotation{"impulse_model", "μ = 0: frictionless; else 3×3 solve + cone", "", "",
+               "which impulse calculation applies"},
     Annotation{"delta_velocity_matrix", "K = Cᵀ(Σ m⁻¹ − [q_rel]× I⁻¹ [q_rel]×)C", "ch. 15", "m/s per N·s",
                "velocity change per unit impulse, every direction"},
     Annotation{"target_delta_velocity", "(Δv, −v_t₁, −v_t₂)", "ch. 15", "m/s", "bounce as desired, stop all sliding"},

@@ -36,6 +36,8 @@ std::string stop_text(const PhaseOutcome& o) {
             return "iteration limit reached (" + used + "), something still above ε";
         case StopReason::passes_complete:
             return "all relaxation passes done (" + used + "), penetration left by design";
+        case StopReason::unmovable_left:
+            return "what is left above ε this method cannot move (" + used + ")";
     }
     return used;
 }

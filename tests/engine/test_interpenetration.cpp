@@ -163,3 +163,73 @@ TEST_CASE("relaxation shares the penetration among contacts that fight over one 
     CHECK(deepest_left(PositionMethod::nonlinear_projection) == doctest::Approx(0.5));
     CHECK(deepest_left(PositionMethod::relaxation) == doctest::Approx(1.0 / 3.0).epsilon(1e-3));
 }
+
+TEST_CASE("velocity-based resolution never moves a body back more than one frame, however many contacts rewind it") {
+    // Regression: the frame cap was per contact. A sphere moving at (-1, -1, 0) touches the floor (n = +y) and a
+    // wall (n = +x), each 2/60 m deep, frame 1/60 s. The floor contact rewinds the sphere the whole frame,
+    // (1/60, 1/60, 0), and projects the other 1/60 up; that also opens the wall contact by 1/60. The wall then
+    // has no frame left to rewind and projects its remaining 1/60. Total: (2/60, 2/60, 0), one frame of path.
+    std::vector<RigidBody> bodies{sphere(1.0, 0.5, Vec3::Zero(), {-1, -1, 0})};
+    ResolverSettings s = plain_settings();
+    s.position_method = PositionMethod::velocity_based;
+    s.duration = 1.0 / 60.0;
+    const double depth = 2.0 / 60.0;
+    Trace trace;
+    TraceRecorder recorder(trace);
+    resolve_contacts(bodies,
+                     std::vector{contact(0, world_body, {0, -0.5, 0}, {0, 1, 0}, depth),
+                                 contact(0, world_body, {-0.5, 0, 0}, {1, 0, 0}, depth)},
+                     s, recorder);
+    double rewound = 0.0;
+    for (const auto& it : trace.frames[0].position.iterations) rewound += it.resolution->rewind->time;
+    CHECK_CLOSE(rewound, 1.0 / 60.0);
+    CHECK_CLOSE(bodies[0].position, Vec3(2.0 / 60.0, 2.0 / 60.0, 0));
+}
+
+TEST_CASE("relaxation whose last pass ends exactly at the iteration limit reports its passes complete") {
+    // Regression: 4 passes over one contact with a limit of 4 iterations used to read as "iteration_limit".
+    std::vector<RigidBody> bodies{sphere(1.0, 0.5, Vec3::Zero())};
+    ResolverSettings s = plain_settings();
+    s.position_method = PositionMethod::relaxation;
+    s.relaxation = {0.5, 4};
+    const ResolutionSummary summary =
+        resolve_contacts(bodies, std::vector{contact(0, world_body, {0, -0.5, 0}, {0, 1, 0}, 1.0)}, s);
+    CHECK(summary.position.iterations_used == 4);
+    CHECK(summary.position.stop == StopReason::passes_complete);
+    // One more pass than the limit allows is cut short, and says so.
+    s.relaxation.passes = 5;
+    std::vector<RigidBody> again{sphere(1.0, 0.5, Vec3::Zero())};
+    CHECK(resolve_contacts(again, std::vector{contact(0, world_body, {0, -0.5, 0}, {0, 1, 0}, 1.0)}, s).position.stop ==
+          StopReason::iteration_limit);
+}
+
+TEST_CASE("the angular limit never translates a body that cannot translate") {
+    // Regression: a pivot (inverse mass 0, free to turn) whose angular move is cut back had the excess given
+    // to its linear move, moving an infinitely heavy body. Now the excess stays as penetration.
+    RigidBody pivot;
+    pivot.inverse_mass = 0.0;
+    pivot.inverse_inertia_body = Mat3::Identity();
+    const std::vector<RigidBody> bodies{pivot};
+    const PreparedContact p = prepared(contact(0, world_body, {1, -0.5, 0}, {0, 1, 0}, 1.0), bodies);
+    const PositionResolution r =
+        nonlinear_projection(p, 1.0, {AngularLimitPolicy::lever_arm, 0.2}, OrientationUpdate::first_order);
+    CHECK(*r.angular_limit->applied[0]);
+    CHECK_CLOSE(*r.moves.angular_move[0], 0.2);
+    CHECK(*r.moves.linear_move[0] == 0.0);
+    CHECK(*r.change.linear_change[0] == Vec3::Zero());
+}
+
+TEST_CASE("linear projection leaves a contact it cannot move instead of spending every iteration on it") {
+    // Regression: both bodies can turn but not translate, so linear projection moves nothing; it used to
+    // choose the same contact until the iteration limit.
+    RigidBody a, b;
+    a.inverse_mass = b.inverse_mass = 0.0;
+    b.position = {0, -1, 0};
+    std::vector<RigidBody> bodies{a, b};
+    ResolverSettings s = plain_settings();
+    s.position_method = PositionMethod::linear_projection;
+    const ResolutionSummary summary =
+        resolve_contacts(bodies, std::vector{contact(0, 1, {0.3, -0.5, 0}, {0, 1, 0}, 0.2)}, s);
+    CHECK(summary.position.iterations_used == 0);
+    CHECK(summary.position.stop == StopReason::unmovable_left);
+}

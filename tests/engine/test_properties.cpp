@@ -160,7 +160,7 @@ TEST_CASE("after a nonlinear projection the linearised penetration of that conta
     });
 }
 
-TEST_CASE("the angular limit keeps each body's total move and only changes its split") {
+TEST_CASE("the angular limit keeps the total move of each body that can translate, and only changes its split") {
     check_property("angular limit keeps the total", [] {
         const RandomContact r = any_contact();
         const PreparedContact p = prepared(r.contact, r.bodies);

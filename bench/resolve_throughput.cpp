@@ -26,13 +26,13 @@ using namespace impulse;
 
 namespace {
 
-struct Scene {
+struct Landing {
     std::vector<RigidBody> bodies;
     std::vector<Contact> contacts;
 };
 
-Scene landing_boxes(int count, double friction) {
-    Scene s;
+Landing landing_boxes(int count, double friction) {
+    Landing s;
     for (int i = 0; i < count; ++i) {
         RigidBody b;
         const double tilt = 0.01 * std::sin(i * 1.7);  // deterministic variety in depth and motion
@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
         out << "boxes,contacts,iterations,friction,off_ns_per_contact,on_ns_per_contact,recording_ratio\n";
     }
     for (int count : boxes) {
-        const Scene scene = landing_boxes(count, friction);
+        const Landing scene = landing_boxes(count, friction);
         std::vector<RigidBody> bodies;
         ResolutionSummary summary{};
         const double off = median_seconds(

@@ -7,7 +7,6 @@
 #include <cstring>
 #include <fcntl.h>
 #include <sys/stat.h>
-#include <string>
 #include <unistd.h>
 
 namespace impulse::io {
@@ -20,7 +19,8 @@ namespace {
 
 }  // namespace
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view flag) {
+StagedFile::StagedFile(const std::filesystem::path& path, std::string_view contents, std::string_view flag)
+    : path_(path), flag_(flag) {
     if (path.empty()) fail(flag, path, "empty file name");
     const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
     std::string temporary = (directory / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
@@ -51,11 +51,40 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
         ::unlink(temporary.c_str());
         fail(flag, path, reason);
     }
-    if (std::rename(temporary.c_str(), path.c_str()) != 0) {
+    temporary_ = temporary;
+}
+
+StagedFile::StagedFile(StagedFile&& other) noexcept
+    : path_(std::move(other.path_)), temporary_(std::move(other.temporary_)), flag_(std::move(other.flag_)) {
+    other.temporary_.clear();
+}
+
+StagedFile::~StagedFile() {
+    if (!temporary_.empty()) ::unlink(temporary_.c_str());
+}
+
+void StagedFile::commit() {
+    if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
         const std::string reason = std::strerror(errno);
-        ::unlink(temporary.c_str());
-        fail(flag, path, reason);
+        ::unlink(temporary_.c_str());
+        temporary_.clear();
+        fail(flag_, path_, reason);
     }
+    temporary_.clear();
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view flag) {
+    StagedFile(path, contents, flag).commit();
+}
+
+void check_writable(const std::filesystem::path& path, std::string_view flag) {
+    if (path.empty()) fail(flag, path, "empty file name");
+    const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
+    std::error_code error;
+    if (!std::filesystem::exists(directory, error)) fail(flag, path, "No such file or directory");
+    if (!std::filesystem::is_directory(directory, error)) fail(flag, path, "Not a directory");
+    if (std::filesystem::is_directory(path, error)) fail(flag, path, "Is a directory");
+    if (::access(directory.c_str(), W_OK) != 0) fail(flag, path, std::strerror(errno));
 }
 
 }  // namespace impulse::io

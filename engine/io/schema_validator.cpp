@@ -57,7 +57,7 @@ struct Located {
 };
 
 // References are "#", "#/$defs/name", or the same after the name of one of the sibling documents the
-// validator was given ("case.schema.json#/$defs/settings"), so one schema can reuse another's parts.
+// validator was given ("scene.schema.json#/$defs/settings"), so one schema can reuse another's parts.
 Located resolve_ref(const json& root, const Documents& siblings, const json& ref, const std::string& at) {
     if (!ref.is_string()) schema_error(at, "must be a string");
     const auto& text = ref.get_ref<const std::string&>();

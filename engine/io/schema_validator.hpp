@@ -4,7 +4,7 @@
 // a schema that uses anything outside the subset is rejected up front instead of being half-checked.
 //
 // Supported: $defs, $ref (`#`, `#/$defs/name`, or either after the name of a sibling schema given to the
-// constructor, e.g. `case.schema.json#/$defs/settings`), type, properties, required, additionalProperties,
+// constructor, e.g. `scene.schema.json#/$defs/settings`), type, properties, required, additionalProperties,
 // items, prefixItems, minItems, maxItems, enum, const, minimum, maximum, exclusiveMinimum,
 // exclusiveMaximum, minLength, maxLength, minProperties, oneOf, anyOf, not, and the boolean schemas
 // `true` and `false`. Annotations ($schema, $id, $comment, title, description, default, examples,

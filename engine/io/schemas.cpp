@@ -6,12 +6,12 @@
 namespace impulse::io {
 
 namespace embedded {
-extern const std::string_view case_schema;   // schemas/case.schema.json, compiled in by CMake
+extern const std::string_view scene_schema;  // schemas/scene.schema.json, compiled in by CMake
 extern const std::string_view trace_schema;  // schemas/trace.schema.json
 }  // namespace embedded
 
-std::string_view case_schema_text() {
-    return embedded::case_schema;
+std::string_view scene_schema_text() {
+    return embedded::scene_schema;
 }
 std::string_view trace_schema_text() {
     return embedded::trace_schema;
@@ -25,12 +25,12 @@ json parsed(std::string_view text) {
 
 // The validators are built on each call rather than kept in statics (no global state); parsing the schemas
 // costs well under a millisecond against the file being checked.
-SchemaValidator case_validator() {
-    return SchemaValidator(parsed(case_schema_text()));
+SchemaValidator scene_validator() {
+    return SchemaValidator(parsed(scene_schema_text()));
 }
 
 SchemaValidator trace_validator() {
-    return SchemaValidator(parsed(trace_schema_text()), {{"case.schema.json", parsed(case_schema_text())}});
+    return SchemaValidator(parsed(trace_schema_text()), {{"scene.schema.json", parsed(scene_schema_text())}});
 }
 
 // A path inside `object` validated on its own becomes a path under `prefix`.
@@ -42,8 +42,8 @@ std::string under(std::string_view prefix, const std::string& where) {
 
 }  // namespace
 
-void validate_case_document(const json& document) {
-    case_validator().validate(document);
+void validate_scene_document(const json& document) {
+    scene_validator().validate(document);
 }
 
 void validate_trace_document(const json& document) {
@@ -51,8 +51,8 @@ void validate_trace_document(const json& document) {
 }
 
 void validate_settings_object(const json& settings, std::string_view path) {
-    const SchemaValidator validator(json{{"$ref", "case.schema.json#/$defs/settings"}},
-                                    {{"case.schema.json", parsed(case_schema_text())}});
+    const SchemaValidator validator(json{{"$ref", "scene.schema.json#/$defs/settings"}},
+                                    {{"scene.schema.json", parsed(scene_schema_text())}});
     try {
         validator.validate(settings);
     } catch (const InputError& e) {

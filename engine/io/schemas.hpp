@@ -8,11 +8,11 @@
 
 namespace impulse::io {
 
-std::string_view case_schema_text();
+std::string_view scene_schema_text();
 std::string_view trace_schema_text();
 
 // Throw InputError at the first violation; paths are prefixed with `path`.
-void validate_case_document(const json& document);
+void validate_scene_document(const json& document);
 void validate_trace_document(const json& document);
 void validate_settings_object(const json& settings, std::string_view path);
 

@@ -15,8 +15,9 @@ Enum read_enum(const NameTable<Enum, N>& table, const json& value) {
     return *value_of(table, value.get<std::string>());
 }
 
-// Applies every field present in `object` (already schema-checked) to `s`.
-void apply_fields(ResolverSettings& s, const json& object, std::string_view path) {
+// Applies every field present in `object` (already schema-checked) to the scene's settings.
+void apply_fields(Scene& scene, const json& object, std::string_view path) {
+    ResolverSettings& s = scene.settings;
     const auto has = [&object](const char* key) { return object.contains(key); };
     if (has("phase_order")) s.phase_order = read_enum(phase_order_names, object["phase_order"]);
     if (has("position_method")) s.position_method = read_enum(position_method_names, object["position_method"]);
@@ -57,22 +58,25 @@ void apply_fields(ResolverSettings& s, const json& object, std::string_view path
     if (has("orientation_update"))
         s.orientation_update = read_enum(orientation_update_names, object["orientation_update"]);
     if (has("duration")) s.duration = object["duration"].get<double>();
+    if (has("frames")) scene.world.frames = object["frames"].get<int>();
+    if (has("linear_damping")) scene.world.linear_damping = object["linear_damping"].get<double>();
+    if (has("angular_damping")) scene.world.angular_damping = object["angular_damping"].get<double>();
 }
 
 }  // namespace
 
-ResolverSettings read_settings(const json* settings, std::string_view path,
-                               const std::optional<std::string>& preset_override) {
+void read_settings(Scene& scene, const json* settings, std::string_view path,
+                   const std::optional<std::string>& preset_override) {
     std::string preset_name = "book";
     if (settings && settings->contains("preset")) preset_name = (*settings)["preset"].get<std::string>();
     if (preset_override) preset_name = *preset_override;
-    std::optional<ResolverSettings> s = preset(preset_name);
+    const std::optional<ResolverSettings> s = preset(preset_name);
     if (!s) throw InputError("--preset", "unknown preset \"" + preset_name + "\"; expected \"book\" or \"chapter\"");
-    if (settings) apply_fields(*s, *settings, path);
-    return *s;
+    scene.settings = *s;
+    if (settings) apply_fields(scene, *settings, path);
 }
 
-json settings_json(const ResolverSettings& s) {
+json settings_json(const ResolverSettings& s, const WorldSettings& world) {
     const auto fixed_limit = [](const std::optional<int>& v) { return v ? json(*v) : json(nullptr); };
     return {
         {"preset", s.preset},
@@ -92,10 +96,13 @@ json settings_json(const ResolverSettings& s) {
         {"tangential_acceleration_velocity", s.refinements.tangential_acceleration_velocity},
         {"orientation_update", name_of(orientation_update_names, s.orientation_update)},
         {"duration", s.duration},
+        {"frames", world.frames},
+        {"linear_damping", world.linear_damping},
+        {"angular_damping", world.angular_damping},
     };
 }
 
-void apply_setting(ResolverSettings& settings, std::string_view assignment, std::string_view flag) {
+void apply_setting(Scene& scene, std::string_view assignment, std::string_view flag) {
     const std::size_t equals = assignment.find('=');
     if (equals == std::string_view::npos || equals == 0)
         throw InputError(std::string(flag), "expected name=value, got \"" + std::string(assignment) + "\"");
@@ -120,13 +127,13 @@ void apply_setting(ResolverSettings& settings, std::string_view assignment, std:
         const std::optional<ResolverSettings> base =
             preset(object["preset"].is_string() ? object["preset"].get<std::string>() : "");
         if (!base) throw InputError(std::string(flag), "preset: must be \"book\" or \"chapter\", got " + value.dump());
-        settings = *base;
+        scene.settings = *base;
         return;
     }
     // Errors read "--set angular_limit.factor: must be >= 0, got -1".
     try {
         validate_settings_object(object, "");
-        apply_fields(settings, object, "");
+        apply_fields(scene, object, "");
     } catch (const InputError& e) {
         throw InputError(std::string(flag) + " " + e.where(), e.problem());
     }

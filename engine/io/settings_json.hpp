@@ -4,6 +4,7 @@
 
 #include "io/json_values.hpp"
 #include "resolver/settings.hpp"
+#include "scene/scene.hpp"
 
 #include <optional>
 #include <string>
@@ -11,16 +12,17 @@
 
 namespace impulse::io {
 
-// `settings` may be null (no settings given). The preset is `preset_override` when given, else the
-// object's "preset", else "book"; the object's other fields then apply on top. Assumes the object passed
-// the settings schema; throws InputError (path under `path`) for what a schema cannot say.
-ResolverSettings read_settings(const json* settings, std::string_view path,
-                               const std::optional<std::string>& preset_override = std::nullopt);
+// Fills scene.settings (the resolver's) and the world's frames and damping from a settings object, which may
+// be null (no settings given). The preset is `preset_override` when given, else the object's "preset", else
+// "book"; the object's other fields then apply on top. Assumes the object passed the settings schema; throws
+// InputError (path under `path`) for what a schema cannot say.
+void read_settings(Scene& scene, const json* settings, std::string_view path,
+                   const std::optional<std::string>& preset_override = std::nullopt);
 
-json settings_json(const ResolverSettings& settings);
+json settings_json(const ResolverSettings& settings, const WorldSettings& world);
 
 // Applies one `name=value` override, as `--set` gives it (value in JSON syntax, or a bare word for a
-// name); throws InputError naming `flag`.
-void apply_setting(ResolverSettings& settings, std::string_view assignment, std::string_view flag);
+// name); throws InputError naming `flag`. `preset=P` starts the resolver settings over from that preset.
+void apply_setting(Scene& scene, std::string_view assignment, std::string_view flag);
 
 }  // namespace impulse::io

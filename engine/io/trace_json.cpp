@@ -1,6 +1,6 @@
 #include "io/trace_json.hpp"
 
-#include "io/case_file.hpp"
+#include "io/scene_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/schemas.hpp"
@@ -66,6 +66,23 @@ DesiredDeltaVelocity read_desired(const json& j) {
             j["velocity_from_acceleration"].get<double>(), j["desired_delta_velocity"].get<double>()};
 }
 
+// --- why a contact exists ------------------------------------------------------------------------------
+
+json origin_json(const ContactOrigin& o) {
+    json features = json::array();
+    for (const Feature& f : o.features)
+        features.push_back({{"kind", name_of(feature_kind_names, f.kind)}, {"index", f.index}});
+    return {{"test", name_of(collision_test_names, o.test)}, {"features", features}};
+}
+
+ContactOrigin read_origin(const json& j) {
+    ContactOrigin o;
+    o.test = read_enum(collision_test_names, j["test"]);
+    for (std::size_t i = 0; i < 2; ++i)
+        o.features[i] = {read_enum(feature_kind_names, j["features"][i]["kind"]), j["features"][i]["index"].get<int>()};
+    return o;
+}
+
 // --- steps 1-5 of a contact -----------------------------------------------------------------------------
 
 json preparation_json(const ContactPreparation& d) {
@@ -79,6 +96,7 @@ json preparation_json(const ContactPreparation& d) {
         {"penetration", d.penetration},
         {"restitution", d.restitution},
         {"friction", d.friction},
+        {"origin", origin_json(d.origin)},
         {"basis", mat3_json(d.basis.contact_to_world)},
         {"tangent_seed", name_of(tangent_seed_names, d.basis.seed)},
         {"relative_position", per_body_vec3(d.relative_position)},
@@ -114,6 +132,7 @@ ContactPreparation read_preparation(const json& j) {
     d.penetration = j["penetration"].get<double>();
     d.restitution = j["restitution"].get<double>();
     d.friction = j["friction"].get<double>();
+    d.origin = read_origin(j["origin"]);
     d.basis.contact_to_world = read_mat3(j["basis"]);
     d.basis.normal = d.basis.contact_to_world.col(0);
     d.basis.tangent1 = d.basis.contact_to_world.col(1);
@@ -366,6 +385,7 @@ json frame_json(const FrameRecord& f, const ResolverSettings& settings) {
     return {{"frame", f.frame},
             {"phase_order", name_of(phase_order_names, f.phase_order)},
             {"bodies_before", before},
+            {"contact_count", f.contact_count},
             {"contacts", contacts},
             {"phases", positions_first ? json::array({position, velocity}) : json::array({velocity, position})},
             {"bodies_after", after}};
@@ -375,6 +395,7 @@ FrameRecord read_frame(const json& j) {
     FrameRecord f;
     f.frame = j["frame"].get<int>();
     f.phase_order = read_enum(phase_order_names, j["phase_order"]);
+    f.contact_count = j["contact_count"].get<int>();
     for (const json& body : j["bodies_before"]) {
         f.bodies_before.push_back(read_body_state(body));
         f.inverse_inertia_world.push_back(read_mat3(body["inverse_inertia_world"]));
@@ -410,11 +431,13 @@ json conventions_json() {
     };
 }
 
-// What the schema cannot say: every index in a frame must name a body or contact of the scene.
-void check_references(const json& frame, const std::string& path, std::size_t bodies, std::size_t contacts) {
+// What the schema cannot say: every index in a frame must name a body of the scene or a contact of the frame.
+void check_references(const json& frame, const std::string& path, std::size_t bodies) {
+    const std::size_t contacts = frame["contact_count"].get<std::size_t>();
     const auto in_range = [](const json& index, std::size_t count, const std::string& where, const char* what) {
         if (!index.is_null() && index.get<std::size_t>() >= count)
-            throw InputError(where, std::string("no ") + what + " " + index.dump() + " in the scene (it has " +
+            throw InputError(where, std::string("no ") + what + " " + index.dump() +
+                                        (what[0] == 'b' ? " in the scene" : " in this frame") + " (it has " +
                                         std::to_string(count) + ")");
     };
     for (const char* key : {"bodies_before", "bodies_after"})
@@ -456,12 +479,12 @@ json trace_json(const Trace& trace) {
     return {{"format", trace_format_name},
             {"version", trace.version},
             {"conventions", conventions_json()},
-            {"settings", settings_json(trace.scene.settings)},
+            {"settings", settings_json(trace.scene.settings, trace.scene.world)},
             {"recording",
              {{"first_frame", r.first_frame},
               {"last_frame", r.last_frame == INT_MAX ? json(nullptr) : json(r.last_frame)},
               {"contacts", r.contacts ? json(*r.contacts) : json(nullptr)}}},
-            {"scene", case_json(trace.scene, false)},
+            {"scene", scene_json(trace.scene, false)},
             {"frames", frames}};
 }
 
@@ -470,19 +493,18 @@ Trace read_trace(const json& document) {
     Trace trace;
     trace.version = document["version"].get<int>();
     try {
-        trace.scene = read_case(document["scene"]);
+        trace.scene = read_scene(document["scene"]);
     } catch (const InputError& e) {
         throw InputError(e.where().empty() ? "scene" : "scene." + e.where(), e.problem());
     }
-    trace.scene.settings = read_settings(&document["settings"], "settings");
+    read_settings(trace.scene, &document["settings"], "settings");
     const json& r = document["recording"];
     trace.recording.first_frame = r["first_frame"].get<int>();
     trace.recording.last_frame = r["last_frame"].is_null() ? INT_MAX : r["last_frame"].get<int>();
     if (!r["contacts"].is_null()) trace.recording.contacts = r["contacts"].get<std::vector<int>>();
     const json& frames = document["frames"];
     for (std::size_t i = 0; i < frames.size(); ++i) {
-        check_references(frames[i], json_path_index("frames", i), trace.scene.bodies.size(),
-                         trace.scene.contacts.size());
+        check_references(frames[i], json_path_index("frames", i), trace.scene.bodies.size());
         trace.frames.push_back(read_frame(frames[i]));
     }
     return trace;

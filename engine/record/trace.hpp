@@ -4,7 +4,7 @@
 
 #include "record/iteration_records.hpp"
 #include "resolver/prepared_contact.hpp"
-#include "scene/case.hpp"
+#include "scene/scene.hpp"
 
 #include <climits>
 #include <optional>
@@ -36,6 +36,7 @@ struct FrameRecord {
     int frame = 0;
     std::vector<BodyState> bodies_before;
     std::vector<Mat3> inverse_inertia_world;   // per body, as the whole frame uses it
+    int contact_count = 0;                     // contacts resolved this frame, recorded or not; indices count from 0
     std::vector<ContactPreparation> contacts;  // steps 1-5 of each recorded contact
     PhaseOrder phase_order = PhaseOrder::positions_first;
     PhaseLog<PositionIteration> position;
@@ -59,7 +60,7 @@ struct TraceFilter {
 
 struct Trace {
     int version = trace_format_version;
-    Case scene;  // the bodies and contacts as loaded, with the settings that ran
+    Scene scene;  // the bodies and contacts as loaded, with the settings that ran
     TraceFilter recording;
     std::vector<FrameRecord> frames;
 

@@ -14,6 +14,7 @@ void TraceRecorder::begin_frame(int frame, std::span<const RigidBody> bodies, st
 
 void TraceRecorder::contacts_prepared(std::span<const PreparedContact> contacts) {
     if (!recording_) return;
+    trace_.frames.back().contact_count = static_cast<int>(contacts.size());
     for (const PreparedContact& c : contacts)
         if (trace_.recording.records_contact(c.derivation.contact))
             trace_.frames.back().contacts.push_back(c.derivation);

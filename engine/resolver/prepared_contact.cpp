@@ -22,9 +22,11 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     d.normal = contact.normal;
     // Body 0 must be a body: a contact given as (world, body) becomes (body, world) with the normal
     // reversed, so the normal still points towards body 0.
+    d.origin = contact.origin;
     d.swapped = d.bodies[0] == world_body;
     if (d.swapped) {
         std::swap(d.bodies[0], d.bodies[1]);
+        std::swap(d.origin.features[0], d.origin.features[1]);
         d.normal = -d.normal;
     }
     d.point = contact.point;

@@ -27,6 +27,7 @@ struct ContactPreparation {
     double penetration;
     double restitution;
     double friction;
+    ContactOrigin origin;             // the test and features that made it (features swapped with the bodies)
     bool inert;                       // both bodies immovable: no impulse or move can change this contact
     Basis basis;                      // step 1
     PerBody<Vec3> relative_position;  // step 2

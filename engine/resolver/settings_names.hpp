@@ -2,6 +2,7 @@
 // The snake_case names of the settings' enumerations: the same words in case files, traces, the command
 // line and the inspector. One table per enumeration, read both ways.
 
+#include "contact/contact.hpp"
 #include "derivation/basis.hpp"
 #include "derivation/impulse.hpp"
 #include "resolver/settings.hpp"
@@ -47,6 +48,23 @@ inline constexpr NameTable<ImpulseModel, 3> impulse_model_names{{
     {ImpulseModel::frictionless, "frictionless"},
     {ImpulseModel::static_friction, "static"},
     {ImpulseModel::sliding_friction, "sliding"},
+}};
+
+inline constexpr NameTable<CollisionTest, 6> collision_test_names{{
+    {CollisionTest::explicit_contact, "explicit"},
+    {CollisionTest::sphere_sphere, "sphere_sphere"},
+    {CollisionTest::sphere_half_space, "sphere_half_space"},
+    {CollisionTest::box_half_space, "box_half_space"},
+    {CollisionTest::box_sphere, "box_sphere"},
+    {CollisionTest::box_box, "box_box"},
+}};
+inline constexpr NameTable<FeatureKind, 6> feature_kind_names{{
+    {FeatureKind::none, "none"},
+    {FeatureKind::face, "face"},
+    {FeatureKind::edge, "edge"},
+    {FeatureKind::vertex, "vertex"},
+    {FeatureKind::sphere, "sphere"},
+    {FeatureKind::plane, "plane"},
 }};
 
 template <typename Enum, std::size_t N>

@@ -19,7 +19,7 @@ void add_resolve(CLI::App& app, ResolveOptions& o) {
     CLI::App* resolve = app.add_subcommand("resolve",
                                            "Resolve a case's contacts once and record every derivation step.\n"
                                            "Example: impulse-lab resolve scenes/cases/ruler.json --explain");
-    resolve->add_option("CASE", o.case_file, "Case file (JSON): bodies, explicit contacts, settings")->required();
+    resolve->add_option("CASE", o.case_file, "Scene file (JSON): bodies, explicit contacts, settings")->required();
     resolve->add_option("--preset", o.preset, "Settings preset the case's own settings apply on top of")
         ->check(CLI::IsMember({"book", "chapter"}));
     resolve->add_option("--set", o.settings,
@@ -32,9 +32,28 @@ void add_resolve(CLI::App& app, ResolveOptions& o) {
                       "Print every derivation step as a table: quantity, value, formula, equation, meaning");
 }
 
+void add_run(CLI::App& app, RunOptions& o) {
+    CLI::App* run = app.add_subcommand(
+        "run",
+        "Simulate a scene frame by frame (integrate, detect contacts, resolve them) and summarise it.\n"
+        "Example: impulse-lab run scenes/stack_3.json --trace stack.json --record frames=0..9");
+    run->add_option("SCENE", o.scene_file, "Scene file (JSON)")->required();
+    run->add_option("--frames", o.frames, "Frames to simulate (default: the scene's settings.frames, 600)")
+        ->check(CLI::Range(1, 10000000));
+    run->add_option("--dt", o.dt, "Frame duration in seconds (default: the scene's settings.duration, 1/60)")
+        ->check(CLI::Range(1e-6, 10.0));
+    run->add_option("--preset", o.preset, "Settings preset the scene's own settings apply on top of")
+        ->check(CLI::IsMember({"book", "chapter"}));
+    run->add_option("--set", o.settings, "Change one setting, e.g. --set position_epsilon=0.001 (repeatable)");
+    run->add_option("--trace", o.trace_file, "Write the trace of the recorded frames (JSON), atomically");
+    run->add_option("--record", o.record,
+                    "Record only part of the run: frames=A..B or contacts=I,J,... (default: every frame)");
+    run->add_option("--states", o.states_file, "Write every body's state per frame as CSV, atomically");
+}
+
 void add_validate(CLI::App& app, std::vector<std::string>& files) {
     CLI::App* validate = app.add_subcommand("validate", "Check case and trace files against their schemas");
-    validate->add_option("FILE", files, "Case or trace files (JSON)")->required();
+    validate->add_option("FILE", files, "Scene or trace files (JSON)")->required();
 }
 
 // CLI11 forms of a user's mistake as one line: "impulse-lab resolve: --preset: ..." with a pointer to help.
@@ -47,13 +66,15 @@ std::string one_line(const std::string& text) {
 
 }  // namespace
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal) {
     CLI::App app{"Impulse Lab: step through rigid-body collision resolution (Millington, ch. 14)", "impulse-lab"};
     app.set_version_flag("--version", version_text);
     app.require_subcommand(1);
     ResolveOptions resolve;
+    RunOptions run_options;
     std::vector<std::string> validate_files;
     add_resolve(app, resolve);
+    add_run(app, run_options);
     add_validate(app, validate_files);
 
     // CLI11 would say only "A subcommand is required" for a misspelt command; name it instead.
@@ -62,7 +83,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     };
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_command(args[0])) {
         err << "impulse-lab: unknown command \"" << args[0]
-            << "\" (commands: resolve, validate; see impulse-lab --help)\n";
+            << "\" (commands: resolve, run, validate; see impulse-lab --help)\n";
         return exit_bad_input;
     }
     try {
@@ -82,6 +103,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
 
     try {
         if (app.got_subcommand("resolve")) return resolve_command(resolve, out);
+        if (app.got_subcommand("run")) return run_command(run_options, out, err, err_is_terminal ? &err : nullptr);
         return validate_command(validate_files, out, err);
     } catch (const FileError& e) {
         err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';

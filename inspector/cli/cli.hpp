@@ -12,7 +12,7 @@ inline constexpr int exit_ok = 0;
 inline constexpr int exit_failure = 1;    // something went wrong inside the program
 inline constexpr int exit_bad_input = 2;  // a file or flag the user gave is wrong
 
-// `args` excludes the program name.
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+// `args` excludes the program name. `err_is_terminal` allows a progress bar on `err` for long runs.
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal = false);
 
 }  // namespace impulse::cli

@@ -20,6 +20,20 @@ struct ResolveOptions {
 
 int resolve_command(const ResolveOptions& options, std::ostream& out);
 
+struct RunOptions {
+    std::string scene_file;
+    std::optional<int> frames;
+    std::optional<double> dt;
+    std::optional<std::string> preset;
+    std::vector<std::string> settings;  // --set name=value, in order
+    std::optional<std::string> trace_file;
+    std::vector<std::string> record;
+    std::optional<std::string> states_file;
+};
+
+// `progress` is where a progress bar may go (a terminal), or null for none.
+int run_command(const RunOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress);
+
 // Prints one line per file; returns exit_bad_input if any file is invalid (all files are checked).
 int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
 

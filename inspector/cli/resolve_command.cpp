@@ -5,34 +5,38 @@
 #include "cli/input_files.hpp"
 #include "explain/explain.hpp"
 #include "io/atomic_file.hpp"
-#include "io/case_file.hpp"
+#include "io/scene_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/settings_json.hpp"
 #include "io/trace_json.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
+#include "world/world.hpp"
 
 namespace impulse::cli {
 
 int resolve_command(const ResolveOptions& options, std::ostream& out) {
     Trace trace;
     try {
-        trace.scene = io::read_case_text(read_input_file(options.case_file), options.preset);
+        trace.scene = io::read_scene_text(read_input_file(options.case_file), options.preset);
     } catch (const io::InputError& e) {
         throw FileError{options.case_file, e.where(), e.problem()};
     }
-    for (const std::string& assignment : options.settings) io::apply_setting(trace.scene.settings, assignment, "--set");
+    for (const std::string& assignment : options.settings) io::apply_setting(trace.scene, assignment, "--set");
     for (const std::string& spec : options.record) apply_record_spec(spec, trace.recording);
+
+    // The contacts written in the file when it gives any; otherwise those the scene's shapes make as given.
+    const std::vector<Contact> contacts =
+        trace.scene.contacts.empty() ? detect_contacts(trace.scene, trace.scene.bodies).contacts : trace.scene.contacts;
     if (trace.recording.contacts)
         for (int contact : *trace.recording.contacts)
-            if (contact >= static_cast<int>(trace.scene.contacts.size()))
-                throw io::InputError("--record", "there is no contact " + std::to_string(contact) + " (the case has " +
-                                                     std::to_string(trace.scene.contacts.size()) + ")");
-
+            if (contact >= static_cast<int>(contacts.size()))
+                throw io::InputError("--record", "there is no contact " + std::to_string(contact) + " (there are " +
+                                                     std::to_string(contacts.size()) + ")");
     std::vector<RigidBody> bodies = trace.scene.bodies;
     TraceRecorder recorder(trace);
-    resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
+    resolve_contacts(bodies, contacts, trace.scene.settings, recorder);
 
     // Everything the user asked for is checked before anything is written, and the trace is written
     // atomically, so a failed run leaves no file behind.

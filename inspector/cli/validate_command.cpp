@@ -5,10 +5,11 @@
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
-#include "io/case_file.hpp"
+#include "io/scene_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/trace_json.hpp"
+
 
 namespace impulse::cli {
 
@@ -29,9 +30,13 @@ std::string check_file(const std::string& path) {
                count(trace.frames.size(), "frame", "frames") + ", " + count(iterations, "iteration", "iterations") +
                ")";
     }
-    const Case c = io::read_case(document);
-    return "valid case (" + count(c.bodies.size(), "body", "bodies") + ", " +
-           count(c.contacts.size(), "contact", "contacts") + ")";
+    const Scene c = io::read_scene(document);
+    // A case writes its contacts out; a scene leaves them to its shapes.
+    const bool is_case = !c.contacts.empty();
+    std::string text = std::string(is_case ? "valid case (" : "valid scene (") + count(c.bodies.size(), "body", "bodies");
+    if (c.ground) text += ", ground";
+    if (is_case) text += ", " + count(c.contacts.size(), "contact", "contacts");
+    return text + ")";
 }
 
 }  // namespace

@@ -14,6 +14,35 @@ std::string body_name(const Trace& trace, int body) {
     return body == world_body ? "the world" : trace.scene.body_names[static_cast<std::size_t>(body)];
 }
 
+std::string feature_text(const Feature& f) {
+    switch (f.kind) {
+        case FeatureKind::face:
+            return "face " + std::to_string(f.index);
+        case FeatureKind::edge:
+            return "edge " + std::to_string(f.index);
+        case FeatureKind::vertex:
+            return "vertex " + std::to_string(f.index);
+        case FeatureKind::sphere:
+            return "its surface";
+        case FeatureKind::plane:
+            return "the ground plane";
+        case FeatureKind::none:
+            return "";
+    }
+    return "";
+}
+
+// "made by box_half_space: vertex 3 of body 0 against the ground plane"
+std::string origin_text(const ContactOrigin& o) {
+    if (o.test == CollisionTest::explicit_contact) return "written in the file";
+    std::string text = "made by " + std::string(name_of(collision_test_names, o.test)) + ": " +
+                       feature_text(o.features[0]) + " of body 0 against ";
+    text += o.features[1].kind == FeatureKind::plane ? feature_text(o.features[1])
+                                                     : feature_text(o.features[1]) + " of body 1";
+    const bool box = o.features[0].index >= 0 || o.features[1].index >= 0;
+    return box ? text + " (box features numbered as in docs/scenes.md)" : text;
+}
+
 std::string describe_settings(const ResolverSettings& s) {
     std::string text =
         "preset " + s.preset + ": " +
@@ -85,7 +114,8 @@ void write_explanation(std::ostream& out, const Trace& trace) {
                 << body_name(trace, c.bodies[1]) << " (body 1) ==\n"
                 << "  point " << vector(c.point) << " m, normal " << vector(c.normal) << ", penetration "
                 << number(c.penetration) << " m, restitution " << number(c.restitution) << ", friction "
-                << number(c.friction) << '\n';
+                << number(c.friction) << '\n'
+                << "  " << origin_text(c.origin) << '\n';
             if (c.swapped)
                 out << "  (given with the world as body 0: bodies swapped and the normal reversed, so it points "
                        "towards body 0)\n";

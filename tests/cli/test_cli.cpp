@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 using namespace impulse::test;
 
@@ -102,7 +103,7 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
          "impulse-lab: --set: expected name=value, got \"position_epsilon\""},
         {{"resolve", ruler, "--set", "positon_epsilon=1"},
          "impulse-lab: --set positon_epsilon: unknown field (did you mean \"position_epsilon\"?)"},
-        {{"resolve", ruler, "--record", "contacts=5"}, "impulse-lab: --record: there is no contact 5 (the case has 1)"},
+        {{"resolve", ruler, "--record", "contacts=5"}, "impulse-lab: --record: there is no contact 5 (there are 1)"},
         {{"resolve", ruler, "--record", "frames=x"},
          "impulse-lab: --record: \"x\" in \"frames=x\" is not a whole number >= 0"},
         {{"resolve", ruler, "--record", "bodies=1"},
@@ -112,7 +113,7 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
              "': No such file or directory"},
         {{"resolve", ruler, "--explian"}, "impulse-lab: The following argument was not expected: --explian"},
         {{"resolve"}, "impulse-lab: CASE is required"},
-        {{"frobnicate"}, "impulse-lab: unknown command \"frobnicate\" (commands: resolve, validate"},
+        {{"frobnicate"}, "impulse-lab: unknown command \"frobnicate\" (commands: resolve, run, validate"},
     };
     for (const BadFlag& b : table) {
         std::vector<std::string> args = b.args;
@@ -127,6 +128,57 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
         CHECK(count_of(r.err, "\n") == 1);
         CHECK(r.out.empty());
         CHECK_FALSE(std::filesystem::exists(trace));
+    }
+    CHECK(dir.entries() == 0);
+}
+
+TEST_CASE("run simulates a scene, writes its trace and states, and summarises every stage") {
+    TempDir dir;
+    const std::string trace = dir.file("stack.trace.json").string();
+    const std::string states = dir.file("stack.csv").string();
+    const CliResult r = run_cli(
+        {"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "5", "--trace", trace, "--states", states});
+    CHECK(r.code == 0);
+    CHECK(r.err.empty());
+    for (const char* part : {"3 bodies, ground, 5 frames", "frame    time s  contacts  deepest mm   kinetic J",
+                             "per frame: integrate", "iteration limit reached in", "box2 (highest at the start)"})
+        CHECK_MESSAGE(r.out.find(part) != std::string::npos, part);
+    const CliResult v = run_cli({"validate", trace});
+    CHECK(v.code == 0);
+    CHECK(v.out.find("5 frames") != std::string::npos);
+    std::ifstream csv(states);
+    std::string line;
+    std::getline(csv, line);
+    CHECK(line == "frame,time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy");
+    std::size_t rows = 0;
+    while (std::getline(csv, line)) ++rows;
+    CHECK(rows == 3 * (5 + 1));  // every body, the scene as given (frame -1) and 5 frames
+}
+
+TEST_CASE("run says that a scene's written contacts are for resolve") {
+    const CliResult r = run_cli({"run", cases + "two_body_oblique.json", "--frames", "2"});
+    CHECK(r.code == 0);
+    CHECK(r.err.find("note: the 1 contact(s) written in") != std::string::npos);
+}
+
+TEST_CASE("run refuses bad flags and unwritable outputs before simulating, and writes nothing") {
+    TempDir dir;
+    const std::string scene = IMPULSE_SOURCE_DIR "/scenes/stack_3.json";
+    const std::string trace = dir.file("t.json").string();
+    const std::vector<std::pair<std::vector<std::string>, std::string>> table{
+        {{"run", scene, "--frames", "0"}, "impulse-lab: --frames: Value 0 not in range 1 to 10000000"},
+        {{"run", scene, "--dt", "-1"}, "impulse-lab: --dt: Value -1 not in range"},
+        {{"run", scene, "--trace", trace, "--states", dir.file("no/dir/s.csv").string()},
+         "impulse-lab: --states: cannot write '" + dir.file("no/dir/s.csv").string() + "': No such file or directory"},
+        {{"run", scene, "--trace", trace, "--set", "frames=0"}, "impulse-lab: --set frames: must be >= 1, got 0"},
+    };
+    for (const auto& [args, starts] : table) {
+        CAPTURE(starts);
+        const CliResult r = run_cli(args);
+        CHECK(r.code == 2);
+        CHECK(r.err.rfind(starts, 0) == 0);
+        CHECK(count_of(r.err, "\n") == 1);
+        CHECK(r.out.empty());
     }
     CHECK(dir.entries() == 0);
 }

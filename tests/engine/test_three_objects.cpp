@@ -2,7 +2,7 @@
 // closing velocity and restitution give the same separating velocity at the contact, split differently
 // between linear and angular motion.
 
-#include "io/case_file.hpp"
+#include "io/scene_file.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "support/approx.hpp"
@@ -17,7 +17,7 @@ using namespace impulse::test;
 namespace {
 
 struct Figure {
-    Case c;
+    Scene c;
     Trace trace;
     std::vector<RigidBody> after;
 };
@@ -26,7 +26,7 @@ Figure resolve_figure() {
     std::ifstream in(IMPULSE_SOURCE_DIR "/scenes/cases/three_objects.json");
     std::stringstream text;
     text << in.rdbuf();
-    Figure f{io::read_case_text(text.str()), {}, {}};
+    Figure f{io::read_scene_text(text.str()), {}, {}};
     f.after = f.c.bodies;
     f.trace.scene = f.c;
     TraceRecorder recorder(f.trace);

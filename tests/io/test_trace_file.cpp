@@ -1,7 +1,7 @@
 // Trace files: written, read back and equal value for value; the written file passes its schema; keys are
 // the derivation vocabulary; indices that point nowhere are rejected.
 
-#include "io/case_file.hpp"
+#include "io/scene_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/settings_json.hpp"
@@ -18,17 +18,17 @@ using namespace impulse;
 
 namespace {
 
-Case shipped(const std::string& name) {
+Scene shipped(const std::string& name) {
     std::ifstream in(IMPULSE_SOURCE_DIR "/scenes/cases/" + name + ".json");
     std::stringstream text;
     text << in.rdbuf();
-    return io::read_case_text(text.str());
+    return io::read_scene_text(text.str());
 }
 
-Trace resolved(const Case& c, const std::vector<std::string>& settings = {}) {
+Trace resolved(const Scene& c, const std::vector<std::string>& settings = {}) {
     Trace trace;
     trace.scene = c;
-    for (const std::string& s : settings) io::apply_setting(trace.scene.settings, s, "--set");
+    for (const std::string& s : settings) io::apply_setting(trace.scene, s, "--set");
     std::vector<RigidBody> bodies = c.bodies;
     TraceRecorder recorder(trace);
     resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
@@ -86,6 +86,7 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
                                             "penetration",
                                             "restitution",
                                             "friction",
+                                            "origin",
                                             "basis",
                                             "tangent_seed",
                                             "relative_position",
@@ -121,7 +122,7 @@ TEST_CASE("the header says what ran: format, version, conventions, full settings
     CHECK(j["format"] == "impulse-lab-trace");
     CHECK(j["version"] == 1);
     CHECK(j["conventions"]["quaternion"] == "[w, x, y, z], unit, body to world");
-    CHECK(j["settings"] == io::settings_json(*preset("book")));
+    CHECK(j["settings"] == io::settings_json(*preset("book"), WorldSettings{}));
     CHECK(j["scene"]["bodies"][0]["name"] == "ruler");
     CHECK(j["scene"]["bodies"][0].contains("inverse_inertia"));
 }
@@ -134,7 +135,7 @@ TEST_CASE("a trace whose indices point outside its scene is rejected with the pa
         FAIL("accepted a trace with an iteration on contact 5");
     } catch (const io::InputError& e) {
         CHECK(std::string(e.what()) ==
-              "frames[0].phases[1].iterations[0].contact: no contact 5 in the scene (it has 1)");
+              "frames[0].phases[1].iterations[0].contact: no contact 5 in this frame (it has 1)");
     }
 }
 

@@ -3,7 +3,7 @@
 
 #include "body/rigid_body.hpp"
 #include "contact/contact.hpp"
-#include "io/case_file.hpp"
+#include "shapes/shape.hpp"
 #include "resolver/prepared_contact.hpp"
 #include "resolver/settings.hpp"
 
@@ -16,7 +16,7 @@ inline RigidBody sphere(double mass, double radius, const Vec3& position, const 
     b.position = position;
     b.velocity = velocity;
     b.inverse_mass = 1.0 / mass;
-    b.inverse_inertia_body = io::sphere_inverse_inertia(b.inverse_mass, radius);
+    b.inverse_inertia_body = sphere_inverse_inertia(b.inverse_mass, radius);
     return b;
 }
 
@@ -25,7 +25,7 @@ inline RigidBody box(double mass, const Vec3& half_size, const Vec3& position, c
     b.position = position;
     b.velocity = velocity;
     b.inverse_mass = 1.0 / mass;
-    b.inverse_inertia_body = io::box_inverse_inertia(b.inverse_mass, half_size);
+    b.inverse_inertia_body = box_inverse_inertia(b.inverse_mass, half_size);
     return b;
 }
 

@@ -1,7 +1,7 @@
-// Case files: what a minimal case means (its defaults), and a table of malformed cases, each rejected with
+// Scene files: what a minimal case means (its defaults), and a table of malformed cases, each rejected with
 // one line naming the JSON path, exit code 2, and no output file written.
 
-#include "io/case_file.hpp"
+#include "io/scene_file.hpp"
 #include "math/rotation.hpp"
 #include "support/approx.hpp"
 #include "support/run_cli.hpp"
@@ -13,7 +13,7 @@ using namespace impulse;
 using namespace impulse::test;
 
 TEST_CASE("a minimal case fills every default") {
-    const Case c = io::read_case_text(R"({
+    const Scene c = io::read_scene_text(R"({
         "bodies": [{"inertia": [[1, 0, 0], [0, 2, 0], [0, 0, 4]]}],
         "contacts": [{"bodies": [0, null], "point": [0, 0, 0], "normal": [0, 2, 0]}]})");
     REQUIRE(c.bodies.size() == 1);
@@ -35,7 +35,7 @@ TEST_CASE("a minimal case fills every default") {
 }
 
 TEST_CASE("shapes give the exact solid inertia: 2/5 m r^2 for a sphere, m (b^2 + c^2) / 3 for a box") {
-    const Case c = io::read_case_text(R"({
+    const Scene c = io::read_scene_text(R"({
         "bodies": [{"mass": 2, "shape": {"type": "sphere", "radius": 0.5}},
                    {"mass": 3, "shape": {"type": "box", "half_size": [1, 0.5, 0.25]}},
                    {"name": "ground", "inverse_mass": 0}],
@@ -47,7 +47,7 @@ TEST_CASE("shapes give the exact solid inertia: 2/5 m r^2 for a sphere, m (b^2 +
 }
 
 TEST_CASE("orientation is [w, x, y, z] and orientation_deg turns about X, then Y, then Z") {
-    const Case c = io::read_case_text(R"({
+    const Scene c = io::read_scene_text(R"({
         "bodies": [{"inverse_mass": 0, "orientation": [0.7071067811865476, 0, 0, 0.7071067811865476]},
                    {"inverse_mass": 0, "orientation_deg": [0, 0, 90]},
                    {"inverse_mass": 0, "orientation_deg": [90, 90, 0]}],
@@ -59,13 +59,13 @@ TEST_CASE("orientation is [w, x, y, z] and orientation_deg turns about X, then Y
 }
 
 TEST_CASE("a case written out in full reads back to the same bodies, contacts and settings") {
-    const Case c = io::read_case_text(R"({
+    const Scene c = io::read_scene_text(R"({
         "bodies": [{"name": "a", "mass": 2, "orientation_deg": [10, 20, 30], "velocity": [1, 2, 3],
                     "shape": {"type": "box", "half_size": [1, 0.5, 0.25]}},
                    {"name": "b", "mass": 1, "shape": {"type": "sphere", "radius": 0.3}}],
         "contacts": [{"bodies": [null, "a"], "point": [0, 0.1, 0], "normal": [0.3, -1, 0.2], "penetration": 0.01}],
         "settings": {"preset": "chapter", "angular_limit": {"policy": "angle"}, "position_iterations": 7}})");
-    const Case again = io::read_case(io::case_json(c, true));
+    const Scene again = io::read_scene(io::scene_json(c, true));
     CHECK(again == c);
     CHECK(again.settings.angular_limit.factor == 45.0);
     CHECK(again.settings.iterations.position == 7);
@@ -107,7 +107,7 @@ TEST_CASE("malformed cases are rejected with one line naming the path, exit code
          "contacts[0].bodies[0]: no body named \"rular\" (did you mean \"ruler\"?)"},
         {"body index out of range",
          case_with("[" + ruler + "]", R"([{"bodies": [0, 3], "point": [0, 0, 0], "normal": [0, 1, 0]}])"),
-         "contacts[0].bodies[1]: no body with index 3 (the case has 1 body, numbered from 0)"},
+         "contacts[0].bodies[1]: no body with index 3 (the scene has 1 body, numbered from 0)"},
         {"world against world",
          case_with("[" + ruler + "]", R"([{"bodies": [null, null], "point": [0, 0, 0], "normal": [0, 1, 0]}])"),
          "contacts[0].bodies: at least one must be a body (both are the world)"},
@@ -142,7 +142,7 @@ TEST_CASE("malformed cases are rejected with one line naming the path, exit code
          "contacts[0].restitution: must be <= 1, got 1.5"},
         {"unknown preset", case_with("[" + ruler + "]", "[]", R"(, "settings": {"preset": "fast"})"),
          "settings.preset: must be one of \"book\", \"chapter\"; got \"fast\""},
-        {"no contacts list", R"({"bodies": [)" + ruler + "]}", "contacts: missing (required)"},
+        {"no bodies list", R"({"contacts": []})", "bodies: missing (required)"},
         {"no bodies", case_with("[]", "[]"), "bodies: must have at least 1 item, got 0"},
         {"a string for a number", case_with(R"([{"inverse_mass": 0, "position": [0, "x", 0]}])", "[]"),
          "bodies[0].position[1]: must be a number, got \"x\""},
@@ -156,7 +156,8 @@ TEST_CASE("malformed cases are rejected with one line naming the path, exit code
          "a literal"},
     };
     for (const Malformed& m : table) {
-        CAPTURE(m.what);
+        const std::string what = m.what;
+        CAPTURE(what);
         TempDir dir;
         const std::string file = dir.write("case.json", m.text).string();
         const std::string trace = dir.file("out.json").string();

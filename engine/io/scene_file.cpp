@@ -1,4 +1,4 @@
-#include "io/case_file.hpp"
+#include "io/scene_file.hpp"
 
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
@@ -65,10 +65,31 @@ Quat read_orientation(const json& body, const std::string& path) {
     return q;
 }
 
-Mat3 read_inverse_inertia(const json& body, double inverse_mass, const std::string& path) {
-    const int given =
-        int(body.contains("inertia")) + int(body.contains("inverse_inertia")) + int(body.contains("shape"));
-    if (given > 1) throw InputError(path, "give only one of inertia, inverse_inertia and shape (they would disagree)");
+std::optional<Shape> read_shape(const json& body, const std::string& path) {
+    if (!body.contains("shape")) return std::nullopt;
+    const json& shape = body["shape"];
+    const std::string shape_path = json_path_child(path, "shape");
+    const std::string type = shape["type"].get<std::string>();
+    const char* size_key = type == "sphere" ? "radius" : "half_size";
+    const char* other_key = type == "sphere" ? "half_size" : "radius";
+    if (!shape.contains(size_key))
+        throw InputError(json_path_child(shape_path, size_key), "missing (a " + type + " needs a " + size_key + ")");
+    if (shape.contains(other_key))
+        throw InputError(json_path_child(shape_path, other_key), "does not belong to a " + type);
+    if (type == "sphere") return Sphere{shape["radius"].get<double>()};
+    const Vec3 half_size = read_vec3(shape["half_size"]);
+    for (int i = 0; i < 3; ++i)
+        if (!(half_size[i] > 0.0))
+            throw InputError(json_path_index(json_path_child(shape_path, "half_size"), static_cast<std::size_t>(i)),
+                             "must be > 0, got " + number_text(half_size[i]));
+    return Box{half_size};
+}
+
+// Given inertia overrides the shape's; without either, an immovable body cannot turn and any other is an error.
+Mat3 read_inverse_inertia(const json& body, double inverse_mass, const std::optional<Shape>& shape,
+                          const std::string& path) {
+    if (body.contains("inertia") && body.contains("inverse_inertia"))
+        throw InputError(json_path_child(path, "inverse_inertia"), "give inertia or inverse_inertia, not both");
     if (body.contains("inverse_inertia")) {
         const Mat3 m = read_mat3(body["inverse_inertia"]);
         check_inverse_inertia(m, json_path_child(path, "inverse_inertia"));
@@ -76,31 +97,23 @@ Mat3 read_inverse_inertia(const json& body, double inverse_mass, const std::stri
     }
     if (body.contains("inertia"))
         return inverse_of_inertia(read_mat3(body["inertia"]), json_path_child(path, "inertia"));
-    if (body.contains("shape")) {
-        const json& shape = body["shape"];
-        const std::string shape_path = json_path_child(path, "shape");
-        const std::string type = shape["type"].get<std::string>();
-        const char* size_key = type == "sphere" ? "radius" : "half_size";
-        const char* other_key = type == "sphere" ? "half_size" : "radius";
-        if (!shape.contains(size_key))
-            throw InputError(
-                json_path_child(shape_path, size_key),
-                std::string("missing (a ") + type + " needs a " + (type == "sphere" ? "radius" : "half_size") + ")");
-        if (shape.contains(other_key))
-            throw InputError(json_path_child(shape_path, other_key), "does not belong to a " + type);
-        if (type == "sphere") return sphere_inverse_inertia(inverse_mass, shape["radius"].get<double>());
-        const Vec3 half_size = read_vec3(shape["half_size"]);
-        for (int i = 0; i < 3; ++i)
-            if (!(half_size[i] > 0.0))
-                throw InputError(json_path_index(json_path_child(shape_path, "half_size"), static_cast<std::size_t>(i)),
-                                 "must be > 0, got " + number_text(half_size[i]));
-        return box_inverse_inertia(inverse_mass, half_size);
-    }
+    if (shape) return solid_inverse_inertia(*shape, inverse_mass);
     if (inverse_mass == 0.0) return Mat3::Zero();  // immovable: nothing turns it either
     throw InputError(path, "needs inertia, inverse_inertia or shape: a body with finite mass must resist rotation");
 }
 
-RigidBody read_body(const json& j, const std::string& path) {
+std::string read_material_name(const json& j, const std::map<std::string, Material>& materials,
+                               const std::string& path) {
+    const std::string name = j.value("material", default_material);
+    if (materials.count(name)) return name;
+    std::vector<std::string> known;
+    for (const auto& [key, value] : materials) known.push_back(key);
+    const std::optional<std::string> guess = closest_name(name, known);
+    throw InputError(json_path_child(path, "material"),
+                     "no material named \"" + name + "\"" + (guess ? " (did you mean \"" + *guess + "\"?)" : ""));
+}
+
+RigidBody read_body(const json& j, const std::optional<Shape>& shape, const std::string& path) {
     RigidBody body;
     const auto vec_or_zero = [&j](const char* key) { return j.contains(key) ? read_vec3(j[key]) : Vec3::Zero(); };
     body.position = vec_or_zero("position");
@@ -113,7 +126,7 @@ RigidBody read_body(const json& j, const std::string& path) {
     body.inverse_mass = j.contains("inverse_mass") ? j["inverse_mass"].get<double>()
                         : j.contains("mass")       ? 1.0 / j["mass"].get<double>()
                                                    : 1.0;
-    body.inverse_inertia_body = read_inverse_inertia(j, body.inverse_mass, path);
+    body.inverse_inertia_body = read_inverse_inertia(j, body.inverse_mass, shape, path);
     return body;
 }
 
@@ -128,7 +141,7 @@ int read_body_reference(const json& ref, const std::vector<std::string>& names, 
     }
     const auto index = ref.get<long long>();
     if (index < 0 || index >= static_cast<long long>(names.size()))
-        throw InputError(path, "no body with index " + std::to_string(index) + " (the case has " +
+        throw InputError(path, "no body with index " + std::to_string(index) + " (the scene has " +
                                    std::to_string(names.size()) + (names.size() == 1 ? " body" : " bodies") +
                                    ", numbered from 0)");
     return static_cast<int>(index);
@@ -155,24 +168,39 @@ Contact read_contact(const json& j, const std::vector<std::string>& names, const
     return c;
 }
 
+std::map<std::string, Material> read_materials(const json& document) {
+    std::map<std::string, Material> materials{{default_material, Material{}}};
+    if (!document.contains("materials")) return materials;
+    for (const auto& [name, j] : document["materials"].items()) {
+        Material m;
+        m.restitution = j.value("restitution", m.restitution);
+        m.friction = j.value("friction", m.friction);
+        materials[name] = m;
+    }
+    return materials;
+}
+
+std::optional<Ground> read_ground(const json& document, const std::map<std::string, Material>& materials) {
+    if (!document.contains("ground")) return std::nullopt;
+    const json& j = document["ground"];
+    Ground ground;
+    if (j.contains("normal")) {
+        const Vec3 n = read_vec3(j["normal"]);
+        if (!(n.norm() > 1e-12)) throw InputError("ground.normal", "must not be zero");
+        ground.plane.normal = std::abs(n.norm() - 1.0) > unit_rounding ? Vec3(n.normalized()) : n;
+    }
+    ground.plane.offset = j.value("offset", 0.0);
+    ground.material = read_material_name(j, materials, "ground");
+    return ground;
+}
+
 }  // namespace
 
-Mat3 sphere_inverse_inertia(double inverse_mass, double radius) {
-    // I = 2/5 m r^2  =>  I^-1 = 5 / (2 m r^2) = 2.5 m^-1 / r^2
-    return Mat3::Identity() * (2.5 * inverse_mass / (radius * radius));
-}
-
-Mat3 box_inverse_inertia(double inverse_mass, const Vec3& h) {
-    // I_xx = m (b^2 + c^2) / 3 for half-sizes (a, b, c), and likewise about y and z.
-    const Vec3 squares = h.cwiseProduct(h);
-    return Vec3(3.0 * inverse_mass / (squares.y() + squares.z()), 3.0 * inverse_mass / (squares.x() + squares.z()),
-                3.0 * inverse_mass / (squares.x() + squares.y()))
-        .asDiagonal();
-}
-
-Case read_case(const json& document, const std::optional<std::string>& preset_override) {
-    validate_case_document(document);
-    Case c;
+Scene read_scene(const json& document, const std::optional<std::string>& preset_override) {
+    validate_scene_document(document);
+    Scene c;
+    c.materials = read_materials(document);
+    c.ground = read_ground(document, c.materials);
     const json& bodies = document["bodies"];
     std::map<std::string, std::size_t> first_with_name;
     for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -183,36 +211,55 @@ Case read_case(const json& document, const std::optional<std::string>& preset_ov
             throw InputError(json_path_child(path, "name"),
                              "\"" + name + "\" is already the name of bodies[" + std::to_string(at->second) + "]");
         c.body_names.push_back(name);
-        c.bodies.push_back(read_body(bodies[i], path));
+        c.shapes.push_back(read_shape(bodies[i], path));
+        c.bodies.push_back(read_body(bodies[i], c.shapes.back(), path));
+        c.body_materials.push_back(read_material_name(bodies[i], c.materials, path));
     }
-    const json& contacts = document["contacts"];
-    for (std::size_t i = 0; i < contacts.size(); ++i)
-        c.contacts.push_back(read_contact(contacts[i], c.body_names, json_path_index("contacts", i)));
-    c.settings =
-        read_settings(document.contains("settings") ? &document["settings"] : nullptr, "settings", preset_override);
+    if (document.contains("contacts")) {
+        const json& contacts = document["contacts"];
+        for (std::size_t i = 0; i < contacts.size(); ++i)
+            c.contacts.push_back(read_contact(contacts[i], c.body_names, json_path_index("contacts", i)));
+    }
+    if (document.contains("gravity")) c.world.gravity = read_vec3(document["gravity"]);
+    read_settings(c, document.contains("settings") ? &document["settings"] : nullptr, "settings", preset_override);
     return c;
 }
 
-Case read_case_text(std::string_view text, const std::optional<std::string>& preset_override) {
-    return read_case(parse_json_text(text), preset_override);
+Scene read_scene_text(std::string_view text, const std::optional<std::string>& preset_override) {
+    return read_scene(parse_json_text(text), preset_override);
 }
 
-json case_json(const Case& c, bool with_settings) {
+json scene_json(const Scene& c, bool with_settings) {
     json out = json::object();
-    out["format"] = "impulse-lab-case";
+    out["format"] = "impulse-lab-scene";
+    out["gravity"] = vec3_json(c.world.gravity);
+    if (c.ground)
+        out["ground"] = {{"normal", vec3_json(c.ground->plane.normal)},
+                         {"offset", c.ground->plane.offset},
+                         {"material", c.ground->material}};
+    json materials = json::object();
+    for (const auto& [name, m] : c.materials)
+        materials[name] = {{"restitution", m.restitution}, {"friction", m.friction}};
+    out["materials"] = materials;
     json bodies = json::array();
     for (std::size_t i = 0; i < c.bodies.size(); ++i) {
         const RigidBody& b = c.bodies[i];
-        bodies.push_back({
-            {"name", c.body_names[i]},
-            {"position", vec3_json(b.position)},
-            {"orientation", quat_json(b.orientation)},
-            {"velocity", vec3_json(b.velocity)},
-            {"angular_velocity", vec3_json(b.angular_velocity)},
-            {"inverse_mass", b.inverse_mass},
-            {"inverse_inertia", mat3_json(b.inverse_inertia_body)},
-            {"last_frame_acceleration", vec3_json(b.last_frame_acceleration)},
-        });
+        json body = {{"name", c.body_names[i]}};
+        if (const auto& shape = c.shapes[i]) {
+            if (const auto* sphere = std::get_if<Sphere>(&*shape))
+                body["shape"] = {{"type", "sphere"}, {"radius", sphere->radius}};
+            else
+                body["shape"] = {{"type", "box"}, {"half_size", vec3_json(std::get<Box>(*shape).half_size)}};
+        }
+        body["material"] = c.body_materials[i];
+        body["position"] = vec3_json(b.position);
+        body["orientation"] = quat_json(b.orientation);
+        body["velocity"] = vec3_json(b.velocity);
+        body["angular_velocity"] = vec3_json(b.angular_velocity);
+        body["inverse_mass"] = b.inverse_mass;
+        body["inverse_inertia"] = mat3_json(b.inverse_inertia_body);
+        body["last_frame_acceleration"] = vec3_json(b.last_frame_acceleration);
+        bodies.push_back(body);
     }
     out["bodies"] = bodies;
     json contacts = json::array();
@@ -230,7 +277,7 @@ json case_json(const Case& c, bool with_settings) {
         });
     }
     out["contacts"] = contacts;
-    if (with_settings) out["settings"] = settings_json(c.settings);
+    if (with_settings) out["settings"] = settings_json(c.settings, c.world);
     return out;
 }
 

@@ -1,0 +1,129 @@
+// Time per frame of whole scenes, split by stage, and the drift of the body that started highest.
+//
+//   impulse-bench-world SCENE... [--frames N] [--repeats R] [--set NAME=VALUE]... [--csv FILE]
+//
+// Each repeat simulates the scene from its start for N frames (default: the scene's own frames); the
+// reported time per frame is the median over repeats of each repeat's mean. Drift comes from the first repeat
+// (every repeat is identical: runs are deterministic).
+
+#include "io/input_error.hpp"
+#include "io/json_text.hpp"
+#include "io/scene_file.hpp"
+#include "io/settings_json.hpp"
+#include "world/world.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+using namespace impulse;
+
+namespace {
+
+struct Figures {
+    double frame_ms = 0.0;
+    StageTimes stage_ms;
+    double contacts = 0.0;  // mean per frame
+    double pairs = 0.0;     // mean per frame
+    double drift_end_mm = 0.0;
+    double drift_most_mm = 0.0;
+    int limited_frames = 0;  // frames where a phase hit its iteration limit
+};
+
+std::size_t highest(const Scene& s) {
+    const Vec3 up = -s.world.gravity.normalized();
+    std::size_t top = 0;
+    for (std::size_t i = 1; i < s.bodies.size(); ++i)
+        if (s.bodies[i].position.dot(up) > s.bodies[top].position.dot(up)) top = i;
+    return top;
+}
+
+Figures simulate(const Scene& scene, int frames) {
+    Figures f;
+    std::vector<RigidBody> bodies = scene.bodies;
+    Recorder nobody;
+    const std::size_t top = highest(scene);
+    for (int frame = 0; frame < frames; ++frame) {
+        const StepReport r = step(scene, bodies, nobody, frame);
+        f.stage_ms.integrate += r.times.integrate * 1e3 / frames;
+        f.stage_ms.broad_phase += r.times.broad_phase * 1e3 / frames;
+        f.stage_ms.narrow_phase += r.times.narrow_phase * 1e3 / frames;
+        f.stage_ms.resolve += r.times.resolve * 1e3 / frames;
+        f.contacts += static_cast<double>(r.contacts) / frames;
+        f.pairs += static_cast<double>(r.pairs_tested) / frames;
+        f.limited_frames += r.resolution.position.stop == StopReason::iteration_limit ||
+                            r.resolution.velocity.stop == StopReason::iteration_limit;
+        const double drift = (bodies[top].position - scene.bodies[top].position).norm() * 1e3;
+        f.drift_most_mm = std::max(f.drift_most_mm, drift);
+        f.drift_end_mm = drift;
+    }
+    f.frame_ms = f.stage_ms.integrate + f.stage_ms.broad_phase + f.stage_ms.narrow_phase + f.stage_ms.resolve;
+    return f;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Time per frame of whole scenes, and the drift of the body that started highest",
+                 "impulse-bench-world"};
+    std::vector<std::string> scenes, settings;
+    std::optional<int> frames;
+    int repeats = 3;
+    std::string csv;
+    app.add_option("SCENE", scenes, "Scene files")->required()->check(CLI::ExistingFile);
+    app.add_option("--frames", frames, "Frames per run (default: each scene's settings.frames)")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--repeats", repeats, "Runs per scene; the median time is reported")->check(CLI::Range(1, 100));
+    app.add_option("--set", settings, "Change one setting in every scene, e.g. --set iterations_per_contact=100");
+    app.add_option("--csv", csv, "Also write the figures as CSV");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e);
+    }
+
+    std::ofstream out;
+    if (!csv.empty()) {
+        out.open(csv);
+        out << "scene,bodies,frames,contacts_per_frame,pairs_per_frame,ms_per_frame,integrate_ms,broad_phase_ms,"
+               "pair_tests_ms,resolve_ms,limited_frames,top_drift_end_mm,top_drift_most_mm\n";
+    }
+    std::printf("%-22s %6s %6s %9s %9s %10s %9s %9s %9s %9s %8s %11s %11s\n", "scene", "bodies", "frames", "contacts",
+                "pairs", "ms/frame", "integr.", "broad", "pairs ms", "resolve", "limited", "drift end", "drift most");
+    for (const std::string& file : scenes) {
+        Scene scene;
+        try {
+            std::ifstream in(file);
+            std::stringstream text;
+            text << in.rdbuf();
+            scene = io::read_scene_text(text.str());
+            for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+        } catch (const io::InputError& e) {
+            std::cerr << "impulse-bench-world: " << file << ": " << e.what() << '\n';
+            return 2;
+        }
+        const int n = frames.value_or(scene.world.frames);
+        std::vector<Figures> runs;
+        for (int r = 0; r < repeats; ++r) runs.push_back(simulate(scene, n));
+        std::vector<Figures> sorted = runs;
+        std::sort(sorted.begin(), sorted.end(),
+                  [](const Figures& a, const Figures& b) { return a.frame_ms < b.frame_ms; });
+        const Figures& median = sorted[sorted.size() / 2];
+        const Figures& first = runs.front();
+        const std::string name = file.substr(file.find_last_of('/') + 1);
+        std::printf("%-22s %6zu %6d %9.1f %9.1f %10.3f %9.3f %9.3f %9.3f %9.3f %8d %11.2f %11.2f\n", name.c_str(),
+                    scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms, median.stage_ms.integrate,
+                    median.stage_ms.broad_phase, median.stage_ms.narrow_phase, median.stage_ms.resolve,
+                    first.limited_frames, first.drift_end_mm, first.drift_most_mm);
+        if (out)
+            out << name << ',' << scene.bodies.size() << ',' << n << ',' << first.contacts << ',' << first.pairs << ','
+                << median.frame_ms << ',' << median.stage_ms.integrate << ',' << median.stage_ms.broad_phase << ','
+                << median.stage_ms.narrow_phase << ',' << median.stage_ms.resolve << ',' << first.limited_frames << ','
+                << first.drift_end_mm << ',' << first.drift_most_mm << '\n';
+    }
+    return 0;
+}

@@ -1,0 +1,280 @@
+// Two boxes: the separating-axis test over 15 axes (3 face normals of each box and the 9 cross products of
+// their edges). If any axis separates them there is no contact; otherwise the axis of least overlap says how
+// they touch:
+//   a face normal: face contact. The other box's face that faces it most squarely (the incident face) is
+//     clipped against the sides of the reference face (Sutherland-Hodgman); every clipped point below the
+//     reference face is a contact, up to 8, reduced to the 4 that best keep the supporting area. A box on a
+//     corner gives one such point (vertex-face), on an edge two.
+//   an edge cross product: edge-edge contact, one point midway between the edges' closest points.
+// Face axes are preferred when an edge axis is only slightly shallower, and the faces of the box with the
+// lower body index over the other's, so the manifold does not flicker between forms from frame to frame and
+// does not depend on the order the two boxes are passed in.
+
+#include "collision/collision.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace impulse {
+
+namespace {
+
+// Cross products shorter than this (sine of the angle between the edges) are parallel edges: no axis.
+constexpr double parallel_edges = 1e-6;
+// An axis of the other kind must be shallower by this much to be preferred (relative, then absolute).
+constexpr double relative_preference = 0.95;
+constexpr double absolute_preference = 1e-4;
+
+struct Oriented {
+    Vec3 centre;
+    Mat3 axes;  // columns: the box's x, y, z in world
+    Vec3 half;
+};
+
+double projected_radius(const Oriented& box, const Vec3& axis) {
+    return box.half.x() * std::abs(axis.dot(box.axes.col(0))) + box.half.y() * std::abs(axis.dot(box.axes.col(1))) +
+           box.half.z() * std::abs(axis.dot(box.axes.col(2)));
+}
+
+struct Axis {
+    enum Kind { face_a, face_b, edge } kind;
+    int i = 0, j = 0;  // face axis index, or the two edge directions
+    Vec3 direction;    // unit, pointing from b to a
+    double overlap = std::numeric_limits<double>::infinity();
+};
+
+// Overlap along `direction` (any length > 0); negative means the axis separates the boxes. The direction is
+// turned to point from b to a; when the centres do not differ along it, the body indices decide, so that
+// swapping the two boxes still flips the normal.
+double overlap_along(const Oriented& a, const Oriented& b, const Vec3& between, Vec3 direction, bool a_first,
+                     Vec3& oriented) {
+    direction.normalize();
+    const double along = direction.dot(between);
+    if (along < 0.0 || (along == 0.0 && !a_first)) direction = -direction;
+    oriented = direction;
+    return projected_radius(a, direction) + projected_radius(b, direction) - std::abs(between.dot(direction));
+}
+
+Feature edge_feature(int along, const std::array<int, 3>& negative) {
+    const int first = along == 0 ? 1 : 0, second = along == 2 ? 1 : 2;
+    return {FeatureKind::edge,
+            4 * along + negative[static_cast<std::size_t>(first)] + 2 * negative[static_cast<std::size_t>(second)]};
+}
+
+struct ClipPoint {
+    Vec3 position;
+    Feature feature;  // of the incident box: a vertex, or the edge (or face) the point lies on
+    Feature onward;   // what the polygon's side from this point to the next lies on: an edge, or the face
+};
+
+// Keeps the part of the polygon with plane_normal . x <= plane_offset (Sutherland-Hodgman). A point made
+// where a side crosses the plane lies on that side's feature; the new side it starts along the plane runs
+// across the incident face.
+std::vector<ClipPoint> clip(const std::vector<ClipPoint>& polygon, const Vec3& plane_normal, double plane_offset,
+                            const Feature& incident_face) {
+    std::vector<ClipPoint> kept;
+    for (std::size_t k = 0; k < polygon.size(); ++k) {
+        const ClipPoint& p = polygon[k];
+        const ClipPoint& q = polygon[(k + 1) % polygon.size()];
+        const double dp = plane_normal.dot(p.position) - plane_offset;
+        const double dq = plane_normal.dot(q.position) - plane_offset;
+        if (dp <= 0.0) kept.push_back(p);
+        const auto crossing = [&] { return Vec3(p.position + (dp / (dp - dq)) * (q.position - p.position)); };
+        if (dp <= 0.0 && dq > 0.0) {
+            // Leaving: the side to the next kept point runs along the plane, across the incident face. A point
+            // exactly on the plane is its own crossing (no duplicate).
+            if (dp < 0.0)
+                kept.push_back({crossing(), p.onward, incident_face});
+            else
+                kept.back().onward = incident_face;
+        } else if (dp > 0.0 && dq < 0.0) {
+            // Entering: the rest of this side continues to q. (q on the plane is kept when its turn comes.)
+            kept.push_back({crossing(), p.onward, p.onward});
+        }
+    }
+    return kept;
+}
+
+// Of more than four points, keep the deepest, the one farthest from it, and the two that make the largest
+// triangles on either side of the line between them: the quadrilateral that best keeps the support area.
+std::vector<std::size_t> reduce_to_four(const std::vector<Vec3>& points, const std::vector<double>& depth,
+                                        const Vec3& normal) {
+    std::vector<std::size_t> keep;
+    const std::size_t first = static_cast<std::size_t>(std::max_element(depth.begin(), depth.end()) - depth.begin());
+    keep.push_back(first);
+    std::size_t second = first;
+    double farthest = -1.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const double d = (points[k] - points[first]).squaredNorm();
+        if (d > farthest) farthest = d, second = k;
+    }
+    keep.push_back(second);
+    std::size_t third = first, fourth = first;
+    double most = 0.0, least = 0.0;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        const double area = (points[second] - points[first]).cross(points[k] - points[first]).dot(normal);
+        if (area > most) most = area, third = k;
+        if (area < least) least = area, fourth = k;
+    }
+    if (third != first) keep.push_back(third);
+    if (fourth != first) keep.push_back(fourth);
+    return keep;
+}
+
+void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Axis& axis, std::vector<Contact>& out) {
+    // The reference box owns the face normal; its face towards the other box has outward normal -n when it is
+    // box a (n points from b to a) and +n when it is box b.
+    const bool reference_is_a = axis.kind == Axis::face_a;
+    const Oriented& reference = reference_is_a ? a : b;
+    const Oriented& incident = reference_is_a ? b : a;
+    const Vec3 ref_normal = reference_is_a ? Vec3(-axis.direction) : axis.direction;
+    const int ref_axis = axis.i;
+    const bool ref_negative = reference.axes.col(ref_axis).dot(ref_normal) < 0.0;
+    const Feature ref_face{FeatureKind::face, box_face(ref_axis, ref_negative)};
+
+    // The incident face: the face of the other box whose outward normal is most opposed to ref_normal.
+    int inc_axis = 0;
+    double most_opposed = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const double d = incident.axes.col(k).dot(ref_normal);
+        if (std::abs(d) > std::abs(most_opposed)) most_opposed = d, inc_axis = k;
+    }
+    const bool inc_negative = most_opposed > 0.0;  // the face pointing against ref_normal
+    const int u = (inc_axis + 1) % 3, v = (inc_axis + 2) % 3;
+    // Its four corners in order round the face, with their vertex numbers, and the edges between them.
+    const Feature incident_face{FeatureKind::face, box_face(inc_axis, inc_negative)};
+    std::vector<ClipPoint> polygon;
+    const std::array<std::array<int, 2>, 4> corners{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+    for (std::size_t k = 0; k < 4; ++k) {
+        std::array<int, 3> negative{};
+        negative[static_cast<std::size_t>(inc_axis)] = inc_negative ? 1 : 0;
+        negative[static_cast<std::size_t>(u)] = corners[k][0];
+        negative[static_cast<std::size_t>(v)] = corners[k][1];
+        const int vertex = negative[0] | (negative[1] << 1) | (negative[2] << 2);
+        // The side from this corner to the next runs along u (k = 0, 2) or v (k = 1, 3).
+        polygon.push_back({incident.centre + incident.axes * box_vertex(incident.half, vertex),
+                           {FeatureKind::vertex, vertex},
+                           edge_feature(k % 2 == 0 ? u : v, negative)});
+    }
+
+    // Clip against the four side planes of the reference face.
+    const Vec3 face_centre = reference.centre + ref_normal * reference.half[ref_axis];
+    for (int side = 1; side <= 2 && !polygon.empty(); ++side) {
+        const int k = (ref_axis + side) % 3;
+        const Vec3 direction = reference.axes.col(k);
+        const double centre = direction.dot(reference.centre);
+        polygon = clip(polygon, direction, centre + reference.half[k], incident_face);
+        if (!polygon.empty()) polygon = clip(polygon, -direction, -centre + reference.half[k], incident_face);
+    }
+
+    // Keep the points below the reference face; each is on the incident box, `depth` inside the reference box.
+    std::vector<Vec3> points;
+    std::vector<double> depth;
+    std::vector<Feature> features;
+    const double face_level = ref_normal.dot(face_centre);
+    for (const ClipPoint& p : polygon) {
+        const double d = face_level - ref_normal.dot(p.position);
+        if (d < 0.0) continue;
+        points.push_back(p.position);
+        depth.push_back(d);
+        features.push_back(p.feature);
+    }
+    std::vector<std::size_t> chosen(points.size());
+    for (std::size_t k = 0; k < chosen.size(); ++k) chosen[k] = k;
+    if (points.size() > 4) chosen = reduce_to_four(points, depth, ref_normal);
+
+    for (std::size_t k : chosen) {
+        Contact c;
+        c.bodies = {ia, ib};
+        c.normal = axis.direction;
+        c.penetration = depth[k];
+        c.point = points[k] + ref_normal * (0.5 * depth[k]);  // midway between the incident point and the face
+        c.origin.test = CollisionTest::box_box;
+        c.origin.features = reference_is_a ? std::array<Feature, 2>{ref_face, features[k]}
+                                           : std::array<Feature, 2>{features[k], ref_face};
+        out.push_back(c);
+    }
+}
+
+void edge_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Axis& axis, std::vector<Contact>& out) {
+    const Vec3& n = axis.direction;  // from b to a
+    // Each box's edge along the axis pair that lies furthest towards the other box.
+    const auto supporting_edge = [](const Oriented& box, int along, const Vec3& towards, Vec3& start,
+                                    Feature& feature) {
+        std::array<int, 3> negative{};
+        Vec3 local = Vec3::Zero();
+        for (int k = 0; k < 3; ++k) {
+            if (k == along) continue;
+            const bool neg = box.axes.col(k).dot(towards) < 0.0;
+            negative[static_cast<std::size_t>(k)] = neg ? 1 : 0;
+            local[k] = neg ? -box.half[k] : box.half[k];
+        }
+        start = box.centre + box.axes * local;  // the edge's midpoint
+        feature = edge_feature(along, negative);
+    };
+    Vec3 pa, pb;
+    Feature fa, fb;
+    supporting_edge(a, axis.i, -n, pa, fa);
+    supporting_edge(b, axis.j, n, pb, fb);
+    // Closest points of the two edge lines, pa + s da and pb + t db (the standard two-line solution).
+    const Vec3 da = a.axes.col(axis.i), db = b.axes.col(axis.j);
+    const Vec3 r = pa - pb;
+    const double dadb = da.dot(db), dar = da.dot(r), dbr = db.dot(r);
+    const double denominator = 1.0 - dadb * dadb;  // > 0: parallel edges give no edge axis
+    double s = (dadb * dbr - dar) / denominator;
+    double t = (dbr - dadb * dar) / denominator;
+    s = std::clamp(s, -a.half[axis.i], a.half[axis.i]);
+    t = std::clamp(t, -b.half[axis.j], b.half[axis.j]);
+    Contact c;
+    c.bodies = {ia, ib};
+    c.normal = n;
+    c.penetration = axis.overlap;
+    c.point = 0.5 * ((pa + s * da) + (pb + t * db));
+    c.origin = {CollisionTest::box_box, {fa, fb}};
+    out.push_back(c);
+}
+
+}  // namespace
+
+void box_and_box(const Box& ba, const Placement& pa, int a, const Box& bb, const Placement& pb, int b,
+                 std::vector<Contact>& out) {
+    const Oriented A{pa.position, pa.rotation, ba.half_size};
+    const Oriented B{pb.position, pb.rotation, bb.half_size};
+    const Vec3 between = A.centre - B.centre;
+
+    constexpr double none = std::numeric_limits<double>::infinity();
+    Axis best_a{Axis::face_a, 0, 0, Vec3::Zero(), none}, best_b{Axis::face_b, 0, 0, Vec3::Zero(), none},
+        best_edge{Axis::edge, 0, 0, Vec3::Zero(), none};
+    Vec3 direction;
+    for (int k = 0; k < 3; ++k) {
+        double o = overlap_along(A, B, between, A.axes.col(k), a < b, direction);
+        if (o < 0.0) return;
+        if (o < best_a.overlap) best_a = {Axis::face_a, k, 0, direction, o};
+        o = overlap_along(A, B, between, B.axes.col(k), a < b, direction);
+        if (o < 0.0) return;
+        if (o < best_b.overlap) best_b = {Axis::face_b, k, 0, direction, o};
+    }
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const Vec3 cross = A.axes.col(i).cross(B.axes.col(j));
+            if (cross.norm() < parallel_edges) continue;
+            const double o = overlap_along(A, B, between, cross, a < b, direction);
+            if (o < 0.0) return;
+            if (o < best_edge.overlap) best_edge = {Axis::edge, i, j, direction, o};
+        }
+
+    const auto clearly_shallower = [](const Axis& candidate, const Axis& incumbent) {
+        return candidate.overlap < relative_preference * incumbent.overlap - absolute_preference;
+    };
+    const Axis& preferred = a < b ? best_a : best_b;
+    const Axis& other = a < b ? best_b : best_a;
+    Axis best = clearly_shallower(other, preferred) ? other : preferred;
+    if (clearly_shallower(best_edge, best)) best = best_edge;
+    if (best.kind == Axis::edge)
+        edge_contact(A, B, a, b, best, out);
+    else
+        face_contact(A, B, a, b, best, out);
+}
+
+}  // namespace impulse

@@ -1,0 +1,103 @@
+#include "world/world.hpp"
+
+#include "collision/broad_phase.hpp"
+#include "collision/collision.hpp"
+#include "world/integrate.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace impulse {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+Placement placement_of(const RigidBody& body) {
+    return {body.position, body.orientation.toRotationMatrix()};
+}
+
+const Material& material_of(const Scene& scene, const std::string& name) {
+    return scene.materials.at(name);
+}
+
+}  // namespace
+
+Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times) {
+    Detection detection;
+    std::vector<Contact>& out = detection.contacts;
+    const auto start = Clock::now();
+
+    std::vector<Placement> placements;
+    placements.reserve(bodies.size());
+    for (const RigidBody& body : bodies) placements.push_back(placement_of(body));
+
+    if (scene.ground) {
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            if (!scene.shapes[i] || is_immovable(bodies[i])) continue;
+            const std::size_t first = out.size();
+            collide_with_ground(*scene.shapes[i], placements[i], static_cast<int>(i), scene.ground->plane, out);
+            const Material m =
+                combine(material_of(scene, scene.body_materials[i]), material_of(scene, scene.ground->material));
+            for (std::size_t k = first; k < out.size(); ++k)
+                out[k].restitution = m.restitution, out[k].friction = m.friction;
+        }
+    }
+
+    std::vector<std::optional<Bounds>> bounds(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        if (scene.shapes[i]) bounds[i] = world_bounds(*scene.shapes[i], placements[i].position, placements[i].rotation);
+    const auto both_immovable = [&bodies](int i, int j) {
+        return is_immovable(bodies[static_cast<std::size_t>(i)]) && is_immovable(bodies[static_cast<std::size_t>(j)]);
+    };
+    const auto broad_start = Clock::now();
+    const std::vector<std::pair<int, int>> pairs =
+        overlapping_pairs(std::span<const std::optional<Bounds>>(bounds), both_immovable);
+    const double broad = seconds_since(broad_start);
+    detection.pairs_tested = static_cast<int>(pairs.size());
+
+    for (const auto& [i, j] : pairs) {
+        const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+        const std::size_t first = out.size();
+        collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out);
+        const Material m =
+            combine(material_of(scene, scene.body_materials[ui]), material_of(scene, scene.body_materials[uj]));
+        for (std::size_t k = first; k < out.size(); ++k)
+            out[k].restitution = m.restitution, out[k].friction = m.friction;
+    }
+    if (times) {
+        times->broad_phase += broad;
+        times->narrow_phase += seconds_since(start) - broad;
+    }
+    return detection;
+}
+
+StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame) {
+    StepReport report;
+    report.frame = frame;
+    const double dt = scene.settings.duration;
+
+    auto start = Clock::now();
+    const Damping damping{scene.world.linear_damping, scene.world.angular_damping};
+    for (RigidBody& body : bodies) integrate(body, scene.world.gravity, dt, damping, scene.settings.orientation_update);
+    report.times.integrate = seconds_since(start);
+
+    const Detection detection = detect_contacts(scene, bodies, &report.times);
+    report.pairs_tested = detection.pairs_tested;
+    report.contacts = static_cast<int>(detection.contacts.size());
+    for (const Contact& c : detection.contacts)
+        report.deepest_penetration = std::max(report.deepest_penetration, c.penetration);
+
+    start = Clock::now();
+    report.resolution = resolve_contacts(bodies, detection.contacts, scene.settings, recorder, frame);
+    report.times.resolve = seconds_since(start);
+
+    for (const RigidBody& body : bodies) report.kinetic_energy += kinetic_energy(body);
+    return report;
+}
+
+}  // namespace impulse

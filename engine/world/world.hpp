@@ -1,0 +1,44 @@
+#pragma once
+// The world step, in the reference engine's demo order: integrate every body, detect contacts, resolve them.
+// Each stage is timed for the profile (never for traces, which must be byte-identical run to run).
+
+#include "record/recorder.hpp"
+#include "resolver/resolver.hpp"
+#include "scene/scene.hpp"
+
+#include <span>
+#include <vector>
+
+namespace impulse {
+
+struct StageTimes {
+    double integrate = 0.0;     // s
+    double broad_phase = 0.0;   // s
+    double narrow_phase = 0.0;  // s: the pair tests
+    double resolve = 0.0;       // s
+};
+
+struct Detection {
+    std::vector<Contact> contacts;  // ground contacts in body order, then pairs in (i, j) order
+    int pairs_tested = 0;           // pairs the broad phase handed to the pair tests
+};
+
+// Every contact between shaped bodies and with the ground, with the materials combined. Bodies without a
+// shape take part in no test, and two immovable bodies are never tested against each other.
+Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times = nullptr);
+
+struct StepReport {
+    int frame = 0;
+    int pairs_tested = 0;
+    int contacts = 0;
+    double deepest_penetration = 0.0;  // m, before resolution (0 without contacts)
+    double kinetic_energy = 0.0;       // J, after the step
+    ResolutionSummary resolution;
+    StageTimes times;
+};
+
+// One frame of `scene.settings.duration` seconds: integrate -> detect -> resolve. `bodies` is the state,
+// changed in place; the scene gives shapes, materials, the ground and the settings.
+StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame);
+
+}  // namespace impulse

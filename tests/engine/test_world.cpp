@@ -1,0 +1,198 @@
+// The world step against analytic answers: free fall, bounces, resting contact, momentum, robustness and
+// determinism.
+
+#include "io/json_text.hpp"
+#include "io/scene_file.hpp"
+#include "io/settings_json.hpp"
+#include "io/trace_json.hpp"
+#include "record/trace_recorder.hpp"
+#include "support/approx.hpp"
+#include "world/world.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+using namespace impulse;
+
+namespace {
+
+Scene shipped_scene(const std::string& name, const std::vector<std::string>& settings = {}) {
+    std::ifstream in(IMPULSE_SOURCE_DIR "/scenes/" + name + ".json");
+    std::stringstream text;
+    text << in.rdbuf();
+    Scene scene = io::read_scene_text(text.str());
+    for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+    return scene;
+}
+
+Scene one_body(const Shape& shape, const Vec3& position, bool ground) {
+    Scene s;
+    s.body_names = {"body"};
+    RigidBody b;
+    b.position = position;
+    b.inverse_mass = 1.0;
+    b.inverse_inertia_body = solid_inverse_inertia(shape, 1.0);
+    s.bodies = {b};
+    s.shapes = {shape};
+    s.body_materials = {default_material};
+    s.materials = {{default_material, Material{}}};
+    if (ground) s.ground = Ground{};
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("free fall follows x0 + v0 t + 1/2 g t^2 within the semi-implicit Euler error") {
+    // Semi-implicit Euler: v_n = v0 + n g dt, x_n = x0 + v0 n dt + g dt^2 n (n + 1) / 2, which is the exact
+    // parabola plus 1/2 g dt t: at t = 1 s and dt = 1/60, 1/2 9.81 / 60 = 0.0818 m lower.
+    Scene s = one_body(Sphere{0.5}, {0, 10, 0}, false);
+    s.bodies[0].velocity = {1, 2, 0};
+    std::vector<RigidBody> bodies = s.bodies;
+    Recorder nobody;
+    const int n = 60;
+    const double dt = s.settings.duration, t = n * dt, g = -9.81;
+    for (int frame = 0; frame < n; ++frame) step(s, bodies, nobody, frame);
+    const Vec3 exact(t, 10 + 2 * t + 0.5 * g * t * t, 0);
+    const Vec3 semi_implicit(t, 10 + 2 * t + g * dt * dt * n * (n + 1) / 2.0, 0);
+    CHECK_CLOSE(bodies[0].position, semi_implicit, 1e-12);
+    CHECK(std::abs(bodies[0].position.y() - exact.y()) <= 0.5 * std::abs(g) * dt * t + 1e-12);
+    CHECK_CLOSE(bodies[0].velocity, Vec3(1, 2 + g * t, 0), 1e-12);
+    CHECK(bodies[0].last_frame_acceleration == Vec3(0, g, 0));
+}
+
+TEST_CASE("a ball dropped from 1 m with restitution 0.6 rises to about c^2 h = 0.36 m") {
+    // It lands at about sqrt(2 g h) = 4.43 m/s. Two effects of a discrete step lower the first apex, and both
+    // are expected: the book preset does not bounce back the g dt = 0.16 m/s that gravity added during the
+    // last frame (velocity_from_acceleration), taking the rebound from 2.66 to 2.55 m/s (-7 %); and semi-implicit
+    // Euler, sampled at frames, peaks about v' dt / 2 = 2 cm below v'^2 / 2g (-6 %). So the apex is within
+    // 20 % below 0.36 m, and closer with the refinement off.
+    const auto first_apex = [](const std::vector<std::string>& settings) {
+        Scene s = shipped_scene("sphere_drop", settings);
+        std::vector<RigidBody> bodies = s.bodies;
+        Recorder nobody;
+        double apex = 0.0;
+        bool bounced = false;
+        for (int frame = 0; frame < 240; ++frame) {
+            step(s, bodies, nobody, frame);
+            const double height = bodies[0].position.y() - 0.5;
+            if (!bounced && bodies[0].velocity.y() > 0) bounced = true;
+            if (bounced && bodies[0].velocity.y() < 0) break;  // past the first apex
+            if (bounced) apex = std::max(apex, height);
+        }
+        return apex;
+    };
+    const double book = first_apex({});
+    CHECK(book > 0.8 * 0.36);
+    CHECK(book < 0.36);
+    const double plain = first_apex({"velocity_from_acceleration=false"});
+    CHECK(plain > book);
+    CHECK(plain > 0.9 * 0.36);
+    CHECK(plain < 0.36 * 1.02);
+}
+
+TEST_CASE("a resting box sinks no deeper than the book's position epsilon and one frame's fall") {
+    // The book leaves penetrations up to 0.01 m alone; each frame gravity adds g dt^2 = 2.7 mm before the
+    // contact is detected. So the box never sinks more than 0.01 + 0.0027 m.
+    Scene s = shipped_scene("box_resting");
+    std::vector<RigidBody> bodies = s.bodies;
+    Recorder nobody;
+    double deepest = 0.0;
+    for (int frame = 0; frame < 600; ++frame) {
+        const StepReport r = step(s, bodies, nobody, frame);
+        deepest = std::max(deepest, r.deepest_penetration);
+        CHECK(r.contacts == 4);
+    }
+    CHECK(deepest <= 0.01 + 9.81 / 3600.0 + 1e-9);
+}
+
+TEST_CASE("with epsilons of 0.5 mm and 0.1 mm/s a resting box stays within 1 mm over 10 s") {
+    // The target. With the book's own epsilons (1 cm, 0.01 m/s) the box instead settles up to 1 cm
+    // in and creeps sideways by the friction residue the velocity epsilon leaves each frame (27.7 mm in
+    // 10 s, see the closing note); the method, not the contacts, sets that floor.
+    Scene s = shipped_scene("box_resting", {"position_epsilon=0.0005", "velocity_epsilon=0.0001"});
+    std::vector<RigidBody> bodies = s.bodies;
+    Recorder nobody;
+    double drift = 0.0;
+    for (int frame = 0; frame < 600; ++frame) {
+        step(s, bodies, nobody, frame);
+        drift = std::max(drift, (bodies[0].position - s.bodies[0].position).norm());
+    }
+    CHECK(drift < 0.001);
+}
+
+TEST_CASE("momentum is conserved when two spheres collide") {
+    Scene s = shipped_scene("two_spheres");
+    std::vector<RigidBody> bodies = s.bodies;
+    const auto momentum = [](const std::vector<RigidBody>& b) {
+        Vec3 p = Vec3::Zero();
+        for (const RigidBody& body : b) p += body.velocity / body.inverse_mass;
+        return p;
+    };
+    const Vec3 before = momentum(bodies);
+    Recorder nobody;
+    int contacts = 0;
+    for (int frame = 0; frame < 120; ++frame) {
+        contacts += step(s, bodies, nobody, frame).contacts;
+        CHECK_CLOSE(momentum(bodies), before, 1e-12);
+    }
+    CHECK(contacts > 0);                   // they did collide
+    CHECK(bodies[0].velocity.y() != 0.0);  // obliquely: the small ball was deflected
+    CHECK_CLOSE(momentum(bodies), before, 1e-12);
+}
+
+TEST_CASE("200 boxes dropped in a pile run 10 s with no NaN and bounded energy") {
+    // Bounded: the kinetic energy never exceeds what falling from the start could give (the potential energy
+    // above the ground at the start), with 20 % to spare for the position moves' lift.
+    Scene s = shipped_scene("pile_200");
+    std::vector<RigidBody> bodies = s.bodies;
+    double available = 0.0;
+    for (const RigidBody& b : bodies) available += 9.81 * b.position.y() / b.inverse_mass;
+    Recorder nobody;
+    double most = 0.0;
+    bool finite = true;
+    for (int frame = 0; frame < 600; ++frame) {
+        const StepReport r = step(s, bodies, nobody, frame);
+        most = std::max(most, r.kinetic_energy);
+        for (const RigidBody& b : bodies)
+            finite = finite && b.position.allFinite() && b.velocity.allFinite() && b.angular_velocity.allFinite() &&
+                     b.orientation.coeffs().allFinite();
+    }
+    CHECK(finite);
+    CHECK(most < 1.2 * available);
+}
+
+TEST_CASE("running a scene twice gives byte-identical traces") {
+    const auto trace_text = [] {
+        Trace trace;
+        trace.scene = shipped_scene("stack_3");
+        trace.recording.last_frame = 29;
+        std::vector<RigidBody> bodies = trace.scene.bodies;
+        TraceRecorder recorder(trace);
+        for (int frame = 0; frame < 60; ++frame) step(trace.scene, bodies, recorder, frame);
+        return io::format_json(io::trace_json(trace));
+    };
+    const std::string first = trace_text();
+    CHECK(first == trace_text());
+    CHECK(first.size() > 10000);
+}
+
+TEST_CASE("a trace of a run records why each contact exists and reads back equal") {
+    Trace trace;
+    trace.scene = shipped_scene("box_tipping");
+    std::vector<RigidBody> bodies = trace.scene.bodies;
+    TraceRecorder recorder(trace);
+    for (int frame = 0; frame < 40; ++frame) step(trace.scene, bodies, recorder, frame);
+    REQUIRE(trace.frames.size() == 40);
+    // It starts on an edge: two vertex contacts with the ground plane.
+    const auto& first = trace.frames[0].contacts;
+    REQUIRE(first.size() == 2);
+    for (const ContactPreparation& c : first) {
+        CHECK(c.origin.test == CollisionTest::box_half_space);
+        CHECK(c.origin.features[0].kind == FeatureKind::vertex);
+        CHECK(c.origin.features[1].kind == FeatureKind::plane);
+    }
+    CHECK(io::read_trace_text(io::format_json(io::trace_json(trace))) == trace);
+}

@@ -34,19 +34,11 @@ struct Figures {
     int limited_frames = 0;  // frames where a phase hit its iteration limit
 };
 
-std::size_t highest(const Scene& s) {
-    const Vec3 up = -s.world.gravity.normalized();
-    std::size_t top = 0;
-    for (std::size_t i = 1; i < s.bodies.size(); ++i)
-        if (s.bodies[i].position.dot(up) > s.bodies[top].position.dot(up)) top = i;
-    return top;
-}
-
 Figures simulate(const Scene& scene, int frames) {
     Figures f;
     std::vector<RigidBody> bodies = scene.bodies;
     Recorder nobody;
-    const std::size_t top = highest(scene);
+    const std::size_t top = highest_body(scene);
     for (int frame = 0; frame < frames; ++frame) {
         const StepReport r = step(scene, bodies, nobody, frame);
         f.stage_ms.integrate += r.times.integrate * 1e3 / frames;

@@ -15,14 +15,15 @@ double kinetic_energy(const RigidBody& body) {
     double energy = 0.0;
     if (body.inverse_mass > 0.0) energy += 0.5 * body.velocity.squaredNorm() / body.inverse_mass;
     if (!body.inverse_inertia_body.isZero(0.0)) {
-        // In body axes: 1/2 w_b . I_b w_b with w_b = R^T w. A singular inverse inertia (a body that turns about
-        // some axes only) takes the pseudo-inverse.
+        // In body axes: 1/2 w_b . I_b w_b with w_b = R^T w, I_b the inverse of the stored inverse. Through its
+        // eigen-decomposition (closed form for a symmetric 3x3), so a body that turns about some axes only
+        // (zero eigenvalues) counts just those: the pseudo-inverse.
         const Vec3 spin = body.orientation.conjugate() * body.angular_velocity;
-        const Mat3& inverse = body.inverse_inertia_body;
-        const Mat3 inertia = inverse.determinant() != 0.0
-                                 ? Mat3(inverse.inverse())
-                                 : Mat3(inverse.completeOrthogonalDecomposition().pseudoInverse());
-        energy += 0.5 * spin.dot(inertia * spin);
+        Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+        eigen.computeDirect(body.inverse_inertia_body);
+        const Vec3 along = eigen.eigenvectors().transpose() * spin;
+        for (int k = 0; k < 3; ++k)
+            if (eigen.eigenvalues()[k] > 0.0) energy += 0.5 * along[k] * along[k] / eigen.eigenvalues()[k];
     }
     return energy;
 }

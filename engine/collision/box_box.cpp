@@ -96,29 +96,41 @@ std::vector<ClipPoint> clip(const std::vector<ClipPoint>& polygon, const Vec3& p
     return kept;
 }
 
-// Of more than four points, keep the deepest, the one farthest from it, and the two that make the largest
-// triangles on either side of the line between them: the quadrilateral that best keeps the support area.
+// Twice the area of the convex hull of four points in the plane with normal n (any order).
+double hull_area(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s, const Vec3& n) {
+    const auto quad = [&n](const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+        return std::abs((c - a).cross(d - b).dot(n));  // a quadrilateral's area from its diagonals
+    };
+    const auto triangle = [&n](const Vec3& a, const Vec3& b, const Vec3& c) {
+        return std::abs((b - a).cross(c - a).dot(n));
+    };
+    // In convex position one of the three orders is the hull; otherwise one point lies in the others' triangle.
+    return std::max({quad(p, q, r, s), quad(p, q, s, r), quad(p, r, q, s), triangle(p, q, r), triangle(p, q, s),
+                     triangle(p, r, s), triangle(q, r, s)});
+}
+
+// Of more than four points, keep the deepest, the one farthest from it, the one making the largest triangle
+// with those two, and the one adding the most area to that triangle: the quadrilateral that best keeps the
+// support area.
 std::vector<std::size_t> reduce_to_four(const std::vector<Vec3>& points, const std::vector<double>& depth,
                                         const Vec3& normal) {
-    std::vector<std::size_t> keep;
     const std::size_t first = static_cast<std::size_t>(std::max_element(depth.begin(), depth.end()) - depth.begin());
-    keep.push_back(first);
-    std::size_t second = first;
-    double farthest = -1.0;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        const double d = (points[k] - points[first]).squaredNorm();
-        if (d > farthest) farthest = d, second = k;
-    }
-    keep.push_back(second);
-    std::size_t third = first, fourth = first;
-    double most = 0.0, least = 0.0;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        const double area = (points[second] - points[first]).cross(points[k] - points[first]).dot(normal);
-        if (area > most) most = area, third = k;
-        if (area < least) least = area, fourth = k;
-    }
-    if (third != first) keep.push_back(third);
-    if (fourth != first) keep.push_back(fourth);
+    const auto best = [&points](auto score) {
+        std::size_t chosen = 0;
+        double most = -1.0;
+        for (std::size_t k = 0; k < points.size(); ++k)
+            if (const double v = score(points[k]); v > most) most = v, chosen = k;
+        return chosen;
+    };
+    const Vec3& p1 = points[first];
+    const std::size_t second = best([&](const Vec3& q) { return (q - p1).squaredNorm(); });
+    const Vec3& p2 = points[second];
+    const std::size_t third = best([&](const Vec3& q) { return std::abs((p2 - p1).cross(q - p1).dot(normal)); });
+    const Vec3& p3 = points[third];
+    const std::size_t fourth = best([&](const Vec3& q) { return hull_area(p1, p2, p3, q, normal); });
+    std::vector<std::size_t> keep{first, second, third, fourth};
+    std::sort(keep.begin(), keep.end());
+    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
     return keep;
 }
 
@@ -222,10 +234,11 @@ void edge_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
     const Vec3 r = pa - pb;
     const double dadb = da.dot(db), dar = da.dot(r), dbr = db.dot(r);
     const double denominator = 1.0 - dadb * dadb;  // > 0: parallel edges give no edge axis
-    double s = (dadb * dbr - dar) / denominator;
-    double t = (dbr - dadb * dar) / denominator;
-    s = std::clamp(s, -a.half[axis.i], a.half[axis.i]);
-    t = std::clamp(t, -b.half[axis.j], b.half[axis.j]);
+    // Clamp to the edges' lengths: clamp s, take the t closest to that point, clamp it, and take the s closest
+    // to that; for two segments this reaches their closest points.
+    double s = std::clamp((dadb * dbr - dar) / denominator, -a.half[axis.i], a.half[axis.i]);
+    const double t = std::clamp(dbr + s * dadb, -b.half[axis.j], b.half[axis.j]);
+    s = std::clamp(t * dadb - dar, -a.half[axis.i], a.half[axis.i]);
     Contact c;
     c.bodies = {ia, ib};
     c.normal = n;
@@ -257,7 +270,9 @@ void box_and_box(const Box& ba, const Placement& pa, int a, const Box& bb, const
     }
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            const Vec3 cross = A.axes.col(i).cross(B.axes.col(j));
+            // Lower-numbered body's edge x the other's, whichever order the boxes came in, so the tie-break in
+            // overlap_along flips it exactly once when they are swapped.
+            const Vec3 cross = (a < b ? 1.0 : -1.0) * A.axes.col(i).cross(B.axes.col(j));
             if (cross.norm() < parallel_edges) continue;
             const double o = overlap_along(A, B, between, cross, a < b, direction);
             if (o < 0.0) return;

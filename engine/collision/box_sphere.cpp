@@ -15,7 +15,8 @@ Feature box_feature_at(const Vec3& local, const Vec3& h) {
     for (int axis = 0; axis < 3; ++axis) {
         const bool negative = local[axis] < 0.0;
         signs[static_cast<std::size_t>(axis)] = negative ? 1 : 0;
-        if (std::abs(local[axis]) >= h[axis]) {
+        // On the face to rounding: a centre exactly on a turned box's edge lands a hair inside or out.
+        if (std::abs(local[axis]) >= h[axis] * (1.0 - 1e-9)) {
             ++on_faces;
             face = box_face(axis, negative);
         }
@@ -26,7 +27,7 @@ Feature box_feature_at(const Vec3& local, const Vec3& h) {
     // An edge: along the one axis whose coordinate is strictly inside.
     int along = 0;
     for (int axis = 0; axis < 3; ++axis)
-        if (std::abs(local[axis]) < h[axis]) along = axis;
+        if (std::abs(local[axis]) < h[axis] * (1.0 - 1e-9)) along = axis;
     const int first = along == 0 ? 1 : 0, second = along == 2 ? 1 : 2;
     return {FeatureKind::edge,
             4 * along + signs[static_cast<std::size_t>(first)] + 2 * signs[static_cast<std::size_t>(second)]};

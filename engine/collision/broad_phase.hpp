@@ -21,12 +21,14 @@ Bounds world_bounds(const Shape& shape, const Vec3& position, const Mat3& rotati
 
 // Pairs (i, j), i < j, whose bounds overlap, in increasing order of i then j (so runs are deterministic).
 // `bounds[k]` is empty for a body without a shape; `skip(i, j)` drops pairs that need no test (two immovable
-// bodies).
+// bodies). Bounds that are not finite (a body whose state has become NaN) take part in no pair: sorting them
+// would be meaningless.
 template <typename Skip>
 std::vector<std::pair<int, int>> overlapping_pairs(std::span<const std::optional<Bounds>> bounds, Skip skip) {
     std::vector<int> order;
     for (int k = 0; k < static_cast<int>(bounds.size()); ++k)
-        if (bounds[static_cast<std::size_t>(k)]) order.push_back(k);
+        if (const auto& b = bounds[static_cast<std::size_t>(k)]; b && b->low.allFinite() && b->high.allFinite())
+            order.push_back(k);
     const auto low_x = [&bounds](int k) { return bounds[static_cast<std::size_t>(k)]->low.x(); };
     std::sort(order.begin(), order.end(),
               [&](int p, int q) { return low_x(p) < low_x(q) || (low_x(p) == low_x(q) && p < q); });

@@ -8,8 +8,10 @@ void integrate(RigidBody& body, const Vec3& gravity, double dt, const Damping& d
     body.last_frame_acceleration = body.inverse_mass > 0.0 ? gravity : Vec3::Zero();
     body.velocity += body.last_frame_acceleration * dt;
     // No torque acts (gravity pulls through the centre of mass), so I^-1 tau dt adds nothing to w.
-    if (damping.linear != 1.0) body.velocity *= std::pow(damping.linear, dt);
-    if (damping.angular != 1.0) body.angular_velocity *= std::pow(damping.angular, dt);
+    // Damping slows what can be slowed: an immovable body keeps the motion it was given.
+    if (damping.linear != 1.0 && body.inverse_mass > 0.0) body.velocity *= std::pow(damping.linear, dt);
+    if (damping.angular != 1.0 && !body.inverse_inertia_body.isZero(0.0))
+        body.angular_velocity *= std::pow(damping.angular, dt);
     body.position += body.velocity * dt;
     body.orientation = rotated(body.orientation, body.angular_velocity * dt, update);
 }

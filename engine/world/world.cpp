@@ -76,6 +76,14 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
     return detection;
 }
 
+std::size_t highest_body(const Scene& scene) {
+    const Vec3 up = scene.world.gravity.norm() > 0.0 ? Vec3(-scene.world.gravity.normalized()) : Vec3::UnitY();
+    std::size_t top = 0;
+    for (std::size_t i = 1; i < scene.bodies.size(); ++i)
+        if (scene.bodies[i].position.dot(up) > scene.bodies[top].position.dot(up)) top = i;
+    return top;
+}
+
 StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame) {
     StepReport report;
     report.frame = frame;

@@ -37,6 +37,9 @@ struct StepReport {
     StageTimes times;
 };
 
+// The body that starts highest against gravity (the top of a stack): whose drift measures a stack's hold.
+std::size_t highest_body(const Scene& scene);
+
 // One frame of `scene.settings.duration` seconds: integrate -> detect -> resolve. `bodies` is the state,
 // changed in place; the scene gives shapes, materials, the ground and the settings.
 StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame);

@@ -47,15 +47,6 @@ void append_states(std::string& csv, int frame, double time, const Scene& scene,
     }
 }
 
-// The body that starts highest (largest height along -gravity): the top of a stack.
-std::size_t highest_body(const Scene& scene) {
-    const Vec3 up = scene.world.gravity.norm() > 0.0 ? Vec3(-scene.world.gravity.normalized()) : Vec3::UnitY();
-    std::size_t top = 0;
-    for (std::size_t i = 1; i < scene.bodies.size(); ++i)
-        if (scene.bodies[i].position.dot(up) > scene.bodies[top].position.dot(up)) top = i;
-    return top;
-}
-
 std::string fixed(double v, int decimals) {
     char text[64];
     std::snprintf(text, sizeof text, "%.*f", decimals, v);

@@ -10,7 +10,6 @@
 #include "io/json_text.hpp"
 #include "io/trace_json.hpp"
 
-
 namespace impulse::cli {
 
 namespace {
@@ -33,7 +32,8 @@ std::string check_file(const std::string& path) {
     const Scene c = io::read_scene(document);
     // A case writes its contacts out; a scene leaves them to its shapes.
     const bool is_case = !c.contacts.empty();
-    std::string text = std::string(is_case ? "valid case (" : "valid scene (") + count(c.bodies.size(), "body", "bodies");
+    std::string text =
+        std::string(is_case ? "valid case (" : "valid scene (") + count(c.bodies.size(), "body", "bodies");
     if (c.ground) text += ", ground";
     if (is_case) text += ", " + count(c.contacts.size(), "contact", "contacts");
     return text + ")";

@@ -1,10 +1,8 @@
 // Contact generation against cases derived by hand: which contacts, where, how deep, which features.
 
-#include "collision/broad_phase.hpp"
 #include "collision/collision.hpp"
 #include "support/approx.hpp"
-#include "support/property.hpp"
-#include "support/random_contacts.hpp"
+#include "support/bodies.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,6 +29,21 @@ std::vector<int> feature_indices(const std::vector<Contact>& contacts, int body)
     for (const Contact& c : contacts) indices.push_back(c.origin.features[static_cast<std::size_t>(body)].index);
     std::sort(indices.begin(), indices.end());
     return indices;
+}
+
+// The area the contact points of a manifold on a horizontal face enclose (ordered round their centre).
+double manifold_area(const std::vector<Contact>& contacts) {
+    std::vector<Vec3> p;
+    for (const Contact& c : contacts) p.push_back(c.point);
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& q : p) centre += q / static_cast<double>(p.size());
+    std::sort(p.begin(), p.end(), [&](const Vec3& a, const Vec3& b) {
+        return std::atan2(a.z() - centre.z(), a.x() - centre.x()) < std::atan2(b.z() - centre.z(), b.x() - centre.x());
+    });
+    double area = 0.0;
+    for (std::size_t k = 0; k < p.size(); ++k)
+        area += 0.5 * (p[k] - centre).cross(p[(k + 1) % p.size()] - centre).norm();
+    return area;
 }
 
 // True if some contact is at `point` (to 1e-12).
@@ -123,19 +136,27 @@ TEST_CASE("a sphere against a box face, edge and corner") {
     // Edge along z at x = +0.5, y = +0.5 (edge 8): distance sqrt(0.08).
     std::vector<Contact> edge = hit({0.7, 0.7, 0});
     REQUIRE(edge.size() == 1);
+    const double edge_depth = 0.3 - std::sqrt(0.08);
     CHECK(edge[0].origin.features[0] == Feature{FeatureKind::edge, 8});
     CHECK_CLOSE(edge[0].normal, Vec3(-1, -1, 0).normalized());
-    CHECK_CLOSE(edge[0].penetration, 0.3 - std::sqrt(0.08));
+    CHECK_CLOSE(edge[0].penetration, edge_depth);
+    CHECK_CLOSE(edge[0].point, Vec3(Vec3(0.5, 0.5, 0) + edge[0].normal * (0.5 * edge_depth)));
     // Corner (+,+,+) (vertex 0): distance sqrt(3 * 0.0225).
     std::vector<Contact> corner = hit({0.65, 0.65, 0.65});
     REQUIRE(corner.size() == 1);
+    const double corner_depth = 0.3 - std::sqrt(3 * 0.0225);
     CHECK(corner[0].origin.features[0] == Feature{FeatureKind::vertex, 0});
-    CHECK_CLOSE(corner[0].penetration, 0.3 - std::sqrt(3 * 0.0225));
-    // Centre inside, 0.1 below face +y: out through that face, 0.3 + 0.1 deep.
+    CHECK_CLOSE(corner[0].normal, Vec3(-1, -1, -1).normalized());
+    CHECK_CLOSE(corner[0].penetration, corner_depth);
+    CHECK_CLOSE(corner[0].point, Vec3(Vec3(0.5, 0.5, 0.5) + corner[0].normal * (0.5 * corner_depth)));
+    // Centre inside, 0.1 below face +y: out through that face, 0.3 + 0.1 deep; the sphere's deepest point is
+    // 0.3 below its centre at y = 0.1, the face at 0.5, so the point is midway at y = 0.3.
     std::vector<Contact> inside = hit({0, 0.4, 0});
     REQUIRE(inside.size() == 1);
+    CHECK(inside[0].origin.features[0] == Feature{FeatureKind::face, 2});
     CHECK_CLOSE(inside[0].normal, Vec3(0, -1, 0));
     CHECK_CLOSE(inside[0].penetration, 0.4);
+    CHECK_CLOSE(inside[0].point, Vec3(0, 0.3, 0));
     // Out of reach: nothing.
     CHECK(hit({0, 0.81, 0}).empty());
 }
@@ -173,18 +194,21 @@ TEST_CASE("a box turned 45 degrees on another clips to an octagon, reduced to th
     std::vector<Contact> out;
     box_and_box(cube, at({0, 0.99, 0}, about(Vec3::UnitY(), 45)), 0, cube, at(Vec3::Zero()), 1, out);
     REQUIRE(out.size() == 4);
-    std::vector<Vec3> p;
-    for (const Contact& c : out) p.push_back(c.point);
-    // Area of the quadrilateral in the plane (order them round their centre first).
-    Vec3 centre = Vec3::Zero();
-    for (const Vec3& q : p) centre += q / 4.0;
-    std::sort(p.begin(), p.end(), [&](const Vec3& a, const Vec3& b) {
-        return std::atan2(a.z() - centre.z(), a.x() - centre.x()) < std::atan2(b.z() - centre.z(), b.x() - centre.x());
-    });
-    double area = 0.0;
-    for (std::size_t k = 0; k < 4; ++k) area += 0.5 * (p[k] - centre).cross(p[(k + 1) % 4] - centre).norm();
+    const double area = manifold_area(out);
     const double octagon = 2.0 * (std::sqrt(2.0) - 1.0);
     CHECK(area > 0.5 * octagon);
+}
+
+TEST_CASE("a five-point clip keeps the four points that hold nearly all of its area") {
+    // Regression: the 3rd and 4th points were the largest triangles on either side of the line through the
+    // deepest and farthest points; when those two were neighbours every point lay on one side and only 3 were
+    // kept (area 0.48 of a 0.70 polygon). The best 4 of these 5 points hold 0.70.
+    const Quat turn = about(Vec3::UnitX(), 0.2) * about(Vec3::UnitZ(), -0.3) * about(Vec3::UnitY(), 27.9);
+    std::vector<Contact> out;
+    box_and_box(cube, at({0.8227, 0.989, 0.3374}, turn), 0, Box{Vec3(1, 0.5, 1)}, at(Vec3::Zero()), 1, out);
+    REQUIRE(out.size() == 4);
+    const double area = manifold_area(out);
+    CHECK(area > 0.95 * 0.701);
 }
 
 TEST_CASE("crossed edges give one contact midway between the edges' closest points") {
@@ -195,10 +219,10 @@ TEST_CASE("crossed edges give one contact midway between the edges' closest poin
     box_and_box(cube, at({0, 1.4, 0}, about(Vec3::UnitX(), 45)), 0, cube, at(Vec3::Zero(), about(Vec3::UnitZ(), 45)), 1,
                 out);
     REQUIRE(out.size() == 1);
-    CHECK(out[0].origin.features[0].kind == FeatureKind::edge);
-    CHECK(out[0].origin.features[0].index / 4 == 0);  // along box 0's x
-    CHECK(out[0].origin.features[1].kind == FeatureKind::edge);
-    CHECK(out[0].origin.features[1].index / 4 == 2);  // along box 1's z
+    // Box 0's lowest edge runs along its x with y negative, z positive (edge 1); box 1's highest along its z
+    // with x and y positive (edge 8).
+    CHECK(out[0].origin.features[0] == Feature{FeatureKind::edge, 1});
+    CHECK(out[0].origin.features[1] == Feature{FeatureKind::edge, 8});
     CHECK_CLOSE(out[0].normal, Vec3::UnitY());
     CHECK_CLOSE(out[0].penetration, std::sqrt(2.0) - 1.4);
     CHECK_CLOSE(out[0].point, Vec3(0, 0.7, 0));
@@ -222,73 +246,4 @@ TEST_CASE("boxes apart along any of the 15 axes give no contact") {
                 1,
                 out);  // only the edge-edge axis separates
     CHECK(out.empty());
-}
-
-TEST_CASE("swapping the two bodies flips every normal and keeps the points, depths and features") {
-    check_property("box-box swap", [] {
-        const Placement a = at(any_vector(0.6), any_orientation());
-        const Placement b = at(any_vector(0.6), any_orientation());
-        const Box ba{Vec3(*in_range(0.1, 0.6), *in_range(0.1, 0.6), *in_range(0.1, 0.6))};
-        const Box bb{Vec3(*in_range(0.1, 0.6), *in_range(0.1, 0.6), *in_range(0.1, 0.6))};
-        std::vector<Contact> forward, backward;
-        box_and_box(ba, a, 0, bb, b, 1, forward);
-        box_and_box(bb, b, 1, ba, a, 0, backward);
-        RC_ASSERT(forward.size() == backward.size());
-        for (const Contact& f : forward) {
-            const bool matched = std::any_of(backward.begin(), backward.end(), [&](const Contact& g) {
-                return (f.point - g.point).norm() < 1e-9 && (f.normal + g.normal).norm() < 1e-9 &&
-                       std::abs(f.penetration - g.penetration) < 1e-9 && f.origin.features[0] == g.origin.features[1] &&
-                       f.origin.features[1] == g.origin.features[0];
-            });
-            RC_ASSERT(matched);
-        }
-    });
-}
-
-TEST_CASE("every box-box contact lies within both boxes' reach and its depth matches the overlap along its normal") {
-    check_property("box-box contacts are sound", [] {
-        const Placement a = at(any_vector(0.6), any_orientation());
-        const Placement b = at(any_vector(0.6), any_orientation());
-        const Box box{Vec3(*in_range(0.1, 0.6), *in_range(0.1, 0.6), *in_range(0.1, 0.6))};
-        std::vector<Contact> out;
-        box_and_box(box, a, 0, box, b, 1, out);
-        RC_ASSERT(out.size() <= 4);
-        for (const Contact& c : out) {
-            RC_ASSERT(std::abs(c.normal.norm() - 1.0) < 1e-12);
-            RC_ASSERT(c.penetration >= 0.0);
-            // The point is inside (or on) both boxes grown by half the depth.
-            for (const Placement* p : {&a, &b}) {
-                const Vec3 local = p->rotation.transpose() * (c.point - p->position);
-                RC_ASSERT((local.cwiseAbs() - box.half_size).maxCoeff() <= 0.5 * c.penetration + 1e-9);
-            }
-        }
-    });
-}
-
-TEST_CASE("sort and sweep finds exactly the pairs whose bounds overlap") {
-    check_property("broad phase", [] {
-        const int count = *rc::gen::inRange(0, 40);
-        std::vector<std::optional<Bounds>> bounds;
-        for (int k = 0; k < count; ++k) {
-            if (*rc::gen::inRange(0, 10) == 0) {
-                bounds.emplace_back();  // a body without a shape
-                continue;
-            }
-            const Shape shape = *rc::gen::arbitrary<bool>()
-                                    ? Shape(Sphere{*in_range(0.1, 1.0)})
-                                    : Shape(Box{Vec3(*in_range(0.1, 1.0), *in_range(0.1, 1.0), *in_range(0.1, 1.0))});
-            bounds.push_back(world_bounds(shape, any_vector(4.0), any_orientation().toRotationMatrix()));
-        }
-        const auto pairs =
-            overlapping_pairs(std::span<const std::optional<Bounds>>(bounds), [](int, int) { return false; });
-        std::vector<std::pair<int, int>> expected;
-        for (int i = 0; i < count; ++i)
-            for (int j = i + 1; j < count; ++j) {
-                const auto& a = bounds[static_cast<std::size_t>(i)];
-                const auto& b = bounds[static_cast<std::size_t>(j)];
-                if (a && b && (a->low.array() <= b->high.array()).all() && (b->low.array() <= a->high.array()).all())
-                    expected.emplace_back(i, j);
-            }
-        RC_ASSERT(pairs == expected);
-    });
 }

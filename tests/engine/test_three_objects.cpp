@@ -7,9 +7,7 @@
 #include "resolver/resolver.hpp"
 #include "support/approx.hpp"
 #include "support/bodies.hpp"
-
-#include <fstream>
-#include <sstream>
+#include "support/shipped.hpp"
 
 using namespace impulse;
 using namespace impulse::test;
@@ -23,10 +21,7 @@ struct Figure {
 };
 
 Figure resolve_figure() {
-    std::ifstream in(IMPULSE_SOURCE_DIR "/scenes/cases/three_objects.json");
-    std::stringstream text;
-    text << in.rdbuf();
-    Figure f{io::read_scene_text(text.str()), {}, {}};
+    Figure f{shipped("cases/three_objects"), {}, {}};
     f.after = f.c.bodies;
     f.trace.scene = f.c;
     TraceRecorder recorder(f.trace);

@@ -8,6 +8,8 @@
 #include "support/temp_dir.hpp"
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 
 using namespace impulse;
 using namespace impulse::test;
@@ -149,6 +151,26 @@ TEST_CASE("malformed cases are rejected with one line naming the path, exit code
         {"a key given twice", case_with(R"([{"inverse_mass": 0, "inverse_mass": 1}])", "[]"),
          "bodies[0].inverse_mass: key given twice in the same object"},
         {"not an object", "[]", "must be an object, got []"},
+        {"an unknown material",
+         case_with(R"([{"shape": {"type": "sphere", "radius": 1}, "material": "rubbr"}])", "[]",
+                   R"(, "materials": {"rubber": {"restitution": 0.8}})"),
+         "bodies[0].material: no material named \"rubbr\" (did you mean \"rubber\"?)"},
+        {"a zero ground normal", case_with("[" + ruler + "]", "[]", R"(, "ground": {"normal": [0, 0, 0]})"),
+         "ground.normal: must not be zero"},
+        {"an unknown shape", case_with(R"([{"shape": {"type": "cone", "radius": 1}}])", "[]"),
+         "bodies[0].shape.type: must be one of \"sphere\", \"box\"; got \"cone\""},
+        {"a flat box", case_with(R"([{"shape": {"type": "box", "half_size": [1, 0, 1]}}])", "[]"),
+         "bodies[0].shape.half_size[1]: must be > 0, got 0"},
+        {"inertia given twice",
+         case_with(
+             R"([{"inertia": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "inverse_inertia": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}])",
+             "[]"),
+         "bodies[0].inverse_inertia: give inertia or inverse_inertia, not both"},
+        {"no frames", case_with("[" + ruler + "]", "[]", R"(, "settings": {"frames": 0})"),
+         "settings.frames: must be >= 1, got 0"},
+        {"friction on a material below zero",
+         case_with("[" + ruler + "]", "[]", R"(, "materials": {"ice": {"friction": -0.1}})"),
+         "materials.ice.friction: must be >= 0, got -0.1"},
         {"a number too large for a double", case_with(R"([{"inverse_mass": 1e999}])", "[]"),
          "invalid JSON: number overflow parsing '1e999'"},
         {"broken JSON", "{\n  \"bodies\": [,]\n}",
@@ -176,4 +198,48 @@ TEST_CASE("a file that cannot be read is named in one line with the reason") {
     const CliResult r = run_cli({"resolve", missing});
     CHECK(r.code == 2);
     CHECK(r.err == "impulse-lab: " + missing + ": cannot read: No such file or directory\n");
+}
+
+TEST_CASE("a scene needs only shapes and positions; every other value is a documented default") {
+    const Scene s =
+        io::read_scene_text(R"({"ground": {}, "bodies": [{"shape": {"type": "box", "half_size": [1, 0.5, 0.5]}}]})");
+    CHECK(s.world.gravity == Vec3(0, -9.81, 0));
+    CHECK(s.world.frames == 600);
+    CHECK(s.world.linear_damping == 1.0);
+    REQUIRE(s.ground.has_value());
+    CHECK(s.ground->plane == HalfSpace{Vec3::UnitY(), 0.0});
+    CHECK(s.ground->material == "default");
+    CHECK(s.materials.at("default") == Material{0.0, 0.5});
+    CHECK(s.body_materials[0] == "default");
+    CHECK(std::get<Box>(*s.shapes[0]).half_size == Vec3(1, 0.5, 0.5));
+    CHECK(s.bodies[0].inverse_mass == 1.0);
+    CHECK_CLOSE(s.bodies[0].inverse_inertia_body, box_inverse_inertia(1.0, Vec3(1, 0.5, 0.5)));
+    CHECK(s.contacts.empty());
+    CHECK(s.settings.duration == 1.0 / 60.0);
+}
+
+TEST_CASE("given inertia overrides the inertia a shape would give, and the shape still collides") {
+    const Scene s = io::read_scene_text(
+        R"({"bodies": [{"shape": {"type": "sphere", "radius": 1}, "inertia": [[2, 0, 0], [0, 2, 0], [0, 0, 2]]}]})");
+    CHECK(s.shapes[0].has_value());
+    CHECK_CLOSE(s.bodies[0].inverse_inertia_body, (Mat3::Identity() * 0.5).eval());
+}
+
+TEST_CASE("materials combine by the larger restitution and the geometric mean of friction") {
+    const Material m = combine({0.2, 0.9}, {0.6, 0.4});
+    CHECK(m.restitution == 0.6);
+    CHECK_CLOSE(m.friction, 0.6);  // sqrt(0.9 * 0.4)
+    CHECK(combine({0.0, 0.0}, {0.5, 1.0}).friction == 0.0);
+}
+
+TEST_CASE("every shipped scene reads, and writes out to a scene that reads back equal") {
+    for (const auto& entry : std::filesystem::directory_iterator(IMPULSE_SOURCE_DIR "/scenes")) {
+        if (entry.path().extension() != ".json") continue;
+        CAPTURE(entry.path().string());
+        std::ifstream in(entry.path());
+        std::stringstream text;
+        text << in.rdbuf();
+        const Scene s = io::read_scene_text(text.str());
+        CHECK(io::read_scene(io::scene_json(s, true)) == s);
+    }
 }

@@ -8,22 +8,13 @@
 #include "io/trace_json.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
+#include "support/shipped.hpp"
 
 #include <doctest/doctest.h>
-
-#include <fstream>
-#include <sstream>
 
 using namespace impulse;
 
 namespace {
-
-Scene shipped(const std::string& name) {
-    std::ifstream in(IMPULSE_SOURCE_DIR "/scenes/cases/" + name + ".json");
-    std::stringstream text;
-    text << in.rdbuf();
-    return io::read_scene_text(text.str());
-}
 
 Trace resolved(const Scene& c, const std::vector<std::string>& settings = {}) {
     Trace trace;
@@ -55,7 +46,7 @@ TEST_CASE("a trace written and read back is equal to the last bit, for every met
     };
     for (const auto& [name, settings] : runs) {
         CAPTURE(name);
-        const Trace trace = resolved(shipped(name), settings);
+        const Trace trace = resolved(test::shipped("cases/" + name), settings);
         const std::string text = written(trace);
         const Trace again = io::read_trace_text(text);  // also checks the schema
         CHECK(again == trace);
@@ -65,7 +56,7 @@ TEST_CASE("a trace written and read back is equal to the last bit, for every met
 
 TEST_CASE("a filtered trace round-trips with its filter") {
     Trace trace;
-    trace.scene = shipped("sliding_box");
+    trace.scene = test::shipped("cases/sliding_box");
     trace.recording.contacts = std::vector<int>{2};
     std::vector<RigidBody> bodies = trace.scene.bodies;
     TraceRecorder recorder(trace);
@@ -74,7 +65,7 @@ TEST_CASE("a filtered trace round-trips with its filter") {
 }
 
 TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the order of the steps") {
-    const io::json j = io::trace_json(resolved(shipped("ruler")));
+    const io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
     std::vector<std::string> keys;
     for (const auto& [key, value] : j["frames"][0]["contacts"][0].items()) keys.push_back(key);
     const std::vector<std::string> expected{"contact",
@@ -118,7 +109,7 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
 }
 
 TEST_CASE("the header says what ran: format, version, conventions, full settings and the scene") {
-    const io::json j = io::trace_json(resolved(shipped("ruler")));
+    const io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
     CHECK(j["format"] == "impulse-lab-trace");
     CHECK(j["version"] == 1);
     CHECK(j["conventions"]["quaternion"] == "[w, x, y, z], unit, body to world");
@@ -128,7 +119,7 @@ TEST_CASE("the header says what ran: format, version, conventions, full settings
 }
 
 TEST_CASE("a trace whose indices point outside its scene is rejected with the path") {
-    io::json j = io::trace_json(resolved(shipped("ruler")));
+    io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
     j["frames"][0]["phases"][1]["iterations"][0]["contact"] = 5;
     try {
         io::read_trace(j);
@@ -140,13 +131,13 @@ TEST_CASE("a trace whose indices point outside its scene is rejected with the pa
 }
 
 TEST_CASE("a trace from a future format version is refused") {
-    io::json j = io::trace_json(resolved(shipped("ruler")));
+    io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
     j["version"] = 2;
     CHECK_THROWS_WITH_AS(io::read_trace(j), "version: must be 1, got 2", io::InputError);
 }
 
 TEST_CASE("a misspelt derivation key in a trace is named with its path") {
-    io::json j = io::trace_json(resolved(shipped("ruler")));
+    io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
     io::json& contact = j["frames"][0]["contacts"][0];
     contact["relative_positon"] = contact["relative_position"];
     contact.erase("relative_position");

@@ -200,7 +200,7 @@ TEST_CASE("a file that cannot be read is named in one line with the reason") {
     CHECK(r.err == "impulse-lab: " + missing + ": cannot read: No such file or directory\n");
 }
 
-TEST_CASE("a scene needs only shapes and positions; every other value is a documented default") {
+TEST_CASE("a scene needs only shapes and positions: every other value is a documented default") {
     const Scene s =
         io::read_scene_text(R"({"ground": {}, "bodies": [{"shape": {"type": "box", "half_size": [1, 0.5, 0.5]}}]})");
     CHECK(s.world.gravity == Vec3(0, -9.81, 0));

@@ -21,8 +21,14 @@ Placement placement_of(const RigidBody& body) {
     return {body.position, body.orientation.toRotationMatrix()};
 }
 
-const Material& material_of(const Scene& scene, const std::string& name) {
-    return scene.materials.at(name);
+// Gives the contacts a pair test just appended (from `first` on) the combined material of the two surfaces.
+void stamp_material(std::vector<Contact>& contacts, std::size_t first, const Scene& scene, const std::string& a,
+                    const std::string& b) {
+    const Material m = combine(scene.materials.at(a), scene.materials.at(b));
+    for (std::size_t k = first; k < contacts.size(); ++k) {
+        contacts[k].restitution = m.restitution;
+        contacts[k].friction = m.friction;
+    }
 }
 
 }  // namespace
@@ -41,10 +47,7 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
             if (!scene.shapes[i] || is_immovable(bodies[i])) continue;
             const std::size_t first = out.size();
             collide_with_ground(*scene.shapes[i], placements[i], static_cast<int>(i), scene.ground->plane, out);
-            const Material m =
-                combine(material_of(scene, scene.body_materials[i]), material_of(scene, scene.ground->material));
-            for (std::size_t k = first; k < out.size(); ++k)
-                out[k].restitution = m.restitution, out[k].friction = m.friction;
+            stamp_material(out, first, scene, scene.body_materials[i], scene.ground->material);
         }
     }
 
@@ -64,10 +67,7 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
         const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
         const std::size_t first = out.size();
         collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out);
-        const Material m =
-            combine(material_of(scene, scene.body_materials[ui]), material_of(scene, scene.body_materials[uj]));
-        for (std::size_t k = first; k < out.size(); ++k)
-            out[k].restitution = m.restitution, out[k].friction = m.friction;
+        stamp_material(out, first, scene, scene.body_materials[ui], scene.body_materials[uj]);
     }
     if (times) {
         times->broad_phase += broad;

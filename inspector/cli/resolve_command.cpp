@@ -32,8 +32,10 @@ int resolve_command(const ResolveOptions& options, std::ostream& out) {
     if (trace.recording.contacts)
         for (int contact : *trace.recording.contacts)
             if (contact >= static_cast<int>(contacts.size()))
-                throw io::InputError("--record", "there is no contact " + std::to_string(contact) + " (there are " +
-                                                     std::to_string(contacts.size()) + ")");
+                throw io::InputError("--record", "there is no contact " + std::to_string(contact) +
+                                                     " (this frame has " + std::to_string(contacts.size()) +
+                                                     (contacts.size() == 1 ? " contact" : " contacts") +
+                                                     ", numbered from 0)");
     std::vector<RigidBody> bodies = trace.scene.bodies;
     TraceRecorder recorder(trace);
     resolve_contacts(bodies, contacts, trace.scene.settings, recorder);

@@ -51,6 +51,39 @@ void add_run(CLI::App& app, RunOptions& o) {
     run->add_option("--states", o.states_file, "Write every body's state per frame as CSV, atomically");
 }
 
+void add_inspect(CLI::App& app, InspectOptions& o) {
+    CLI::App* inspect = app.add_subcommand(
+        "inspect",
+        "Step through a case, scene or trace in a window (or headless, to PNG files).\n"
+        "Keys: ←/→ step, ↑/↓ contact or iteration, PgUp/PgDn phase, Home/End first/last.\n"
+        "Example: impulse-lab inspect scenes/cases/ruler.json --headless --goto phase=position,step=angular_change "
+        "--screenshot ruler.png");
+    inspect->add_option("FILE", o.file, "Case (resolved once), scene (simulated, then inspected) or trace (JSON)")
+        ->required();
+    inspect->add_flag("--headless", o.headless,
+                      "Render offscreen, without a display: needs --screenshot, --script "
+                      "or --bench-frames");
+    inspect->add_option("--size", o.size, "Window or image size WxH in pixels (default 1280x800)");
+    inspect->add_option("--goto", o.go_to,
+                        "Start at frame=F,phase=preparation|position|velocity,iteration=I,contact=C,step=NAME "
+                        "(any parts; step may name a step or a quantity)");
+    inspect->add_option("--script", o.script,
+                        "Run actions from a file, one per line: next/prev step|contact|iteration|item|phase [N], "
+                        "first, last, goto SPEC, set NAME VALUE, view front|top|side|3d, screenshot FILE, "
+                        "export trace FILE, export table FILE, quit");
+    inspect->add_option("--screenshot", o.screenshot, "Save a PNG of the window at the end, then close");
+    inspect
+        ->add_option("--bench-frames", o.bench_frames,
+                     "Render N frames stepping one derivation step per frame; print frame-time percentiles")
+        ->check(CLI::Range(1, 1000000));
+    inspect->add_option("--preset", o.preset, "Settings preset for a case or scene")
+        ->check(CLI::IsMember({"book", "chapter"}));
+    inspect->add_option("--set", o.settings, "Change one setting of a case or scene (repeatable)");
+    inspect->add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of a case or scene");
+    inspect->add_option("--frames", o.frames, "Frames to simulate for a scene (default: its own, at most 60)")
+        ->check(CLI::Range(1, 100000));
+}
+
 void add_validate(CLI::App& app, std::vector<std::string>& files) {
     CLI::App* validate = app.add_subcommand("validate", "Check case and trace files against their schemas");
     validate->add_option("FILE", files, "Scene or trace files (JSON)")->required();
@@ -73,8 +106,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     ResolveOptions resolve;
     RunOptions run_options;
     std::vector<std::string> validate_files;
+    InspectOptions inspect;
     add_resolve(app, resolve);
     add_run(app, run_options);
+    add_inspect(app, inspect);
     add_validate(app, validate_files);
 
     // CLI11 would say only "A subcommand is required" for a misspelt command; name it instead.
@@ -83,7 +118,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     };
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_command(args[0])) {
         err << "impulse-lab: unknown command \"" << args[0]
-            << "\" (commands: resolve, run, validate; see impulse-lab --help)\n";
+            << "\" (commands: resolve, run, inspect, validate; see impulse-lab --help)\n";
         return exit_bad_input;
     }
     try {
@@ -104,6 +139,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     try {
         if (app.got_subcommand("resolve")) return resolve_command(resolve, out);
         if (app.got_subcommand("run")) return run_command(run_options, out, err, err_is_terminal ? &err : nullptr);
+        if (app.got_subcommand("inspect")) return inspect_command(inspect, out, err);
         return validate_command(validate_files, out, err);
     } catch (const FileError& e) {
         err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';

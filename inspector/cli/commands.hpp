@@ -34,6 +34,23 @@ struct RunOptions {
 // `progress` is where a progress bar may go (a terminal), or null for none.
 int run_command(const RunOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress);
 
+struct InspectOptions {
+    std::string file;  // a case, scene or trace
+    bool headless = false;
+    std::optional<std::string> size;  // "WxH"
+    std::optional<std::string> go_to;
+    std::optional<std::string> script;
+    std::optional<std::string> screenshot;
+    std::optional<int> bench_frames;
+    std::optional<std::string> preset;
+    std::vector<std::string> settings;
+    std::vector<std::string> record;
+    std::optional<int> frames;
+};
+
+// Opens the inspector: a window, or with --headless the same frames rendered offscreen.
+int inspect_command(const InspectOptions& options, std::ostream& out, std::ostream& err);
+
 // Prints one line per file; returns exit_bad_input if any file is invalid (all files are checked).
 int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
 

@@ -10,35 +10,21 @@
 #include "io/json_text.hpp"
 #include "io/settings_json.hpp"
 #include "io/trace_json.hpp"
-#include "record/trace_recorder.hpp"
-#include "resolver/resolver.hpp"
-#include "world/world.hpp"
+#include "model/runs.hpp"
 
 namespace impulse::cli {
 
 int resolve_command(const ResolveOptions& options, std::ostream& out) {
-    Trace trace;
+    Scene scene;
     try {
-        trace.scene = io::read_scene_text(read_input_file(options.case_file), options.preset);
+        scene = io::read_scene_text(read_input_file(options.case_file), options.preset);
     } catch (const io::InputError& e) {
         throw FileError{options.case_file, e.where(), e.problem()};
     }
-    for (const std::string& assignment : options.settings) io::apply_setting(trace.scene, assignment, "--set");
-    for (const std::string& spec : options.record) apply_record_spec(spec, trace.recording);
-
-    // The contacts written in the file when it gives any; otherwise those the scene's shapes make as given.
-    const std::vector<Contact> contacts =
-        trace.scene.contacts.empty() ? detect_contacts(trace.scene, trace.scene.bodies).contacts : trace.scene.contacts;
-    if (trace.recording.contacts)
-        for (int contact : *trace.recording.contacts)
-            if (contact >= static_cast<int>(contacts.size()))
-                throw io::InputError("--record", "there is no contact " + std::to_string(contact) +
-                                                     " (this frame has " + std::to_string(contacts.size()) +
-                                                     (contacts.size() == 1 ? " contact" : " contacts") +
-                                                     ", numbered from 0)");
-    std::vector<RigidBody> bodies = trace.scene.bodies;
-    TraceRecorder recorder(trace);
-    resolve_contacts(bodies, contacts, trace.scene.settings, recorder);
+    for (const std::string& assignment : options.settings) io::apply_setting(scene, assignment, "--set");
+    TraceFilter recording;
+    for (const std::string& spec : options.record) apply_record_spec(spec, recording);
+    const Trace trace = inspect::resolve_once(scene, recording);
 
     // Everything the user asked for is checked before anything is written, and the trace is written
     // atomically, so a failed run leaves no file behind.

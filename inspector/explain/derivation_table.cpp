@@ -11,7 +11,9 @@ namespace {
 // Collects the rows of one step, filling formula, equation, unit and meaning from the annotations.
 class Table {
 public:
-    Table(std::string step, std::string title) : table_{std::move(step), std::move(title), {}} {}
+    // `contact_to_world` is the contact's basis when known: vectors are then also shown in the other frame.
+    Table(std::string step, std::string title, const Mat3* contact_to_world = nullptr)
+        : table_{std::move(step), std::move(title), {}}, basis_(contact_to_world) {}
 
     // `note` follows the unit: "0.25 m/s (not applied)".
     Table& row(std::string_view key, const std::string& value, std::optional<int> body = std::nullopt,
@@ -34,6 +36,24 @@ public:
         return *this;
     }
 
+    // A world vector, shown in contact coordinates too (C^T v): e.g. q_rel along the normal and tangents.
+    Table& world_vector(std::string_view key, const Vec3& v, std::optional<int> body = std::nullopt) {
+        row(key, vector(v), body);
+        if (basis_) table_.rows.back().other_frame = "contact " + vector(basis_->transpose() * v);
+        return *this;
+    }
+    Table& world_vectors(std::string_view key, const PerBody<Vec3>& values) {
+        for (int i = 0; i < 2; ++i)
+            if (values[i]) world_vector(key, *values[i], i);
+        return *this;
+    }
+    // A vector in contact coordinates, shown in world coordinates too (C v).
+    Table& contact_vector(std::string_view key, const Vec3& v, std::string_view formula = {}) {
+        row(key, vector(v), std::nullopt, formula);
+        if (basis_) table_.rows.back().other_frame = "world " + vector(*basis_ * v);
+        return *this;
+    }
+
     // Replaces the equation of the row just added (the same quantity can come from another equation).
     Table& equation(std::string_view text) {
         table_.rows.back().equation = std::string(text);
@@ -44,6 +64,7 @@ public:
 
 private:
     StepTable table_;
+    const Mat3* basis_;
 };
 
 template <typename Member>
@@ -79,6 +100,7 @@ std::vector<StepTable> updates_tables(const std::string& what, std::vector<Row> 
 
 std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
     std::vector<StepTable> tables;
+    const Mat3* basis = &d.basis.contact_to_world;
 
     Table basis_step("basis", "Step 1 · basis — contact coordinates from the normal");
     basis_step.row("normal", vector(d.basis.normal))
@@ -88,46 +110,46 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
         .row("basis", matrix_rows(d.basis.contact_to_world));
     tables.push_back(basis_step.done());
 
-    Table relative("relative_position", "Step 2 · relative_position — where the contact is on each body");
-    relative.per_body("relative_position", d.relative_position, vector);
+    Table relative("relative_position", "Step 2 · relative_position — where the contact is on each body", basis);
+    relative.world_vectors("relative_position", d.relative_position);
     tables.push_back(relative.done());
 
     const VelocityPerUnitImpulse& chain = d.velocity_per_unit_impulse;
-    Table unit("velocity_per_unit_impulse", "Step 3 · velocity per unit impulse — linear and angular parts");
-    unit.per_body("torque_per_unit_impulse", unit_response_field(chain, &UnitImpulseResponse::torque_per_unit_impulse),
-                  vector)
-        .per_body("rotation_per_unit_impulse",
-                  unit_response_field(chain, &UnitImpulseResponse::rotation_per_unit_impulse), vector)
-        .per_body("velocity_per_unit_impulse",
-                  unit_response_field(chain, &UnitImpulseResponse::velocity_per_unit_impulse), vector)
+    Table unit("velocity_per_unit_impulse", "Step 3 · velocity per unit impulse — linear and angular parts", basis);
+    unit.world_vectors("torque_per_unit_impulse",
+                       unit_response_field(chain, &UnitImpulseResponse::torque_per_unit_impulse))
+        .world_vectors("rotation_per_unit_impulse",
+                       unit_response_field(chain, &UnitImpulseResponse::rotation_per_unit_impulse))
+        .world_vectors("velocity_per_unit_impulse",
+                       unit_response_field(chain, &UnitImpulseResponse::velocity_per_unit_impulse))
         .per_body("angular_component", unit_response_field(chain, &UnitImpulseResponse::angular_component), number)
         .per_body("linear_component", unit_response_field(chain, &UnitImpulseResponse::linear_component), number)
         .row("delta_velocity_per_unit_impulse", number(chain.delta_velocity_per_unit_impulse));
     tables.push_back(unit.done());
 
-    Table velocity("contact_velocity", "Step 4 · contact_velocity — how the contact points move");
-    velocity.per_body("point_velocity", d.contact_velocity.point_velocity, vector)
+    Table velocity("contact_velocity", "Step 4 · contact_velocity — how the contact points move", basis);
+    velocity.world_vectors("point_velocity", d.contact_velocity.point_velocity)
         .per_body("tangential_acceleration_velocity", d.contact_velocity.tangential_acceleration_velocity, vector)
-        .row("contact_velocity", vector(d.contact_velocity.contact_velocity));
+        .contact_vector("contact_velocity", d.contact_velocity.contact_velocity);
     tables.push_back(velocity.done());
 
     tables.push_back(desired_table(d.desired_delta_velocity));
     return tables;
 }
 
-std::vector<StepTable> position_iteration_tables(const PositionIteration& it) {
+std::vector<StepTable> position_iteration_tables(const PositionIteration& it, const Mat3* basis) {
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
         const std::string method(name_of(position_method_names, r->method));
         if (r->rewind) {
             const Rewind& w = *r->rewind;
-            Table rewind("rewind", "Velocity-based · move the bodies back along their paths");
+            Table rewind("rewind", "Velocity-based · move the bodies back along their paths", basis);
             rewind.row("closing_velocity", number(w.closing_velocity))
                 .row("rewind_time", number(w.time), std::nullopt, {},
                      w.time == w.time_limit && w.time > 0 ? "the whole frame" : "")
                 .row("removed_penetration", number(w.removed_penetration))
-                .per_body("rewind_linear_change", w.linear_change, vector)
-                .per_body("rewind_angular_change", w.angular_change, vector);
+                .world_vectors("rewind_linear_change", w.linear_change)
+                .world_vectors("rewind_angular_change", w.angular_change);
             tables.push_back(rewind.done());
         }
         // When moving back along the paths removed everything, there is nothing left to project.
@@ -160,9 +182,9 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it) {
             tables.push_back(moves.done());
         }
 
-        Table change("position_change", "Step 8 · linear_change and angular_change — the move applied");
-        change.per_body("linear_change", r->change.linear_change, vector)
-            .per_body("angular_change", r->change.angular_change, vector);
+        Table change("position_change", "Step 8 · linear_change and angular_change — the move applied", basis);
+        change.world_vectors("linear_change", r->change.linear_change)
+            .world_vectors("angular_change", r->change.angular_change);
         tables.push_back(change.done());
     }
     std::vector<Row> rows;
@@ -175,21 +197,21 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it) {
     return tables;
 }
 
-std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it) {
+std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, const Mat3* basis) {
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
-        Table velocity("contact_velocity", "Step 4 · contact_velocity — as the resolver has it now");
-        velocity.row("contact_velocity", vector(r->contact_velocity));
+        Table velocity("contact_velocity", "Step 4 · contact_velocity — as the resolver has it now", basis);
+        velocity.contact_vector("contact_velocity", r->contact_velocity);
         tables.push_back(velocity.done());
         tables.push_back(desired_table(r->desired_delta_velocity));
 
         const Impulse& g = r->impulse;
-        Table impulse("impulse", "Step 6 · impulse_contact and impulse_world — the impulse");
+        Table impulse("impulse", "Step 6 · impulse_contact and impulse_world — the impulse", basis);
         impulse.row("impulse_model", std::string(name_of(impulse_model_names, g.model)));
         if (const auto& s = g.friction) {
             impulse.row("delta_velocity_matrix", matrix_rows(s->delta_velocity_matrix))
-                .row("target_delta_velocity", vector(s->target_delta_velocity))
-                .row("static_impulse", vector(s->static_impulse))
+                .contact_vector("target_delta_velocity", s->target_delta_velocity)
+                .contact_vector("static_impulse", s->static_impulse)
                 .row("tangential_impulse", number(s->tangential_impulse))
                 .row("cone_limit", number(s->cone_limit));
             if (s->sliding_direction)
@@ -198,17 +220,18 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it) {
             if (s->sliding_normal_response) impulse.row("sliding_normal_response", number(*s->sliding_normal_response));
         }
         impulse
-            .row("impulse_contact", vector(g.impulse_contact), std::nullopt,
-                 g.model == ImpulseModel::frictionless      ? std::string_view{}
-                 : g.model == ImpulseModel::static_friction ? "static_impulse (inside the cone)"
-                                                            : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding response")
-            .row("impulse_world", vector(g.impulse_world));
+            .contact_vector("impulse_contact", g.impulse_contact,
+                            g.model == ImpulseModel::frictionless ? std::string_view{}
+                            : g.model == ImpulseModel::static_friction
+                                ? "static_impulse (inside the cone)"
+                                : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding response")
+            .world_vector("impulse_world", g.impulse_world);
         tables.push_back(impulse.done());
 
-        Table change("velocity_change", "Step 7 · velocity_change and rotation_change — the impulse applied");
-        change.per_body("impulsive_torque", r->velocity_change.impulsive_torque, vector)
-            .per_body("velocity_change", r->velocity_change.velocity_change, vector)
-            .per_body("rotation_change", r->velocity_change.rotation_change, vector);
+        Table change("velocity_change", "Step 7 · velocity_change and rotation_change — the impulse applied", basis);
+        change.world_vectors("impulsive_torque", r->velocity_change.impulsive_torque)
+            .world_vectors("velocity_change", r->velocity_change.velocity_change)
+            .world_vectors("rotation_change", r->velocity_change.rotation_change);
         tables.push_back(change.done());
     }
     std::vector<Row> rows;

@@ -16,6 +16,9 @@ struct Row {
     std::string formula;
     std::string equation;
     std::string meaning;
+    // A vector in the other frame where both mean something: "contact (…)" beside a world vector,
+    // "world (…)" beside one in contact coordinates. Empty otherwise.
+    std::string other_frame = {};
 };
 
 struct StepTable {
@@ -28,10 +31,13 @@ struct StepTable {
 std::vector<StepTable> preparation_tables(const ContactPreparation& contact);
 
 // Step 8 for one position iteration (empty when its derivation was filtered out of the recording), then a
-// table of the updates it made to other contacts' penetrations.
-std::vector<StepTable> position_iteration_tables(const PositionIteration& iteration);
+// table of the updates it made to other contacts' penetrations. With the chosen contact's basis, world
+// vectors are also given in contact coordinates.
+std::vector<StepTable> position_iteration_tables(const PositionIteration& iteration,
+                                                 const Mat3* contact_to_world = nullptr);
 
 // Steps 4-7 for one velocity iteration, then its updates.
-std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& iteration);
+std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& iteration,
+                                                 const Mat3* contact_to_world = nullptr);
 
 }  // namespace impulse::explain

@@ -1,0 +1,66 @@
+// `impulse-lab inspect FILE`: open a case, scene or trace in the inspector, in a window or headless.
+
+#include "cli/commands.hpp"
+#include "cli/input_files.hpp"
+#include "gui/display.hpp"
+#include "gui/inspector_app.hpp"
+#include "io/input_error.hpp"
+#include "model/script.hpp"
+
+#include <chrono>
+#include <charconv>
+
+namespace impulse::cli {
+
+namespace {
+
+std::pair<int, int> parse_size(const std::string& text) {
+    const std::size_t x = text.find('x');
+    int width = 0, height = 0;
+    const auto read = [](std::string_view s, int& value) {
+        const auto [end, error] = std::from_chars(s.data(), s.data() + s.size(), value);
+        return error == std::errc() && end == s.data() + s.size();
+    };
+    if (x == std::string::npos || !read(std::string_view(text).substr(0, x), width) ||
+        !read(std::string_view(text).substr(x + 1), height))
+        throw io::InputError("--size", "expected WIDTHxHEIGHT in pixels, e.g. 1280x800, got \"" + text + "\"");
+    if (width < 320 || height < 240 || width > 8192 || height > 8192)
+        throw io::InputError("--size", "each side must be from 320x240 to 8192x8192 pixels, got " + text);
+    return {width, height};
+}
+
+}  // namespace
+
+int inspect_command(const InspectOptions& options, std::ostream& out, std::ostream& err) {
+    gui::InspectorRun run;
+    run.headless = options.headless;
+    if (options.size) std::tie(run.width, run.height) = parse_size(*options.size);
+    if (run.headless && !options.screenshot && !options.script && !options.bench_frames)
+        throw io::InputError("--headless", "nothing to render: give --screenshot, --script or --bench-frames");
+    // Before any work: a window needs a display.
+    if (!run.headless && !gui::display_available())
+        throw io::InputError("inspect",
+                             "there is no display to open a window on (DISPLAY is not set); add "
+                             "--headless with --screenshot or --script to render PNG files instead");
+    if (options.script) {
+        run.script_name = *options.script;
+        try {
+            run.script = inspect::parse_script(read_input_file(*options.script));
+        } catch (const io::InputError& e) {
+            throw FileError{*options.script, e.where(), e.problem()};
+        }
+    }
+
+    const auto start = std::chrono::steady_clock::now();
+    inspect::Session session = inspect::Session::open(
+        options.file, inspect::OpenOptions{options.preset, options.settings, options.record, options.frames});
+    run.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (options.go_to)
+        session.move_to(
+            inspect::resolve_goto(session.trace(), inspect::parse_goto(*options.go_to, "--goto"), "--goto"));
+    run.screenshot = options.screenshot;
+    run.bench_frames = options.bench_frames;
+    return gui::run_inspector(session, run, out, err);
+}
+
+}  // namespace impulse::cli

@@ -1,0 +1,180 @@
+#include "gui/inspector_app.hpp"
+
+#include "gui/display.hpp"
+#include "gui/panels.hpp"
+#include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <deque>
+#include <numeric>
+
+namespace impulse::gui {
+
+namespace {
+
+// Screenshots wait for the panels to settle: ImGui sizes tables and scrolls to the cursor over a frame.
+constexpr int settle_frames = 2;
+
+class Host final : public inspect::ActionHost {
+public:
+    explicit Host(SceneCamera& camera) : camera_(camera) {}
+
+    void view(const std::string& plane) override {
+        camera_.plane = plane == "top"    ? ViewPlane::top
+                        : plane == "side" ? ViewPlane::side
+                        : plane == "3d"   ? ViewPlane::perspective
+                                          : ViewPlane::front;
+    }
+    void screenshot(const std::string& path) override {
+        pending_ = path;
+        settle_ = settle_frames;
+    }
+    void quit() override { quit_ = true; }
+
+    bool quitting() const { return quit_; }
+    bool waiting() const { return pending_.has_value(); }
+    // Whether this frame is the one to read back; counts the settling frames down.
+    bool capture_now() { return pending_ && settle_-- <= 0; }
+    std::string take() {
+        std::string path = *pending_;
+        pending_.reset();
+        return path;
+    }
+
+private:
+    SceneCamera& camera_;
+    std::optional<std::string> pending_;
+    int settle_ = 0;
+    bool quit_ = false;
+};
+
+double percentile(std::vector<double> sorted, double p) {
+    std::sort(sorted.begin(), sorted.end());
+    const double rank = p / 100.0 * static_cast<double>(sorted.size() - 1);
+    const auto low = static_cast<std::size_t>(rank);
+    const std::size_t high = std::min(low + 1, sorted.size() - 1);
+    return sorted[low] + (sorted[high] - sorted[low]) * (rank - static_cast<double>(low));
+}
+
+void print_bench(std::ostream& out, const InspectorRun& run, const std::vector<double>& ms, const Trace& trace) {
+    const ImDrawData* drawn = ImGui::GetDrawData();
+    int draw_calls = 0;
+    for (int i = 0; drawn && i < drawn->CmdListsCount; ++i) draw_calls += drawn->CmdLists[i]->CmdBuffer.Size;
+    const int vertices = drawn ? drawn->TotalVtxCount : 0;
+    std::size_t contacts = 0, iterations = 0;
+    for (const FrameRecord& f : trace.frames)
+        contacts += f.contacts.size(), iterations += f.position.iterations.size() + f.velocity.iterations.size();
+    char line[512];
+    std::snprintf(
+        line, sizeof line,
+        "bench: %zu frames at %dx%d %s, one derivation step per frame; trace: %zu frame(s), %zu contacts, "
+        "%zu iterations\n"
+        "  opened in %.0f ms\n"
+        "  frame time ms: p50 %.2f  p90 %.2f  p99 %.2f  max %.2f  mean %.2f  (last frame: %d vertices, %d draw "
+        "calls)\n",
+        ms.size(), run.width, run.height, run.headless ? "headless" : "in a window", trace.frames.size(), contacts,
+        iterations, run.load_seconds * 1e3, percentile(ms, 50), percentile(ms, 90), percentile(ms, 99),
+        *std::max_element(ms.begin(), ms.end()),
+        std::accumulate(ms.begin(), ms.end(), 0.0) / static_cast<double>(ms.size()), vertices, draw_calls);
+    out << line;
+}
+
+}  // namespace
+
+int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostream& out, std::ostream& err) {
+    // Every file the run will write must be writable before anything is shown or written.
+    try {
+        for (const inspect::Action& a : run.script)
+            if (a.kind == inspect::ActionKind::screenshot || a.kind == inspect::ActionKind::export_trace ||
+                a.kind == inspect::ActionKind::export_table)
+                io::check_writable(a.argument, run.script_name + ": line " + std::to_string(a.line));
+        if (run.screenshot) io::check_writable(*run.screenshot, "--screenshot");
+    } catch (const io::InputError& e) {
+        err << "impulse-lab: " << e.what() << '\n';
+        return 2;
+    }
+
+    std::optional<Display> display;
+    try {
+        display.emplace(DisplayOptions{run.headless, run.width, run.height, "Impulse Lab — " + session.path()});
+    } catch (const DisplayError& e) {
+        err << "impulse-lab: inspect: " << e.what() << '\n';
+        return 2;
+    }
+    if (!display->font_note().empty()) err << "impulse-lab: note: " << display->font_note() << '\n';
+
+    std::deque<inspect::Action> queue(run.script.begin(), run.script.end());
+    if (run.screenshot) queue.push_back({inspect::ActionKind::screenshot, *run.screenshot, 1, 0});
+    // Headless, or after a final screenshot, the inspector closes once everything asked for is done.
+    const bool close_when_done = run.headless || run.screenshot.has_value();
+
+    UiState state;
+    Host host(state.camera);
+    Pixels pixels;
+    // ImGui settles a layout over a couple of frames after any input, so a window only idles after a few.
+    int busy_frames = 3;
+    while (display->begin_frame(queue.empty() && !host.waiting() && busy_frames <= 0)) {
+        busy_frames = display->had_events() ? 3 : busy_frames - 1;
+        state.pressed_keys = display->pressed_keys();
+        draw_inspector(session, state, host);
+        const bool capture = host.capture_now();
+        display->end_frame(capture ? &pixels : nullptr);
+        if (capture) {
+            const std::string path = host.take();
+            try {
+                io::write_file_atomically(path, encode_png(pixels), path);
+            } catch (const std::exception& e) {
+                // A script's or --screenshot's failure ends the run; the window's button reports it and goes on.
+                if (close_when_done || !queue.empty()) {
+                    err << "impulse-lab: " << e.what() << '\n';
+                    return 2;
+                }
+                state.message = e.what();
+                state.message_is_error = true;
+            }
+        }
+        if (host.quitting()) break;
+        if (host.waiting()) continue;
+        if (queue.empty()) {
+            if (close_when_done) break;
+            continue;
+        }
+        const inspect::Action action = queue.front();
+        queue.pop_front();
+        const std::string where =
+            action.line > 0 ? run.script_name + ": line " + std::to_string(action.line) : std::string("--screenshot");
+        try {
+            inspect::perform(session, action, where, &host);
+        } catch (const io::InputError& e) {
+            err << "impulse-lab: " << e.what() << '\n';
+            return 2;
+        }
+    }
+
+    if (run.bench_frames) {
+        std::vector<double> ms;
+        ms.reserve(static_cast<std::size_t>(*run.bench_frames));
+        for (int i = 0; i < *run.bench_frames; ++i) {
+            const auto start = std::chrono::steady_clock::now();
+            // Every frame moves one step (wrapping at the end), so each rebuilds the views: the worst case.
+            if (session.cursor()) {
+                std::optional<inspect::Cursor> next = inspect::next_step(session.trace(), *session.cursor());
+                if (!next) next = inspect::first_cursor(session.trace());
+                session.move_to(*next);
+            }
+            if (!display->begin_frame()) break;
+            draw_inspector(session, state, host);
+            display->end_frame();
+            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
+        if (!ms.empty()) print_bench(out, run, ms, session.trace());
+    }
+    return 0;
+}
+
+}  // namespace impulse::gui

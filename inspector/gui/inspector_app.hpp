@@ -1,0 +1,31 @@
+#pragma once
+// Runs the inspector on an open session: in a window until it is closed, or headless for a script, a
+// screenshot or a frame-time benchmark. Scripts run one action per frame, so in a window they can be
+// watched; a screenshot is taken after the panels have settled.
+
+#include "model/script.hpp"
+#include "model/session.hpp"
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace impulse::gui {
+
+struct InspectorRun {
+    bool headless = false;
+    int width = 1280;
+    int height = 800;
+    std::string script_name;                // for errors: "steps.txt"
+    std::vector<inspect::Action> script;    // run first, in order
+    std::optional<std::string> screenshot;  // taken after the script; then the inspector closes
+    std::optional<int> bench_frames;        // then render this many frames, one step apart, and print times
+    double load_seconds = 0.0;              // how long opening the file took, for the benchmark's report
+};
+
+// Returns the exit code. Bad script actions and unwritable outputs are reported as one line on `err`
+// (exit 2); a window that cannot be opened likewise.
+int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostream& out, std::ostream& err);
+
+}  // namespace impulse::gui

@@ -1,0 +1,109 @@
+#include "gui/panels.hpp"
+
+#include "explain/format.hpp"
+
+#include <imgui.h>
+
+namespace impulse::gui {
+
+namespace {
+
+using inspect::Cursor;
+using inspect::Stage;
+
+std::string body_label(const Trace& trace, int body) {
+    return body == world_body ? std::string("world") : trace.scene.body_names[static_cast<std::size_t>(body)];
+}
+
+std::string item_label(const Trace& trace, const FrameRecord& frame, Stage stage, int item) {
+    const auto i = static_cast<std::size_t>(item);
+    if (stage == Stage::preparation) {
+        const ContactPreparation& c = frame.contacts[i];
+        return "contact " + std::to_string(c.contact) + " · " + body_label(trace, c.bodies[0]) + " / " +
+               body_label(trace, c.bodies[1]);
+    }
+    if (stage == Stage::position) {
+        const PositionIteration& it = frame.position.iterations[i];
+        return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) + " (" +
+               explain::number(it.penetration) + " m)";
+    }
+    const VelocityIteration& it = frame.velocity.iterations[i];
+    return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) + " (Δv " +
+           explain::number(it.desired_delta_velocity) + " m/s)";
+}
+
+std::string stage_label(const FrameRecord& frame, Stage stage) {
+    const int n = inspect::item_count(frame, stage);
+    if (stage == Stage::preparation)
+        return "Preparation: " + std::to_string(n) + (n == 1 ? " contact" : " contacts") + ", steps 1-5";
+    const PhaseOutcome& o = stage == Stage::position ? frame.position.outcome : frame.velocity.outcome;
+    return std::string(stage == Stage::position ? "Position phase: " : "Velocity phase: ") + std::to_string(n) +
+           " of " + std::to_string(o.iteration_limit) + " iterations";
+}
+
+// The items of one stage, clipped so a stage of thousands of iterations costs only the visible rows.
+void draw_items(inspect::Session& session, UiState& state, int f, Stage stage) {
+    const Trace& trace = session.trace();
+    const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
+    const Cursor& at = *session.cursor();
+    const bool here = at.frame == f && at.stage == stage;
+    ImGuiListClipper clipper;
+    clipper.Begin(inspect::item_count(frame, stage));
+    if (here && state.views.scroll_to_cursor) clipper.ForceDisplayRangeByIndices(at.item, at.item + 1);
+    while (clipper.Step())
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+            const bool current = here && at.item == i;
+            ImGui::PushID(i);
+            if (ImGui::Selectable(item_label(trace, frame, stage, i).c_str(), current))
+                session.move_to(Cursor{f, stage, i, 0});
+            if (current && state.views.scroll_to_cursor) ImGui::SetScrollHereY(0.4f);
+            ImGui::PopID();
+        }
+}
+
+}  // namespace
+
+void draw_navigator(inspect::Session& session, UiState& state) {
+    if (!session.cursor()) {
+        ImGui::TextWrapped("The trace records nothing to step through: no contact in the recorded frames.");
+        return;
+    }
+    const Trace& trace = session.trace();
+    const float steps_height = ImGui::GetTextLineHeightWithSpacing() * 7.5f;
+    ImGui::BeginChild("tree", ImVec2(0, -steps_height), false);
+    for (int f = 0; f < static_cast<int>(trace.frames.size()); ++f) {
+        const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
+        const Cursor& at = *session.cursor();
+        if (state.views.scroll_to_cursor && at.frame == f) ImGui::SetNextItemOpen(true);
+        ImGui::PushID(f);
+        const std::string label = "Frame " + std::to_string(frame.frame) + " (" + std::to_string(frame.contact_count) +
+                                  (frame.contact_count == 1 ? " contact)" : " contacts)");
+        if (ImGui::TreeNodeEx("frame", at.frame == f ? ImGuiTreeNodeFlags_Selected : 0, "%s", label.c_str())) {
+            for (Stage stage : inspect::stages(frame)) {
+                ImGui::PushID(static_cast<int>(stage));
+                if (state.views.scroll_to_cursor && at.frame == f && at.stage == stage) ImGui::SetNextItemOpen(true);
+                if (ImGui::TreeNode("stage", "%s", stage_label(frame, stage).c_str())) {
+                    draw_items(session, state, f, stage);
+                    ImGui::TreePop();
+                }
+                ImGui::PopID();
+            }
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    ImGui::EndChild();
+
+    ImGui::Separator();
+    ImGui::TextDisabled("Derivation steps of this item");
+    const Cursor at = *session.cursor();
+    const std::vector<explain::StepTable>& steps = state.views.steps;
+    for (int s = 0; s < static_cast<int>(steps.size()); ++s) {
+        ImGui::PushID(1000000 + s);
+        if (ImGui::Selectable(steps[static_cast<std::size_t>(s)].title.c_str(), at.step == s))
+            session.move_to(Cursor{at.frame, at.stage, at.item, s});
+        ImGui::PopID();
+    }
+}
+
+}  // namespace impulse::gui

@@ -1,0 +1,32 @@
+#pragma once
+// The inspector's panels, each drawn into the current ImGui window by one function. The layout
+// (inspector_window.cpp) places them; all of them read `state.views`, rebuilt once per cursor move.
+
+#include "gui/ui_state.hpp"
+
+namespace impulse::gui {
+
+// Buttons for every move, the location, the status message; and the keys: ←/→ step, ↑/↓ item,
+// PgUp/PgDn phase, Home/End first/last.
+void draw_toolbar(inspect::Session& session, UiState& state, inspect::ActionHost& host);
+// Frame → phase → iteration or contact, and the current item's derivation steps.
+void draw_navigator(inspect::Session& session, UiState& state);
+// The derivation table at the cursor: quantity, value, other frame, formula, equation, meaning.
+void draw_derivation(const inspect::Session& session, UiState& state);
+// The bodies, contacts, normals, impulses and penetrations, in a chosen plane or a rotatable view.
+void draw_scene_view(const inspect::Session& session, UiState& state);
+// Every contact with its bookkeeping and status; clicking one goes to it.
+void draw_contacts(inspect::Session& session, UiState& state);
+// Each body before and after the cursor's item.
+void draw_bodies(const inspect::Session& session, UiState& state);
+// The worst value against iteration, per phase, with the epsilon and the cursor marked.
+void draw_plots(const inspect::Session& session, UiState& state);
+// Preset, methods, limit policy, epsilons, iteration limits: a change re-runs the scene.
+void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHost& host);
+// Trace JSON, table CSV and screenshot PNG to the paths typed in.
+void draw_export(inspect::Session& session, UiState& state, inspect::ActionHost& host);
+
+// The whole window: every panel in its place for the current display size.
+void draw_inspector(inspect::Session& session, UiState& state, inspect::ActionHost& host);
+
+}  // namespace impulse::gui

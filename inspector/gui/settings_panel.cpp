@@ -1,0 +1,104 @@
+// The settings a student changes to see what they do, and the exports. A change is an action like
+// `set NAME VALUE` in a script: the scene runs again and the cursor stays on the same contact and step.
+
+#include "explain/format.hpp"
+#include "gui/panels.hpp"
+#include "resolver/settings_names.hpp"
+
+#include <imgui.h>
+
+#include <cstdio>
+
+namespace impulse::gui {
+
+namespace {
+
+void set(inspect::Session& session, UiState& state, inspect::ActionHost& host, const std::string& name,
+         const std::string& value) {
+    act(session, state, inspect::Action{inspect::ActionKind::set, name + "=" + value}, host);
+}
+
+template <typename Enum, std::size_t N>
+void enum_combo(inspect::Session& session, UiState& state, inspect::ActionHost& host, const char* label,
+                const std::string& name, const NameTable<Enum, N>& names, Enum current) {
+    const std::string shown(name_of(names, current));
+    if (!ImGui::BeginCombo(label, shown.c_str())) return;
+    for (const auto& [value, text] : names)
+        if (ImGui::Selectable(std::string(text).c_str(), value == current) && value != current)
+            set(session, state, host, name, std::string(text));
+    ImGui::EndCombo();
+}
+
+// A number applied when Enter is pressed, so typing does not re-run the scene at every key.
+void number_field(inspect::Session& session, UiState& state, inspect::ActionHost& host, const char* label,
+                  const std::string& name, double current) {
+    double value = current;
+    if (ImGui::InputDouble(label, &value, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue) && value != current) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.17g", value);
+        set(session, state, host, name, text);
+    }
+}
+
+void integer_field(inspect::Session& session, UiState& state, inspect::ActionHost& host, const char* label,
+                   const std::string& name, int current) {
+    int value = current;
+    if (ImGui::InputInt(label, &value, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) && value != current)
+        set(session, state, host, name, std::to_string(value));
+}
+
+}  // namespace
+
+void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHost& host) {
+    const ResolverSettings s = session.settings();  // a copy: a change re-runs and replaces the trace
+    ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
+    if (ImGui::BeginCombo("preset", s.preset.c_str())) {
+        for (std::string_view name : preset_names())
+            if (ImGui::Selectable(std::string(name).c_str(), name == s.preset))
+                set(session, state, host, "preset", std::string(name));
+        ImGui::EndCombo();
+    }
+    enum_combo(session, state, host, "phase order", "phase_order", phase_order_names, s.phase_order);
+    enum_combo(session, state, host, "position method", "position_method", position_method_names, s.position_method);
+    enum_combo(session, state, host, "velocity method", "velocity_method", velocity_method_names, s.velocity_method);
+    enum_combo(session, state, host, "angular limit", "angular_limit.policy", angular_limit_policy_names,
+               s.angular_limit.policy);
+    number_field(session, state, host, "limit factor", "angular_limit.factor", s.angular_limit.factor);
+    number_field(session, state, host, "position ε (m)", "position_epsilon", s.position_epsilon);
+    number_field(session, state, host, "velocity ε (m/s)", "velocity_epsilon", s.velocity_epsilon);
+    integer_field(session, state, host, "iterations/contact", "iterations_per_contact", s.iterations.per_contact);
+    if (s.position_method == PositionMethod::relaxation) {
+        number_field(session, state, host, "relaxation fraction", "relaxation.fraction", s.relaxation.fraction);
+        integer_field(session, state, host, "relaxation passes", "relaxation.passes", s.relaxation.passes);
+    }
+    number_field(session, state, host, "restitution cut-off", "restitution_cutoff", s.refinements.restitution_cutoff);
+    enum_combo(session, state, host, "orientation update", "orientation_update", orientation_update_names,
+               s.orientation_update);
+    ImGui::PopItemWidth();
+    ImGui::TextDisabled("A change re-runs %s.", session.kind() == inspect::SourceKind::scene_file ? "the scene"
+                                                : session.kind() == inspect::SourceKind::case_file
+                                                    ? "the case"
+                                                    : "the trace's scene");
+}
+
+void draw_export(inspect::Session& session, UiState& state, inspect::ActionHost& host) {
+    using inspect::ActionKind;
+    struct Row {
+        const char* button;
+        ActionKind kind;
+        std::array<char, 512>* path;
+    };
+    const Row rows[] = {{"Export trace", ActionKind::export_trace, &state.trace_path},
+                        {"Export table", ActionKind::export_table, &state.table_path},
+                        {"Screenshot", ActionKind::screenshot, &state.screenshot_path}};
+    for (const Row& r : rows) {
+        ImGui::PushID(r.button);
+        if (ImGui::Button(r.button, ImVec2(110, 0))) act(session, state, {r.kind, std::string(r.path->data())}, host);
+        ImGui::SameLine();
+        ImGui::SetNextItemWidth(-1);
+        ImGui::InputText("##path", r.path->data(), r.path->size());
+        ImGui::PopID();
+    }
+}
+
+}  // namespace impulse::gui

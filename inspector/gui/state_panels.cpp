@@ -1,0 +1,204 @@
+// The state of the frame at the cursor: the contacts list, the bodies before and after, the phase plots.
+
+#include "explain/format.hpp"
+#include "gui/fonts.hpp"
+#include "gui/panels.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <initializer_list>
+#include <cmath>
+
+namespace impulse::gui {
+
+namespace {
+
+ImVec4 status_colour(inspect::ContactStatus status) {
+    switch (status) {
+        case inspect::ContactStatus::chosen:
+            return {1.0f, 0.9f, 0.25f, 1.0f};
+        case inspect::ContactStatus::waiting:
+            return {0.95f, 0.55f, 0.25f, 1.0f};
+        case inspect::ContactStatus::below_epsilon:
+            return {0.55f, 0.78f, 0.55f, 1.0f};
+    }
+    return {1, 1, 1, 1};
+}
+
+// Goes to a contact: in the preparation, its steps; in a phase, the first iteration that resolves it.
+void go_to_contact(inspect::Session& session, int row, int contact) {
+    const inspect::Cursor at = *session.cursor();
+    if (at.stage != inspect::Stage::preparation) {
+        const Trace& trace = session.trace();
+        const FrameRecord& frame = trace.frames[static_cast<std::size_t>(at.frame)];
+        for (int i = 0; i < inspect::item_count(frame, at.stage); ++i)
+            if (inspect::contact_at(trace, inspect::Cursor{at.frame, at.stage, i, 0}) == contact) {
+                session.move_to(inspect::Cursor{at.frame, at.stage, i, 0});
+                return;
+            }
+    }
+    session.move_to(inspect::Cursor{at.frame, inspect::Stage::preparation, row, 0});
+}
+
+// "a → b" when the value changed, else "a".
+std::string change_text(const Vec3& before, const Vec3& after) {
+    return before == after ? explain::vector(after) : explain::vector(before) + " → " + explain::vector(after);
+}
+std::string change_text(const Quat& before, const Quat& after) {
+    return explain::quaternion(before) + " → " + explain::quaternion(after);
+}
+
+struct Column {
+    const char* name;
+    float weight;
+};
+
+// A scrolling list with a frozen header row, its columns sharing the width by weight.
+bool begin_list_table(const char* id, std::initializer_list<Column> columns) {
+    constexpr ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV |
+                                      ImGuiTableFlags_SizingStretchProp;
+    if (!ImGui::BeginTable(id, static_cast<int>(columns.size()), flags)) return false;
+    ImGui::TableSetupScrollFreeze(0, 1);
+    for (const Column& c : columns) ImGui::TableSetupColumn(c.name, ImGuiTableColumnFlags_WidthStretch, c.weight);
+    ImGui::TableHeadersRow();
+    return true;
+}
+
+std::string body_label(const Trace& trace, int body) {
+    return body == world_body ? std::string("world") : trace.scene.body_names[static_cast<std::size_t>(body)];
+}
+
+}  // namespace
+
+void draw_contacts(inspect::Session& session, UiState& state) {
+    const CursorViews& v = state.views;
+    if (!v.cursor) return;
+    const Trace& trace = session.trace();
+    const int current = inspect::contact_at(trace, *v.cursor);
+    ImGui::TextDisabled("Before this item, status in the %s phase. Click to go.",
+                        v.cursor->stage == inspect::Stage::velocity   ? "velocity"
+                        : v.cursor->stage == inspect::Stage::position ? "position"
+                                                                      : "first");
+    if (!begin_list_table(
+            "contacts",
+            {{"#", 0.35f}, {"bodies", 1.2f}, {"pen. m", 0.9f}, {"Δv m/s", 0.9f}, {"|g| N s", 0.8f}, {"status", 0.75f}}))
+        return;
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(v.contacts.size()));
+    int current_row = -1;
+    for (std::size_t r = 0; r < v.contacts.size(); ++r)
+        if (v.contacts[r].contact == current) current_row = static_cast<int>(r);
+    if (current_row >= 0 && v.scroll_to_cursor) clipper.ForceDisplayRangeByIndices(current_row, current_row + 1);
+    while (clipper.Step())
+        for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
+            const inspect::ContactRow& row = v.contacts[static_cast<std::size_t>(r)];
+            ImGui::TableNextRow();
+            ImGui::TableSetColumnIndex(0);
+            ImGui::PushID(r);
+            const std::string id = std::to_string(row.contact);
+            if (ImGui::Selectable(id.c_str(), row.contact == current, ImGuiSelectableFlags_SpanAllColumns))
+                go_to_contact(session, r, row.contact);
+            if (row.contact == current && v.scroll_to_cursor) ImGui::SetScrollHereY(0.4f);
+            ImGui::PopID();
+            ImGui::TableSetColumnIndex(1);
+            ImGui::Text("%s / %s", body_label(trace, row.prepared->bodies[0]).c_str(),
+                        body_label(trace, row.prepared->bodies[1]).c_str());
+            ImGui::PushFont(value_font());
+            ImGui::TableSetColumnIndex(2);
+            ImGui::TextUnformatted(explain::number(row.penetration).c_str());
+            ImGui::TableSetColumnIndex(3);
+            ImGui::TextUnformatted(explain::number(row.desired_delta_velocity).c_str());
+            ImGui::TableSetColumnIndex(4);
+            ImGui::TextUnformatted(explain::number(row.impulse_so_far.norm()).c_str());
+            ImGui::PopFont();
+            ImGui::TableSetColumnIndex(5);
+            ImGui::TextColored(status_colour(row.status), "%s", std::string(inspect::status_name(row.status)).c_str());
+        }
+    ImGui::EndTable();
+}
+
+void draw_bodies(const inspect::Session& session, UiState& state) {
+    const CursorViews& v = state.views;
+    if (!v.cursor) return;
+    const Trace& trace = session.trace();
+    if (!v.bodies.exact)
+        ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.4f, 1.0f),
+                           "Frame start and end only: the recording's contact filter left out a move.");
+    if (!begin_list_table(
+            "bodies",
+            {{"body", 0.6f}, {"position m (before → after)", 2.0f}, {"velocity m/s, ω rad/s (before → after)", 2.0f}}))
+        return;
+    std::vector<char> moved(v.bodies.after.size(), 0);
+    for (int b : v.bodies.moved) moved[static_cast<std::size_t>(b)] = 1;
+    ImGuiListClipper clipper;
+    clipper.Begin(static_cast<int>(v.bodies.after.size()));
+    while (clipper.Step())
+        for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+            const auto b = static_cast<std::size_t>(i);
+            const BodyState& before = v.bodies.before[b];
+            const BodyState& after = v.bodies.after[b];
+            ImGui::TableNextRow();
+            if (moved[b]) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(90, 60, 20, 255));
+            ImGui::TableSetColumnIndex(0);
+            ImGui::TextUnformatted(trace.scene.body_names[b].c_str());
+            ImGui::PushFont(value_font());
+            ImGui::TableSetColumnIndex(1);
+            ImGui::TextWrapped("%s", change_text(before.position, after.position).c_str());
+            if (before.orientation.coeffs() != after.orientation.coeffs())
+                ImGui::TextWrapped("q %s", change_text(before.orientation, after.orientation).c_str());
+            ImGui::TableSetColumnIndex(2);
+            ImGui::TextWrapped("v %s", change_text(before.velocity, after.velocity).c_str());
+            ImGui::TextWrapped("ω %s", change_text(before.angular_velocity, after.angular_velocity).c_str());
+            ImGui::PopFont();
+        }
+    ImGui::EndTable();
+}
+
+void draw_plots(const inspect::Session& /*session*/, UiState& state) {
+    const CursorViews& v = state.views;
+    if (!v.cursor) return;
+    if (v.curves.empty()) {
+        ImGui::TextDisabled("No iterations in this frame: every contact was below ε.");
+        return;
+    }
+    const float width = ImGui::GetContentRegionAvail().x / static_cast<float>(v.curves.size()) - 8.0f;
+    const float height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing(), 30.0f);
+    for (std::size_t k = 0; k < v.curves.size(); ++k) {
+        const inspect::PhaseCurve& c = v.curves[k];
+        if (k > 0) ImGui::SameLine();
+        ImGui::BeginGroup();
+        const bool position = c.stage == inspect::Stage::position;
+        ImGui::Text("%s: worst %s", position ? "positions" : "velocities", position ? "penetration (m)" : "Δv (m/s)");
+        const ImVec2 a = ImGui::GetCursorScreenPos();
+        const ImVec2 b(a.x + width, a.y + height);
+        ImGui::Dummy(ImVec2(width, height));
+        ImDrawList* draw = ImGui::GetWindowDrawList();
+        draw->AddRectFilled(a, b, IM_COL32(24, 26, 32, 255));
+        const double top = std::max(*std::max_element(c.worst.begin(), c.worst.end()), c.epsilon) * 1.1;
+        const auto y_of = [&](double value) { return b.y - static_cast<float>(value / top) * (height - 4.0f) - 2.0f; };
+        const auto x_of = [&](std::size_t i) {
+            return a.x + 2.0f +
+                   (width - 4.0f) * (c.worst.size() > 1 ? static_cast<float>(i) / (c.worst.size() - 1) : 0.5f);
+        };
+        draw->AddLine(ImVec2(a.x, y_of(c.epsilon)), ImVec2(b.x, y_of(c.epsilon)), IM_COL32(130, 190, 130, 200), 1.0f);
+        // Thousands of iterations: at most one line segment per pixel column is drawn.
+        const std::size_t stride =
+            std::max<std::size_t>(1, c.worst.size() / static_cast<std::size_t>(std::max(width, 1.0f)));
+        for (std::size_t i = stride; i < c.worst.size(); i += stride)
+            draw->AddLine(ImVec2(x_of(i - stride), y_of(c.worst[i - stride])), ImVec2(x_of(i), y_of(c.worst[i])),
+                          IM_COL32(240, 160, 70, 255), 1.5f);
+        if (c.worst.size() == 1)
+            draw->AddCircleFilled(ImVec2(x_of(0), y_of(c.worst[0])), 3.0f, IM_COL32(240, 160, 70, 255));
+        if (v.cursor->stage == c.stage) {
+            const auto i = static_cast<std::size_t>(v.cursor->item);
+            draw->AddLine(ImVec2(x_of(i), a.y), ImVec2(x_of(i), b.y), IM_COL32(255, 230, 60, 160), 1.0f);
+            draw->AddCircleFilled(ImVec2(x_of(i), y_of(c.worst[i])), 4.0f, IM_COL32(255, 230, 60, 255));
+        }
+        draw->AddText(ImVec2(a.x + 4, a.y + 2), IM_COL32(200, 200, 200, 255), explain::number(top).c_str());
+        draw->AddText(ImVec2(b.x - 70, y_of(c.epsilon) - 16), IM_COL32(130, 190, 130, 255), "ε");
+        ImGui::EndGroup();
+    }
+}
+
+}  // namespace impulse::gui

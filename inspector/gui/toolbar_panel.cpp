@@ -1,0 +1,80 @@
+#include "gui/panels.hpp"
+
+#include <SDL.h>
+#include <imgui.h>
+
+namespace impulse::gui {
+
+namespace {
+
+using inspect::Action;
+using inspect::ActionKind;
+
+struct Button {
+    const char* label;
+    ActionKind kind;
+    const char* tip;
+};
+
+constexpr Button buttons[] = {
+    {"|◀ First", ActionKind::first, "The first step of the trace (Home)"},
+    {"◀◀ Phase", ActionKind::previous_phase, "The start of this phase, or the previous phase (Page Up)"},
+    {"◀ Iteration", ActionKind::previous_iteration, "The previous iteration (↑ moves by item: iteration or contact)"},
+    {"◀ Contact", ActionKind::previous_contact, "The previous contact"},
+    {"◀ Step", ActionKind::previous_step, "The previous derivation step (←)"},
+    {"Step ▶", ActionKind::next_step, "The next derivation step (→)"},
+    {"Contact ▶", ActionKind::next_contact, "The next contact (in a phase: the next iteration on another contact)"},
+    {"Iteration ▶", ActionKind::next_iteration, "The next iteration (↓ moves by item: iteration or contact)"},
+    {"Phase ▶▶", ActionKind::next_phase, "The next phase (Page Down)"},
+    {"Last ▶|", ActionKind::last, "The last step of the trace (End)"},
+};
+
+// The move a navigation key makes; count 0 for any other key.
+Action key_action(int scancode) {
+    struct Key {
+        SDL_Scancode key;
+        ActionKind kind;
+    };
+    constexpr Key keys[] = {
+        {SDL_SCANCODE_RIGHT, ActionKind::next_step},     {SDL_SCANCODE_LEFT, ActionKind::previous_step},
+        {SDL_SCANCODE_DOWN, ActionKind::next_item},      {SDL_SCANCODE_UP, ActionKind::previous_item},
+        {SDL_SCANCODE_PAGEDOWN, ActionKind::next_phase}, {SDL_SCANCODE_PAGEUP, ActionKind::previous_phase},
+        {SDL_SCANCODE_HOME, ActionKind::first},          {SDL_SCANCODE_END, ActionKind::last},
+    };
+    for (const Key& k : keys)
+        if (scancode == k.key) return {k.kind};
+    return {ActionKind::quit, {}, 0};
+}
+
+}  // namespace
+
+void draw_toolbar(inspect::Session& session, UiState& state, inspect::ActionHost& host) {
+    for (const Button& b : buttons) {
+        if (ImGui::Button(b.label)) act(session, state, Action{b.kind}, host);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", b.tip);
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+    // Keys move the cursor unless the user is typing in a field (a setting, an export path).
+    if (!ImGui::GetIO().WantTextInput)
+        for (int key : state.pressed_keys)
+            if (const Action pressed = key_action(key); pressed.count > 0) act(session, state, pressed, host);
+    state.pressed_keys.clear();
+    const CursorViews& v = state.views;
+    ImGui::TextUnformatted(session.path().c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("·");
+    ImGui::SameLine();
+    if (v.cursor)
+        ImGui::Text("%s   (step %d of %d)", v.derivation.where.c_str(), v.derivation.step_index + 1,
+                    v.derivation.step_count);
+    else
+        ImGui::TextUnformatted("nothing recorded to step through");
+    if (!state.message.empty()) {
+        ImGui::SameLine(0.0f, 24.0f);
+        ImGui::TextColored(state.message_is_error ? ImVec4(1.0f, 0.45f, 0.4f, 1.0f) : ImVec4(0.5f, 0.9f, 0.5f, 1.0f),
+                           "%s", state.message.c_str());
+    }
+}
+
+}  // namespace impulse::gui

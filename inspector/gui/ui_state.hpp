@@ -1,0 +1,61 @@
+#pragma once
+// What the window remembers between frames: the view of the scene, the export paths, the last message,
+// and the values rebuilt from the trace whenever the cursor or the trace changes (never every frame: a
+// fully recorded frame of the 1000-box grid has 4000 contacts).
+
+#include "model/derivation_view.hpp"
+#include "model/replay.hpp"
+#include "model/script.hpp"
+#include "model/session.hpp"
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impulse::gui {
+
+enum class ViewPlane { front, top, side, perspective };
+
+struct SceneCamera {
+    ViewPlane plane = ViewPlane::front;
+    float yaw = 0.6f;     // radians about +y, for the rotatable view
+    float pitch = 0.35f;  // radians about the view's x axis
+    float zoom = 1.0f;    // on top of the fit to the bodies
+    float pan_x = 0.0f;   // pixels
+    float pan_y = 0.0f;
+};
+
+// Everything derived from (trace, cursor), rebuilt only when either changes.
+struct CursorViews {
+    int revision = -1;
+    std::optional<inspect::Cursor> cursor;
+    inspect::DerivationView derivation;
+    std::vector<inspect::ContactRow> contacts;
+    inspect::BodiesAtCursor bodies;
+    std::vector<explain::StepTable> steps;  // of the cursor's item, for the navigator's step list
+    // Per frame: the phase curves and the largest impulse, which scales the impulse arrows.
+    int frame = -1;
+    std::vector<inspect::PhaseCurve> curves;
+    double largest_impulse = 0.0;
+    bool scroll_to_cursor = false;  // the panels bring the cursor's rows into view once after a move
+};
+
+struct UiState {
+    SceneCamera camera;
+    CursorViews views;
+    std::array<char, 512> trace_path{"trace.json"};
+    std::array<char, 512> table_path{"table.csv"};
+    std::array<char, 512> screenshot_path{"screenshot.png"};
+    std::vector<int> pressed_keys;  // SDL scancodes pressed since the last frame, for the navigation keys
+    std::string message;            // the last export's or setting's outcome, shown in the status line
+    bool message_is_error = false;
+};
+
+// Rebuilds `state.views` if the session's trace or cursor changed since the last call.
+void refresh_views(const inspect::Session& session, UiState& state);
+
+// Carries out an action from a key or a button; an error becomes the status message instead of an exit.
+void act(inspect::Session& session, UiState& state, const inspect::Action& action, inspect::ActionHost& host);
+
+}  // namespace impulse::gui

@@ -1,0 +1,71 @@
+#pragma once
+// The inspector's actions, one per line of a --script file and one per key or button in the window:
+//   next step | prev step | next contact | prev contact | next iteration | prev iteration
+//   next item | prev item (a contact in the preparation, an iteration in a phase)
+//   next phase | prev phase | first | last          (an optional count repeats a move: next step 3)
+//   goto frame=F,phase=velocity,iteration=I,contact=C,step=NAME
+//   set <setting> <value>                           (as --set setting=value; re-runs the scene)
+//   view front|top|side|3d                         (the scene view's plane, or the rotatable view)
+//   screenshot FILE.png | export trace FILE.json | export table FILE.csv | quit
+// Blank lines and lines starting with # are ignored. Paths are relative to the working directory.
+
+#include "model/session.hpp"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impulse::inspect {
+
+enum class ActionKind {
+    next_step,
+    previous_step,
+    next_contact,
+    previous_contact,
+    next_iteration,
+    previous_iteration,
+    next_item,
+    previous_item,
+    next_phase,
+    previous_phase,
+    first,
+    last,
+    go_to,
+    set,
+    view,
+    screenshot,
+    export_trace,
+    export_table,
+    quit,
+};
+
+struct Action {
+    ActionKind kind;
+    std::string argument = {};  // the goto spec, the setting's "name=value", or the file
+    int count = 1;              // how many times a move repeats
+    int line = 0;               // in the script, for errors (0 = not from a script)
+};
+
+// Throws io::InputError("line N", ...) for the first line that is not an action.
+std::vector<Action> parse_script(std::string_view text);
+// One action from its text, as typed in a script line.
+Action parse_action(std::string_view text, int line);
+
+// What only the window can do. Null in tests: a screenshot then fails with a clear error.
+class ActionHost {
+public:
+    virtual ~ActionHost() = default;
+    virtual void screenshot(const std::string& path) = 0;
+    virtual void view(const std::string& plane) = 0;  // front, top, side or 3d
+    virtual void quit() = 0;
+};
+
+// Carries out one action. A move that would leave the trace, a bad goto or setting, or an unwritable file
+// throws io::InputError(where, ...) and changes nothing.
+void perform(Session& session, const Action& action, std::string_view where, ActionHost* host);
+
+// The file an export writes: the trace as JSON, or the derivation table at the cursor as CSV.
+std::string exported_trace(const Session& session);
+std::string exported_table(const Session& session);
+
+}  // namespace impulse::inspect

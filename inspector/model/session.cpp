@@ -1,0 +1,96 @@
+#include "model/session.hpp"
+
+#include "cli/input_files.hpp"
+#include "io/input_error.hpp"
+#include "io/json_text.hpp"
+#include "io/scene_file.hpp"
+#include "io/settings_json.hpp"
+#include "io/trace_json.hpp"
+#include "model/runs.hpp"
+
+#include <algorithm>
+
+namespace impulse::inspect {
+
+namespace {
+
+bool is_trace(const nlohmann::ordered_json& document) {
+    return document.is_object() && document.contains("format") && document["format"] == io::trace_format_name;
+}
+
+}  // namespace
+
+Session Session::open(const std::string& path, const OpenOptions& options) {
+    Session s;
+    s.path_ = path;
+    nlohmann::ordered_json document;
+    try {
+        document = io::parse_json_text(cli::read_input_file(path));
+        if (is_trace(document)) {
+            s.kind_ = SourceKind::trace_file;
+            s.trace_ = io::read_trace(document);
+        } else {
+            s.scene_ = io::read_scene(document, options.preset);
+            s.kind_ = s.scene_.contacts.empty() ? SourceKind::scene_file : SourceKind::case_file;
+        }
+    } catch (const io::InputError& e) {
+        throw cli::FileError{path, e.where(), e.problem()};
+    }
+    document = {};
+
+    for (const std::string& spec : options.record) cli::apply_record_spec(spec, s.recording_);
+    if (s.kind_ == SourceKind::trace_file) {
+        // A trace is shown as recorded; its header is what a changed setting re-runs.
+        if (options.preset || !options.settings.empty() || !options.record.empty() || options.frames)
+            throw io::InputError(
+                options.preset              ? "--preset"
+                : !options.settings.empty() ? "--set"
+                : options.frames            ? "--frames"
+                                            : "--record",
+                "a trace is shown as it was recorded; give a scene or case file to run it differently");
+        s.scene_ = s.trace_.scene;
+        s.recording_ = s.trace_.recording;
+        s.resolve_ = !s.scene_.contacts.empty();
+        s.frames_ = s.trace_.frames.empty() ? 1 : s.trace_.frames.back().frame + 1;
+    } else {
+        for (const std::string& assignment : options.settings) io::apply_setting(s.scene_, assignment, "--set");
+        s.resolve_ = s.kind_ == SourceKind::case_file;
+        if (options.frames && s.resolve_)
+            throw io::InputError("--frames",
+                                 "a case (a scene with contacts written in it) is resolved once; "
+                                 "--frames is for scenes that are simulated");
+        s.frames_ = options.frames ? *options.frames : std::min(s.scene_.world.frames, default_inspect_frames);
+        s.rerun();
+    }
+    s.cursor_ = first_cursor(s.trace_);
+    return s;
+}
+
+Session Session::from_trace(Trace trace, SourceKind kind, std::string path) {
+    Session s;
+    s.path_ = std::move(path);
+    s.kind_ = kind;
+    s.scene_ = trace.scene;
+    s.recording_ = trace.recording;
+    s.resolve_ = !trace.scene.contacts.empty();
+    s.frames_ = trace.frames.empty() ? 1 : trace.frames.back().frame + 1;
+    s.trace_ = std::move(trace);
+    s.cursor_ = first_cursor(s.trace_);
+    return s;
+}
+
+void Session::rerun() {
+    trace_ = resolve_ ? resolve_once(scene_, recording_) : run_frames(scene_, recording_, frames_);
+}
+
+void Session::set(std::string_view assignment, std::string_view where) {
+    Scene changed = scene_;
+    io::apply_setting(changed, assignment, where);
+    const std::optional<Location> here = cursor_ ? std::optional(location_of(trace_, *cursor_)) : std::nullopt;
+    scene_ = std::move(changed);
+    rerun();
+    ++revision_;
+    cursor_ = here ? nearest_cursor(trace_, *here) : first_cursor(trace_);
+}
+
+}  // namespace impulse::inspect

@@ -1,0 +1,66 @@
+#pragma once
+// What the inspector has open: the file's scene (or the trace's), the trace it made, and the cursor.
+// A setting changed in the window or a script re-runs the scene and brings the cursor back to the same
+// place where that still exists. No rendering here, so the tests drive it exactly as the window does.
+
+#include "model/navigator.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impulse::inspect {
+
+enum class SourceKind {
+    case_file,   // a scene with contacts written in it: resolved once (`resolve`)
+    scene_file,  // a scene without: simulated frame by frame (`run`)
+    trace_file,  // a recorded trace: shown as it is, re-run from its header when a setting changes
+};
+
+struct OpenOptions {
+    std::optional<std::string> preset;  // --preset
+    std::vector<std::string> settings;  // --set name=value, in order
+    std::vector<std::string> record;    // --record frames=A..B / contacts=I,J
+    std::optional<int> frames;          // frames to simulate for a scene (default: up to 60, the first second)
+};
+
+inline constexpr int default_inspect_frames = 60;
+
+class Session {
+public:
+    // Reads, checks and runs the file. Throws cli::FileError for a bad file and io::InputError for a bad
+    // flag, before anything is shown.
+    static Session open(const std::string& path, const OpenOptions& options);
+    // A session over a trace already in memory (tests, lessons).
+    static Session from_trace(Trace trace, SourceKind kind, std::string path);
+
+    const std::string& path() const { return path_; }
+    SourceKind kind() const { return kind_; }
+    const Trace& trace() const { return trace_; }
+    // None when the trace records nothing to step through (e.g. no contact in the recorded frames).
+    const std::optional<Cursor>& cursor() const { return cursor_; }
+    void move_to(const Cursor& cursor) { cursor_ = cursor; }
+
+    // Applies "name=value" as --set does (`where` names the source of the change in errors), re-runs, and
+    // keeps the cursor on the same frame, contact and step where they still exist.
+    void set(std::string_view assignment, std::string_view where);
+    // Counts re-runs, so views built from the trace know when to rebuild.
+    int revision() const { return revision_; }
+    // The settings as run (the trace's header).
+    const ResolverSettings& settings() const { return trace_.scene.settings; }
+
+private:
+    void rerun();
+
+    std::string path_;
+    SourceKind kind_ = SourceKind::case_file;
+    Scene scene_;  // what is re-run: the file's scene with the flags applied
+    TraceFilter recording_;
+    int frames_ = 1;       // scene and trace files: how many frames a re-run simulates
+    bool resolve_ = true;  // re-run by resolving the written contacts once, else by simulating frames
+    Trace trace_;
+    std::optional<Cursor> cursor_;
+    int revision_ = 0;
+};
+
+}  // namespace impulse::inspect

@@ -1,0 +1,230 @@
+// The inspector end to end, headless: SDL's offscreen driver renders the same frames the window shows.
+// These tests load Mesa through EGL, so they live in their own program (LeakSanitizer cannot see into
+// Mesa after it is unloaded; CMake turns leak checking off for this program only).
+
+#include "io/json_text.hpp"
+#include "io/scene_file.hpp"
+#include "io/trace_json.hpp"
+#include "model/runs.hpp"
+#include "support/run_cli.hpp"
+#include "support/temp_dir.hpp"
+
+#include <doctest/doctest.h>
+#include <stb_image.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <sstream>
+
+namespace impulse::test {
+
+namespace {
+
+const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
+const std::string sliding_box = IMPULSE_SOURCE_DIR "/scenes/cases/sliding_box.json";
+
+std::string read(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+};
+
+Image load_png(const std::filesystem::path& path) {
+    Image image;
+    int channels = 0;
+    std::unique_ptr<unsigned char, void (*)(void*)> data(
+        stbi_load(path.string().c_str(), &image.width, &image.height, &channels, 3), stbi_image_free);
+    REQUIRE_MESSAGE(data != nullptr, "not a PNG: " << path);
+    image.rgb.assign(data.get(), data.get() + static_cast<std::size_t>(image.width * image.height * 3));
+    return image;
+}
+
+std::size_t distinct_colours(const Image& image) {
+    std::set<unsigned> colours;
+    for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3)
+        colours.insert(image.rgb[i] << 16 | image.rgb[i + 1] << 8 | image.rgb[i + 2]);
+    return colours.size();
+}
+
+std::size_t differing_pixels(const Image& a, const Image& b) {
+    REQUIRE(a.rgb.size() == b.rgb.size());
+    std::size_t n = 0;
+    for (std::size_t i = 0; i + 2 < a.rgb.size(); i += 3)
+        n += (a.rgb[i] != b.rgb[i] || a.rgb[i + 1] != b.rgb[i + 1] || a.rgb[i + 2] != b.rgb[i + 2]) ? 1 : 0;
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("a headless script steps through the ruler case, exports, and the exported trace is the engine's") {
+    TempDir dir;
+    const auto script = dir.write("steps.txt",
+                                  "# from basis to angular change and back\n"
+                                  "next step 4\n"
+                                  "screenshot " +
+                                      dir.file("desired.png").string() +
+                                      "\n"
+                                      "goto phase=position,step=angular_change\n"
+                                      "screenshot " +
+                                      dir.file("angular.png").string() +
+                                      "\n"
+                                      "export table " +
+                                      dir.file("angular.csv").string() +
+                                      "\n"
+                                      "prev step 3\n"
+                                      "export trace " +
+                                      dir.file("trace.json").string() + "\n");
+    const CliResult r = run_cli({"inspect", ruler, "--headless", "--size", "1024x640", "--script", script.string()});
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+
+    // The trace written from the window is the one `resolve` writes.
+    const CliResult resolved = run_cli({"resolve", ruler, "--trace", dir.file("resolved.json").string()});
+    REQUIRE(resolved.code == 0);
+    CHECK(read(dir.file("trace.json")) == read(dir.file("resolved.json")));
+
+    // The table exported at angular_change ends with that step's rows, marked as changed.
+    const std::string csv = read(dir.file("angular.csv"));
+    CHECK(csv.starts_with("step,quantity,value,other_frame,formula,equation,meaning,changed\n"));
+    CHECK(csv.find("position_change,angular_change[0],") != std::string::npos);
+    CHECK(csv.find("basis,") == std::string::npos);  // an iteration's table starts from its choice, not step 1
+
+    const Image desired = load_png(dir.file("desired.png"));
+    const Image angular = load_png(dir.file("angular.png"));
+    CHECK(desired.width == 1024);
+    CHECK(desired.height == 640);
+    CHECK(angular.width == 1024);
+    CHECK(angular.height == 640);
+    // Not blank: text, panels and the scene make hundreds of colours (antialiasing included).
+    CHECK(distinct_colours(desired) > 200);
+    // Two different steps give different pictures, by more than a caret's worth of pixels.
+    CHECK(differing_pixels(desired, angular) > 5000);
+}
+
+TEST_CASE("the same step rendered twice gives the same pixels") {
+    TempDir dir;
+    for (const char* name : {"a.png", "b.png"}) {
+        const CliResult r =
+            run_cli({"inspect", sliding_box, "--headless", "--goto", "phase=velocity,iteration=1,step=impulse",
+                     "--screenshot", dir.file(name).string()});
+        REQUIRE(r.code == 0);
+    }
+    CHECK(differing_pixels(load_png(dir.file("a.png")), load_png(dir.file("b.png"))) == 0);
+}
+
+TEST_CASE("a changed setting re-runs the case and the screenshot shows the new run") {
+    TempDir dir;
+    const auto script = dir.write("s.txt",
+                                  "goto phase=position,step=move_split\n"
+                                  "screenshot " +
+                                      dir.file("limited.png").string() +
+                                      "\n"
+                                      "set angular_limit.policy none\n"
+                                      "screenshot " +
+                                      dir.file("free.png").string() +
+                                      "\n"
+                                      "export trace " +
+                                      dir.file("free.json").string() + "\n");
+    const CliResult r = run_cli({"inspect", ruler, "--headless", "--script", script.string()});
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const Trace free = io::read_trace_text(read(dir.file("free.json")));
+    CHECK(free.scene.settings.angular_limit.policy == AngularLimitPolicy::none);
+    CHECK(differing_pixels(load_png(dir.file("limited.png")), load_png(dir.file("free.png"))) > 0);
+}
+
+TEST_CASE("a bad script line is reported with its line number and nothing is written") {
+    TempDir dir;
+    const auto script =
+        dir.write("bad.txt", "next step\n\njump ahead\nscreenshot " + dir.file("x.png").string() + "\n");
+    const CliResult r = run_cli({"inspect", ruler, "--headless", "--script", script.string()});
+    CHECK(r.code == 2);
+    CHECK(r.err.starts_with("impulse-lab: " + script.string() + ": line 3: unknown action \"jump\""));
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(std::filesystem::exists(dir.file("x.png")));
+}
+
+TEST_CASE("stepping past the end of the trace in a script is an error naming the line") {
+    TempDir dir;
+    const auto script = dir.write("end.txt", "last\nnext step\n");
+    const CliResult r = run_cli({"inspect", ruler, "--headless", "--script", script.string()});
+    CHECK(r.code == 2);
+    CHECK(r.err.find("line 2: next step: already at the end of the trace") != std::string::npos);
+}
+
+TEST_CASE("inspect rejects bad flags with one line naming the flag") {
+    TempDir dir;
+    const std::string png = dir.file("x.png").string();
+    struct Case {
+        std::vector<std::string> args;
+        std::string message;
+    };
+    const Case cases[] = {
+        {{"inspect", ruler, "--headless"}, "impulse-lab: --headless: nothing to render"},
+        {{"inspect", ruler, "--headless", "--size", "big", "--screenshot", png},
+         "impulse-lab: --size: expected WIDTHxHEIGHT"},
+        {{"inspect", ruler, "--headless", "--size", "100x100", "--screenshot", png}, "impulse-lab: --size: each side"},
+        {{"inspect", ruler, "--headless", "--goto", "phase=sideways", "--screenshot", png},
+         "impulse-lab: --goto: phase must be preparation, position or velocity"},
+        {{"inspect", ruler, "--headless", "--goto", "iteration=99", "--screenshot", png},
+         "impulse-lab: --goto: the position phase of frame 0 has iterations 0..0, not 99"},
+        {{"inspect", ruler, "--headless", "--screenshot", dir.file("missing/x.png").string()},
+         "impulse-lab: --screenshot:"},
+        {{"inspect", ruler, "--headless", "--frames", "5", "--screenshot", png}, "impulse-lab: --frames: a case"},
+    };
+    for (const Case& c : cases) {
+        const CliResult r = run_cli(c.args);
+        INFO(c.args.back() << " / " << r.err);
+        CHECK(r.code == 2);
+        CHECK(r.err.starts_with(c.message));
+        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    }
+    CHECK(dir.entries() == 0);
+}
+
+TEST_CASE("without a display and without --headless, inspect says so in one line") {
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    const std::string saved_display = display ? display : "", saved_wayland = wayland ? wayland : "";
+    ::unsetenv("DISPLAY");
+    ::unsetenv("WAYLAND_DISPLAY");
+    const CliResult r = run_cli({"inspect", ruler});
+    if (display) ::setenv("DISPLAY", saved_display.c_str(), 1);
+    if (wayland) ::setenv("WAYLAND_DISPLAY", saved_wayland.c_str(), 1);
+    CHECK(r.code == 2);
+    CHECK(r.err ==
+          "impulse-lab: inspect: there is no display to open a window on (DISPLAY is not set); add "
+          "--headless with --screenshot or --script to render PNG files instead\n");
+}
+
+TEST_CASE("a scene is simulated first, then inspected frame by frame") {
+    TempDir dir;
+    const auto script = dir.write("s.txt", "goto frame=2\nexport trace " + dir.file("t.json").string() + "\n");
+    const CliResult r = run_cli({"inspect", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--headless", "--frames", "3",
+                                 "--script", script.string()});
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const Trace trace = io::read_trace_text(read(dir.file("t.json")));
+    CHECK(trace.frames.size() == 3);
+    const Scene scene = io::read_scene_text(read(IMPULSE_SOURCE_DIR "/scenes/stack_3.json"));
+    CHECK(trace == inspect::run_frames(scene, TraceFilter{}, 3));
+}
+
+TEST_CASE("--bench-frames prints frame-time percentiles and the time the file took to open") {
+    const CliResult r = run_cli({"inspect", ruler, "--headless", "--bench-frames", "5"});
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK(r.out.starts_with("bench: 5 frames at 1280x800 headless"));
+    CHECK(r.out.find("opened in ") != std::string::npos);
+    CHECK(r.out.find("frame time ms: p50 ") != std::string::npos);
+}
+
+}  // namespace impulse::test

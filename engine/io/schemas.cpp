@@ -6,8 +6,10 @@
 namespace impulse::io {
 
 namespace embedded {
-extern const std::string_view scene_schema;  // schemas/scene.schema.json, compiled in by CMake
-extern const std::string_view trace_schema;  // schemas/trace.schema.json
+extern const std::string_view scene_schema;      // schemas/scene.schema.json, compiled in by CMake
+extern const std::string_view trace_schema;      // schemas/trace.schema.json
+extern const std::string_view worksheet_schema;  // schemas/worksheet.schema.json
+extern const std::string_view lesson_schema;     // schemas/lesson.schema.json
 }  // namespace embedded
 
 std::string_view scene_schema_text() {
@@ -15,6 +17,12 @@ std::string_view scene_schema_text() {
 }
 std::string_view trace_schema_text() {
     return embedded::trace_schema;
+}
+std::string_view worksheet_schema_text() {
+    return embedded::worksheet_schema;
+}
+std::string_view lesson_schema_text() {
+    return embedded::lesson_schema;
 }
 
 namespace {
@@ -48,6 +56,11 @@ void validate_scene_document(const json& document) {
 
 void validate_trace_document(const json& document) {
     trace_validator().validate(document);
+}
+
+void validate_worksheet_document(const json& document) {
+    SchemaValidator(parsed(worksheet_schema_text()), {{"scene.schema.json", parsed(scene_schema_text())}})
+        .validate(document);
 }
 
 void validate_settings_object(const json& settings, std::string_view path) {

@@ -84,9 +84,73 @@ void add_inspect(CLI::App& app, InspectOptions& o) {
         ->check(CLI::Range(1, 100000));
 }
 
+void add_lesson(CLI::App& app, LessonOptions& o) {
+    CLI::App* lesson = app.add_subcommand(
+        "lesson",
+        "The course on chapter 14: without N, the lessons and your progress; with N, that lesson in the\n"
+        "inspector (a window; with --headless or without a display, annotated text and PNGs in a folder).\n"
+        "Example: impulse-lab lesson 1");
+    lesson->add_option("N", o.number, "Lesson number")->check(CLI::Range(1, 99));
+    lesson->add_flag("--headless", o.headless, "Print the lesson as text; write its trace and a PNG per step");
+    lesson->add_option("--out", o.out, "Folder for the headless lesson's files (default lesson-NN)");
+    lesson->add_option("--lessons", o.lessons_folder, "Folder of lesson files (default: the repository's lessons/)");
+    lesson->add_option("--size", o.size, "Window or image size WxH in pixels (default 1280x800)");
+    lesson->add_option("--script", o.script, "Window: run inspect's actions first (e.g. lesson step 3, next step)");
+    lesson->add_option("--screenshot", o.screenshot, "Window: save a PNG after the script, then close");
+}
+
+void add_worksheet(CLI::App& app, WorksheetOptions& o) {
+    CLI::App* worksheet = app.add_subcommand(
+        "worksheet",
+        "Make a worksheet: the inputs and blank cells of chosen derivation steps, for students to fill in.\n"
+        "Example: impulse-lab worksheet scenes/cases/ruler.json --steps phase=velocity,iteration=0 --out ruler.csv");
+    worksheet
+        ->add_option("FILE", o.file,
+                     "Lesson (lessons/NN-name.md: its run and its steps), case (resolved once), scene "
+                     "(simulated) or trace (JSON)")
+        ->required();
+    worksheet->add_option("--steps", o.steps,
+                          "A place as --goto takes it: frame=F,phase=preparation|position|velocity,iteration=I,"
+                          "contact=C,step=NAME; without step=, every step of that contact or iteration "
+                          "(repeatable; default: every step of the first recorded frame)");
+    worksheet->add_option("--out", o.out, "The worksheet: .json or .csv (one row per number), written atomically")
+        ->required();
+    worksheet->add_option("--preset", o.preset, "Settings preset for a case or scene")
+        ->check(CLI::IsMember({"book", "chapter"}));
+    worksheet->add_option("--set", o.settings, "Change one setting of a case or scene (repeatable)");
+    worksheet->add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of a case or scene");
+    worksheet->add_option("--frames", o.frames, "Frames to simulate for a scene (default: its own, at most 60)")
+        ->check(CLI::Range(1, 100000));
+}
+
+void add_diff(CLI::App& app, DiffOptions& o) {
+    CLI::App* diff = app.add_subcommand(
+        "diff",
+        "Compare traces or filled worksheets with a reference, value by value; the first divergence is marked.\n"
+        "Several files (or a folder) give a class summary. Exit 0 all match, 1 mismatches or blanks, 2 bad input.\n"
+        "Example: impulse-lab diff scenes/cases/ruler.json submissions/ --format csv --out grades.csv");
+    diff->add_option("REFERENCE", o.reference,
+                     "Trace; case or scene (run as inspect runs it); or a worksheet (re-run as it was made)")
+        ->required();
+    diff->add_option("OTHER", o.others, "Traces or filled worksheets (.json, .csv), or folders of them")->required();
+    diff->add_option("--rtol", o.rtol,
+                     "Relative tolerance: numbers match when |b − a| ≤ atol + rtol·|a| (default 1e-9)");
+    diff->add_option("--atol", o.atol, "Absolute tolerance (default 1e-12)");
+    diff->add_option("--format", o.format, "Report as text (default), json or csv")
+        ->check(CLI::IsMember({"text", "json", "csv"}));
+    diff->add_option("--out", o.out, "Also write the report to this file, atomically");
+    diff->add_option("--preset", o.preset, "Settings preset for a case or scene reference")
+        ->check(CLI::IsMember({"book", "chapter"}));
+    diff->add_option("--set", o.settings, "Change one setting of a case or scene reference (repeatable)");
+    diff->add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of the reference");
+    diff->add_option("--frames", o.frames, "Frames to simulate for a scene reference (default: its own, at most 60)")
+        ->check(CLI::Range(1, 100000));
+}
+
 void add_validate(CLI::App& app, std::vector<std::string>& files) {
-    CLI::App* validate = app.add_subcommand("validate", "Check case and trace files against their schemas");
-    validate->add_option("FILE", files, "Scene or trace files (JSON)")->required();
+    CLI::App* validate = app.add_subcommand("validate", "Check case, trace and lesson files");
+    validate->add_option("FILE", files, "Scene, case or trace files (JSON), lesson files (lessons/NN-name.md)")
+        ->required();
 }
 
 // CLI11 forms of a user's mistake as one line: "impulse-lab resolve: --preset: ..." with a pointer to help.
@@ -107,10 +171,16 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     RunOptions run_options;
     std::vector<std::string> validate_files;
     InspectOptions inspect;
+    LessonOptions lesson;
     add_resolve(app, resolve);
     add_run(app, run_options);
     add_inspect(app, inspect);
+    add_lesson(app, lesson);
     add_validate(app, validate_files);
+    WorksheetOptions worksheet;
+    DiffOptions diff;
+    add_worksheet(app, worksheet);
+    add_diff(app, diff);
 
     // CLI11 would say only "A subcommand is required" for a misspelt command; name it instead.
     const auto is_command = [&app](const std::string& name) {
@@ -118,7 +188,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     };
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_command(args[0])) {
         err << "impulse-lab: unknown command \"" << args[0]
-            << "\" (commands: resolve, run, inspect, validate; see impulse-lab --help)\n";
+            << "\" (commands: resolve, run, inspect, lesson, validate, worksheet, diff; see impulse-lab --help)\n";
         return exit_bad_input;
     }
     try {
@@ -140,6 +210,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         if (app.got_subcommand("resolve")) return resolve_command(resolve, out);
         if (app.got_subcommand("run")) return run_command(run_options, out, err, err_is_terminal ? &err : nullptr);
         if (app.got_subcommand("inspect")) return inspect_command(inspect, out, err);
+        if (app.got_subcommand("lesson")) return lesson_command(lesson, out, err);
+        if (app.got_subcommand("worksheet")) return worksheet_command(worksheet, out);
+        if (app.got_subcommand("diff")) return diff_command(diff, out, err);
         return validate_command(validate_files, out, err);
     } catch (const FileError& e) {
         err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';

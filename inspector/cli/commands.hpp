@@ -2,9 +2,12 @@
 // The commands behind the CLI, each taking its parsed options. They throw io::InputError for bad input;
 // `where` is then prefixed with the file it concerns by the caller (cli.cpp).
 
+#include "model/script.hpp"
+
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impulse::cli {
@@ -51,7 +54,54 @@ struct InspectOptions {
 // Opens the inspector: a window, or with --headless the same frames rendered offscreen.
 int inspect_command(const InspectOptions& options, std::ostream& out, std::ostream& err);
 
+struct LessonOptions {
+    std::optional<int> number;  // none: list the lessons
+    bool headless = false;
+    std::optional<std::string> out;             // folder for the headless lesson's trace and screenshots
+    std::optional<std::string> lessons_folder;  // default: the repository's lessons/
+    std::optional<std::string> size;
+    std::optional<std::string> script;      // as inspect's: actions, e.g. "lesson step 3", then the window stays
+    std::optional<std::string> screenshot;  // as inspect's: a PNG at the end, then the window closes
+};
+
+// Lists the lessons with the student's progress, or opens one (a window, or text and PNGs headless).
+int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream& err);
+
+// A --script file's actions; throws FileError naming the file and line.
+std::vector<inspect::Action> read_script_file(const std::string& path);
+
+// "WxH" for --size: throws io::InputError("--size", ...).
+std::pair<int, int> parse_window_size(const std::string& text);
+
 // Prints one line per file; returns exit_bad_input if any file is invalid (all files are checked).
 int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
+
+// `worksheet` and `diff` (docs/coursework.md).
+struct WorksheetOptions {
+    std::string file;                // a lesson, case, scene or trace
+    std::vector<std::string> steps;  // --steps: places in the --goto syntax; empty = the first recorded frame
+    std::string out;                 // .json or .csv
+    std::optional<std::string> preset;
+    std::vector<std::string> settings;
+    std::vector<std::string> record;
+    std::optional<int> frames;
+};
+int worksheet_command(const WorksheetOptions& options, std::ostream& out);
+
+struct DiffOptions {
+    std::string reference;            // a trace, or a case or scene run as inspect runs it
+    std::vector<std::string> others;  // traces, filled worksheets (.json, .csv), folders of them
+    double rtol = 1e-9;
+    double atol = 1e-12;
+    std::string format = "text";  // text, json or csv
+    std::optional<std::string> out;
+    std::optional<std::string> preset;
+    std::vector<std::string> settings;
+    std::vector<std::string> record;
+    std::optional<int> frames;
+};
+// Returns exit_ok when everything matches, exit_failure for a mismatch, a blank cell or (of several files) one
+// that could not be read; throws for a bad reference, flag or single file.
+int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace impulse::cli

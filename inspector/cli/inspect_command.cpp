@@ -12,9 +12,15 @@
 
 namespace impulse::cli {
 
-namespace {
+std::vector<inspect::Action> read_script_file(const std::string& path) {
+    try {
+        return inspect::parse_script(read_input_file(path));
+    } catch (const io::InputError& e) {
+        throw FileError{path, e.where(), e.problem()};
+    }
+}
 
-std::pair<int, int> parse_size(const std::string& text) {
+std::pair<int, int> parse_window_size(const std::string& text) {
     const std::size_t x = text.find('x');
     int width = 0, height = 0;
     const auto read = [](std::string_view s, int& value) {
@@ -29,12 +35,10 @@ std::pair<int, int> parse_size(const std::string& text) {
     return {width, height};
 }
 
-}  // namespace
-
 int inspect_command(const InspectOptions& options, std::ostream& out, std::ostream& err) {
     gui::InspectorRun run;
     run.headless = options.headless;
-    if (options.size) std::tie(run.width, run.height) = parse_size(*options.size);
+    if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
     if (run.headless && !options.screenshot && !options.script && !options.bench_frames)
         throw io::InputError("--headless", "nothing to render: give --screenshot, --script or --bench-frames");
     // Before any work: a window needs a display.
@@ -44,11 +48,7 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
                              "--headless with --screenshot or --script to render PNG files instead");
     if (options.script) {
         run.script_name = *options.script;
-        try {
-            run.script = inspect::parse_script(read_input_file(*options.script));
-        } catch (const io::InputError& e) {
-            throw FileError{*options.script, e.where(), e.problem()};
-        }
+        run.script = read_script_file(*options.script);
     }
 
     const auto start = std::chrono::steady_clock::now();

@@ -1,4 +1,4 @@
-// `impulse-lab validate FILE...`: check case and trace files against their schemas and against what a
+// `impulse-lab validate FILE...`: check case, trace and lesson files against their schemas and against what a
 // schema cannot say (names, references, unit quaternions, inertia). A trace is told from a case by its
 // "format" marker.
 
@@ -9,6 +9,7 @@
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/trace_json.hpp"
+#include "lessons/lesson.hpp"
 
 namespace impulse::cli {
 
@@ -19,6 +20,15 @@ std::string count(std::size_t n, std::string_view one, std::string_view many) {
 }
 
 std::string check_file(const std::string& path) {
+    if (path.ends_with(".md")) {
+        // A lesson: its header and sections, then its run, places and answers.
+        const lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(path));
+        std::size_t questions = 0;
+        for (const lessons::Step& s : lesson.lesson.steps) questions += s.question ? 1 : 0;
+        return "valid lesson " + std::to_string(lesson.lesson.number) + " (" +
+               count(lesson.lesson.steps.size(), "step", "steps") + ", " + count(questions, "question", "questions") +
+               ")";
+    }
     const io::json document = io::parse_json_text(read_input_file(path));
     if (document.is_object() && document.contains("format") && document["format"] == io::trace_format_name) {
         const Trace trace = io::read_trace(document);
@@ -51,7 +61,7 @@ int validate_command(const std::vector<std::string>& files, std::ostream& out, s
             err << "impulse-lab: " << file << ": " << e.what() << '\n';
             result = exit_bad_input;
         } catch (const FileError& e) {
-            err << "impulse-lab: " << e.file << ": " << e.problem << '\n';
+            err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
             result = exit_bad_input;
         }
     }

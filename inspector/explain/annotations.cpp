@@ -88,11 +88,16 @@ constexpr std::array annotations{
 
 }  // namespace
 
-const Annotation& annotation(std::string_view quantity) {
+const Annotation* find_annotation(std::string_view quantity) {
     for (const Annotation& a : annotations)
-        if (a.quantity == quantity) return a;
-    assert(false && "every vocabulary name has an annotation");
-    return annotations.front();
+        if (a.quantity == quantity) return &a;
+    return nullptr;
+}
+
+const Annotation& annotation(std::string_view quantity) {
+    const Annotation* found = find_annotation(quantity);
+    assert(found && "every vocabulary name has an annotation");
+    return found ? *found : annotations.front();
 }
 
 }  // namespace impulse::explain

@@ -18,4 +18,9 @@ struct Annotation {
 // The annotation of a vocabulary name; a name not in the table is a programming error (asserted).
 const Annotation& annotation(std::string_view quantity);
 
+// The same for a name that may not be in the vocabulary (a key read from a file): null when it is not.
+const Annotation* find_annotation(std::string_view quantity);
+// The annotation of a name that may not be in the vocabulary (a key read from a file), or null.
+const Annotation* find_annotation(std::string_view quantity);
+
 }  // namespace impulse::explain

@@ -8,7 +8,7 @@
 
 namespace impulse::gui {
 
-void draw_derivation(const inspect::Session& /*session*/, UiState& state) {
+void draw_derivation(const inspect::Session& session, UiState& state) {
     const CursorViews& v = state.views;
     if (!v.cursor) return;
     const inspect::DerivationView& view = v.derivation;
@@ -39,6 +39,13 @@ void draw_derivation(const inspect::Session& /*session*/, UiState& state) {
     ImGui::TableHeadersRow();
 
     const ImVec4 dim = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+    // A lesson's open question hides its quantity (both bodies' rows of a per-body one) until answered.
+    const std::string hidden = hidden_quantity(state, session);
+    const std::string question_path =
+        hidden.empty()
+            ? std::string()
+            : state.lesson->lesson->lesson.steps[static_cast<std::size_t>(state.lesson->step)].question->value;
+    const auto is_hidden = [&](const std::string& quantity) { return is_hidden_row(hidden, question_path, quantity); };
     const ImU32 highlight = IM_COL32(70, 90, 40, 255);
     bool scrolled = false;
     std::string previous_step;
@@ -60,10 +67,11 @@ void draw_derivation(const inspect::Session& /*session*/, UiState& state) {
         ImGui::TableSetColumnIndex(0);
         ImGui::TextUnformatted(r.row.quantity.c_str());
         ImGui::PushFont(value_font());
+        const bool secret = is_hidden(r.row.quantity);
         ImGui::TableSetColumnIndex(1);
-        ImGui::TextWrapped("%s", r.row.value.c_str());
+        ImGui::TextWrapped("%s", secret ? "? (answer the lesson's question first)" : r.row.value.c_str());
         ImGui::TableSetColumnIndex(2);
-        ImGui::TextWrapped("%s", r.row.other_frame.c_str());
+        ImGui::TextWrapped("%s", secret ? "" : r.row.other_frame.c_str());
         ImGui::PopFont();
         ImGui::TableSetColumnIndex(3);
         ImGui::TextWrapped("%s", r.row.formula.c_str());

@@ -13,12 +13,12 @@ constexpr const char* sans_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.t
 constexpr const char* mono_path = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 constexpr float font_size = 15.0f;
 
-// Latin, Greek, the combining accents (the dot of θ̇), general punctuation (the middle dot, dashes), sub-
-// and superscripts, letter-like symbols, arrows, mathematical operators, modifier letters (ᵀ) and the
-// geometric shapes of the buttons (◀ ▶).
+// Latin with its extensions (ŷ, ṗ, ẑ), Greek, the combining accents (the dot of θ̇), general punctuation (the
+// middle dot, dashes), sub- and superscripts, letter-like symbols, arrows, mathematical operators, modifier
+// letters (ᵀ) and the geometric shapes of the buttons (◀ ▶).
 constexpr ImWchar glyph_ranges[] = {
-    0x0020, 0x00FF, 0x0300, 0x036F, 0x0370, 0x03FF, 0x1D00, 0x1DBF, 0x2000, 0x206F, 0x2070,
-    0x209F, 0x2100, 0x214F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0x25A0, 0x25FF, 0,
+    0x0020, 0x017F, 0x1E00, 0x1EFF, 0x0300, 0x036F, 0x0370, 0x03FF, 0x1D00, 0x1DBF, 0x2000, 0x206F,
+    0x2070, 0x209F, 0x2100, 0x214F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0x25A0, 0x25FF, 0,
 };
 
 }  // namespace

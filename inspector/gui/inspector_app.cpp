@@ -22,7 +22,16 @@ constexpr int settle_frames = 2;
 
 class Host final : public inspect::ActionHost {
 public:
-    explicit Host(SceneCamera& camera) : camera_(camera) {}
+    Host(inspect::Session& session, UiState& state) : session_(session), state_(state), camera_(state.camera) {}
+
+    void lesson_step(int step) override {
+        if (!state_.lesson) throw io::InputError("lesson step", "no lesson is open");
+        const int count = static_cast<int>(state_.lesson->lesson->places.size());
+        if (step >= count)
+            throw io::InputError("lesson step", "the lesson has steps 1.." + std::to_string(count) + ", not " +
+                                                    std::to_string(step + 1));
+        go_to_lesson_step(session_, state_, step);
+    }
 
     void view(const std::string& plane) override {
         camera_.plane = plane == "top"    ? ViewPlane::top
@@ -47,6 +56,8 @@ public:
     }
 
 private:
+    inspect::Session& session_;
+    UiState& state_;
     SceneCamera& camera_;
     std::optional<std::string> pending_;
     int settle_ = 0;
@@ -114,7 +125,31 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
     const bool close_when_done = run.headless || run.screenshot.has_value();
 
     UiState state;
-    Host host(state.camera);
+    if (run.lesson) {
+        state.lesson = LessonState{run.lesson, 0, {}, {}, run.progress, run.progress_file};
+        state.lesson->verdicts.resize(run.lesson->places.size());
+        // Back where the student left off, with the answers they gave shown again.
+        int start = 0;
+        if (run.progress)
+            if (const auto found = run.progress->lessons.find(run.lesson->lesson.name);
+                found != run.progress->lessons.end()) {
+                start = std::min(found->second.last_step, static_cast<int>(run.lesson->places.size()) - 1);
+                for (std::size_t i = 0; i < run.lesson->lesson.steps.size(); ++i) {
+                    const lessons::Step& step = run.lesson->lesson.steps[i];
+                    const auto record = found->second.answers.find(step.id);
+                    if (!step.question || record == found->second.answers.end()) continue;
+                    try {
+                        state.lesson->verdicts[i] =
+                            lessons::check_answer(*step.question, *run.lesson->answers[i], record->second.answer);
+                    } catch (const io::InputError&) {
+                        // An answer the lesson no longer accepts (its options changed): asked again.
+                    }
+                }
+            }
+        state.lesson->step = start;
+        session.move_to(run.lesson->places[static_cast<std::size_t>(start)]);
+    }
+    Host host(session, state);
     Pixels pixels;
     // ImGui settles a layout over a couple of frames after any input, so a window only idles after a few.
     int busy_frames = 3;

@@ -3,6 +3,8 @@
 // screenshot or a frame-time benchmark. Scripts run one action per frame, so in a window they can be
 // watched; a screenshot is taken after the panels have settled.
 
+#include "lessons/lesson.hpp"
+#include "lessons/progress.hpp"
 #include "model/script.hpp"
 #include "model/session.hpp"
 
@@ -22,6 +24,10 @@ struct InspectorRun {
     std::optional<std::string> screenshot;  // taken after the script; then the inspector closes
     std::optional<int> bench_frames;        // then render this many frames, one step apart, and print times
     double load_seconds = 0.0;              // how long opening the file took, for the benchmark's report
+    // A lesson shown beside the inspector (its session is the one inspected), and where progress is saved.
+    lessons::PreparedLesson* lesson = nullptr;
+    lessons::Progress* progress = nullptr;
+    std::optional<std::filesystem::path> progress_file;
 };
 
 // Returns the exit code. Bad script actions and unwritable outputs are reported as one line on `err`

@@ -25,7 +25,8 @@ void draw_inspector(inspect::Session& session, UiState& state, inspect::ActionHo
     refresh_views(session, state);
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
     const float toolbar = 62.0f;
-    const float left = screen.x * 0.19f, right = screen.x * 0.25f, middle = screen.x - left - right;
+    const float left = screen.x * (state.lesson ? 0.25f : 0.19f), right = screen.x * 0.25f,
+                middle = screen.x - left - right;
     const float body = screen.y - toolbar;
 
     if (begin_panel("##toolbar", 0, 0, screen.x, toolbar, ImGuiWindowFlags_NoTitleBar))
@@ -34,10 +35,29 @@ void draw_inspector(inspect::Session& session, UiState& state, inspect::ActionHo
     // A move from the toolbar or a key: rebuild now, so every panel below draws the new place.
     refresh_views(session, state);
 
-    if (begin_panel("Navigator", 0, toolbar, left, body * 0.62f)) draw_navigator(session, state);
-    ImGui::End();
-    if (begin_panel("Settings", 0, toolbar + body * 0.62f, left, body * 0.38f)) draw_settings(session, state, host);
-    ImGui::End();
+    if (state.lesson) {
+        // A lesson takes the navigator's place; the navigator and the settings share the panel below it.
+        if (begin_panel("Lesson", 0, toolbar, left, body * 0.58f)) draw_lesson(session, state);
+        ImGui::End();
+        if (begin_panel("##tools", 0, toolbar + body * 0.58f, left, body * 0.42f, ImGuiWindowFlags_NoTitleBar) &&
+            ImGui::BeginTabBar("tools")) {
+            if (ImGui::BeginTabItem("Navigator")) {
+                draw_navigator(session, state);
+                ImGui::EndTabItem();
+            }
+            if (ImGui::BeginTabItem("Settings")) {
+                draw_settings(session, state, host);
+                ImGui::EndTabItem();
+            }
+            ImGui::EndTabBar();
+        }
+        ImGui::End();
+    } else {
+        if (begin_panel("Navigator", 0, toolbar, left, body * 0.62f)) draw_navigator(session, state);
+        ImGui::End();
+        if (begin_panel("Settings", 0, toolbar + body * 0.62f, left, body * 0.38f)) draw_settings(session, state, host);
+        ImGui::End();
+    }
     refresh_views(session, state);
 
     if (begin_panel("Derivation", left, toolbar, middle, body * 0.5f)) draw_derivation(session, state);

@@ -15,7 +15,8 @@ std::string body_label(const Trace& trace, int body) {
     return body == world_body ? std::string("world") : trace.scene.body_names[static_cast<std::size_t>(body)];
 }
 
-std::string item_label(const Trace& trace, const FrameRecord& frame, Stage stage, int item) {
+// `secret`: a lesson's open question asks for this kind of value, so it is not shown.
+std::string item_label(const Trace& trace, const FrameRecord& frame, Stage stage, int item, bool secret) {
     const auto i = static_cast<std::size_t>(item);
     if (stage == Stage::preparation) {
         const ContactPreparation& c = frame.contacts[i];
@@ -24,12 +25,12 @@ std::string item_label(const Trace& trace, const FrameRecord& frame, Stage stage
     }
     if (stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[i];
-        return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) + " (" +
-               explain::number(it.penetration) + " m)";
+        return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) +
+               (secret ? "" : " (" + explain::number(it.penetration) + " m)");
     }
     const VelocityIteration& it = frame.velocity.iterations[i];
-    return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) + " (Δv " +
-           explain::number(it.desired_delta_velocity) + " m/s)";
+    return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) +
+           (secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)");
 }
 
 std::string stage_label(const FrameRecord& frame, Stage stage) {
@@ -47,6 +48,8 @@ void draw_items(inspect::Session& session, UiState& state, int f, Stage stage) {
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
     const Cursor& at = *session.cursor();
     const bool here = at.frame == f && at.stage == stage;
+    const std::string hidden = hidden_quantity(state, session);
+    const bool secret = hidden == (stage == Stage::position ? "penetration" : "desired_delta_velocity");
     ImGuiListClipper clipper;
     clipper.Begin(inspect::item_count(frame, stage));
     if (here && state.views.scroll_to_cursor) clipper.ForceDisplayRangeByIndices(at.item, at.item + 1);
@@ -54,7 +57,7 @@ void draw_items(inspect::Session& session, UiState& state, int f, Stage stage) {
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const bool current = here && at.item == i;
             ImGui::PushID(i);
-            if (ImGui::Selectable(item_label(trace, frame, stage, i).c_str(), current))
+            if (ImGui::Selectable(item_label(trace, frame, stage, i, secret).c_str(), current))
                 session.move_to(Cursor{f, stage, i, 0});
             if (current && state.views.scroll_to_cursor) ImGui::SetScrollHereY(0.4f);
             ImGui::PopID();

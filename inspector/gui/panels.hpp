@@ -26,6 +26,9 @@ void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHos
 // Trace JSON, table CSV and screenshot PNG to the paths typed in.
 void draw_export(inspect::Session& session, UiState& state, inspect::ActionHost& host);
 
+// The open lesson's step: its text, its question, back and next.
+void draw_lesson(inspect::Session& session, UiState& state);
+
 // The whole window: every panel in its place for the current display size.
 void draw_inspector(inspect::Session& session, UiState& state, inspect::ActionHost& host);
 

@@ -203,7 +203,12 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     const Trace& trace = session.trace();
     const Scene& scene = trace.scene;
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(v.cursor->frame)];
-    const std::vector<BodyState>& after = v.bodies.after;
+    // While a lesson's question is open, the bodies stay as they were before the item: its outcome would
+    // give the answer away.
+    const bool conceal = !hidden_quantity(state, session).empty();
+    const std::vector<BodyState>& after = conceal ? v.bodies.before : v.bodies.after;
+    const std::vector<int> no_bodies;
+    const std::vector<int>& moved_bodies = conceal ? no_bodies : v.bodies.moved;
 
     // Fit the bodies (and contact points) into the canvas.
     Projector project{view_rotation(camera), Vec3::Zero(), ImVec2(), 1.0f};
@@ -229,7 +234,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
 
     // Bodies: moved ones in orange, with a faint ghost where they were before this item's move.
     std::vector<char> moved(after.size(), 0);
-    for (int b : v.bodies.moved) moved[static_cast<std::size_t>(b)] = 1;
+    for (int b : moved_bodies) moved[static_cast<std::size_t>(b)] = 1;
     const bool position_move = v.cursor->stage == inspect::Stage::position;
     Pen pen(draw);
     for (std::size_t i = 0; i < after.size(); ++i) {
@@ -242,7 +247,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     }
     // Velocity phase: each changed body's velocity before (faint) and after, as the distance it covers in 0.1 s.
     if (v.cursor->stage == inspect::Stage::velocity)
-        for (int b : v.bodies.moved) {
+        for (int b : moved_bodies) {
             const auto i = static_cast<std::size_t>(b);
             arrow(draw, project(after[i].position), project(after[i].position + v.bodies.before[i].velocity * 0.1),
                   IM_COL32(120, 200, 255, 110), 2.0f);
@@ -298,7 +303,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
               IM_COL32(90, 225, 120, 255), 2.0f);
         if (v.cursor->stage == inspect::Stage::velocity) {
             const VelocityIteration& it = frame.velocity.iterations[static_cast<std::size_t>(v.cursor->item)];
-            if (it.resolution && v.largest_impulse > 0) {
+            if (it.resolution && v.largest_impulse > 0 && !conceal) {
                 const Vec3 g = project.view * it.resolution->impulse.impulse_world;
                 const float k = impulse_pixels / static_cast<float>(v.largest_impulse);
                 arrow(draw, p, ImVec2(p.x + static_cast<float>(g.x()) * k, p.y - static_cast<float>(g.y()) * k),

@@ -76,6 +76,7 @@ void draw_contacts(inspect::Session& session, UiState& state) {
     if (!v.cursor) return;
     const Trace& trace = session.trace();
     const int current = inspect::contact_at(trace, *v.cursor);
+    const std::string hidden = hidden_quantity(state, session);  // a lesson's open question
     ImGui::TextDisabled("Before this item, status in the %s phase. Click to go.",
                         v.cursor->stage == inspect::Stage::velocity   ? "velocity"
                         : v.cursor->stage == inspect::Stage::position ? "position"
@@ -106,9 +107,10 @@ void draw_contacts(inspect::Session& session, UiState& state) {
                         body_label(trace, row.prepared->bodies[1]).c_str());
             ImGui::PushFont(value_font());
             ImGui::TableSetColumnIndex(2);
-            ImGui::TextUnformatted(explain::number(row.penetration).c_str());
+            ImGui::TextUnformatted(hidden == "penetration" ? "?" : explain::number(row.penetration).c_str());
             ImGui::TableSetColumnIndex(3);
-            ImGui::TextUnformatted(explain::number(row.desired_delta_velocity).c_str());
+            ImGui::TextUnformatted(
+                hidden == "desired_delta_velocity" ? "?" : explain::number(row.desired_delta_velocity).c_str());
             ImGui::TableSetColumnIndex(4);
             ImGui::TextUnformatted(explain::number(row.impulse_so_far.norm()).c_str());
             ImGui::PopFont();
@@ -129,15 +131,18 @@ void draw_bodies(const inspect::Session& session, UiState& state) {
             "bodies",
             {{"body", 0.6f}, {"position m (before → after)", 2.0f}, {"velocity m/s, ω rad/s (before → after)", 2.0f}}))
         return;
+    // While a lesson's question is open the item's outcome is not shown: it would give the answer away.
+    const bool conceal = !hidden_quantity(state, session).empty();
     std::vector<char> moved(v.bodies.after.size(), 0);
-    for (int b : v.bodies.moved) moved[static_cast<std::size_t>(b)] = 1;
+    if (!conceal)
+        for (int b : v.bodies.moved) moved[static_cast<std::size_t>(b)] = 1;
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(v.bodies.after.size()));
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const auto b = static_cast<std::size_t>(i);
             const BodyState& before = v.bodies.before[b];
-            const BodyState& after = v.bodies.after[b];
+            const BodyState& after = conceal ? before : v.bodies.after[b];
             ImGui::TableNextRow();
             if (moved[b]) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(90, 60, 20, 255));
             ImGui::TableSetColumnIndex(0);
@@ -155,7 +160,7 @@ void draw_bodies(const inspect::Session& session, UiState& state) {
     ImGui::EndTable();
 }
 
-void draw_plots(const inspect::Session& /*session*/, UiState& state) {
+void draw_plots(const inspect::Session& session, UiState& state) {
     const CursorViews& v = state.views;
     if (!v.cursor) return;
     if (v.curves.empty()) {
@@ -195,7 +200,10 @@ void draw_plots(const inspect::Session& /*session*/, UiState& state) {
             draw->AddLine(ImVec2(x_of(i), a.y), ImVec2(x_of(i), b.y), IM_COL32(255, 230, 60, 160), 1.0f);
             draw->AddCircleFilled(ImVec2(x_of(i), y_of(c.worst[i])), 4.0f, IM_COL32(255, 230, 60, 255));
         }
-        draw->AddText(ImVec2(a.x + 4, a.y + 2), IM_COL32(200, 200, 200, 255), explain::number(top).c_str());
+        const std::string hidden = hidden_quantity(state, session);
+        const bool secret = hidden == (position ? "penetration" : "desired_delta_velocity");
+        draw->AddText(ImVec2(a.x + 4, a.y + 2), IM_COL32(200, 200, 200, 255),
+                      secret ? "?" : explain::number(top).c_str());
         draw->AddText(ImVec2(b.x - 70, y_of(c.epsilon) - 16), IM_COL32(130, 190, 130, 255), "ε");
         ImGui::EndGroup();
     }

@@ -378,13 +378,14 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
     }
     if (spec.step) {
         const std::vector<StepTable> tables = step_tables(trace, cursor);
+        // A step's own name first; else the first table that shows the quantity.
         std::optional<int> found;
-        for (std::size_t i = 0; i < tables.size() && !found; ++i) {
+        for (std::size_t i = 0; i < tables.size() && !found; ++i)
             if (tables[i].step == *spec.step) found = static_cast<int>(i);
+        for (std::size_t i = 0; i < tables.size() && !found; ++i)
             for (const Row& r : tables[i].rows)
                 if (!found && (r.quantity == *spec.step || r.quantity.rfind(*spec.step + "[", 0) == 0))
                     found = static_cast<int>(i);
-        }
         if (!found) {
             std::string names;
             for (const StepTable& t : tables) names += (names.empty() ? "" : ", ") + t.step;

@@ -55,7 +55,7 @@ std::string line_name(int line) {
 
 const char* known_actions =
     "next|prev step|contact|iteration|item|phase [N], first, last, goto SPEC, set NAME VALUE, screenshot FILE, "
-    "view PLANE, export trace FILE, export table FILE, quit";
+    "view PLANE, lesson step N, export trace FILE, export table FILE, quit";
 
 }  // namespace
 
@@ -103,6 +103,15 @@ Action parse_action(std::string_view text, int line) {
         if (w[1] != "front" && w[1] != "top" && w[1] != "side" && w[1] != "3d")
             throw io::InputError(where, "view must be front, top, side or 3d, got \"" + std::string(w[1]) + "\"");
         return {ActionKind::view, std::string(w[1]), 1, line};
+    }
+    if (w[0] == "lesson") {
+        needs(3, "lesson step N");
+        int step = 0;
+        const auto [end, error] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), step);
+        if (w[1] != "step" || error != std::errc() || end != w[2].data() + w[2].size() || step < 1)
+            throw io::InputError(where,
+                                 "expected lesson step N with N from 1, got \"" + std::string(trim(text)) + "\"");
+        return {ActionKind::lesson_step, std::to_string(step), 1, line};
     }
     if (w[0] == "screenshot") {
         needs(2, "screenshot FILE.png");
@@ -179,14 +188,16 @@ void perform(Session& session, const Action& action, std::string_view where, Act
             return;
         case ActionKind::screenshot:
         case ActionKind::view:
+        case ActionKind::lesson_step:
         case ActionKind::quit:
             if (!host) throw io::InputError(at, "only the inspector's window or --headless renderer can do this");
             if (action.kind == ActionKind::screenshot) {
                 io::check_writable(action.argument, at);  // the picture is taken a few frames later
                 host->screenshot(action.argument);
-            }
-            else if (action.kind == ActionKind::view)
+            } else if (action.kind == ActionKind::view)
                 host->view(action.argument);
+            else if (action.kind == ActionKind::lesson_step)
+                host->lesson_step(std::stoi(action.argument) - 1);
             else
                 host->quit();
             return;

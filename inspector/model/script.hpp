@@ -6,6 +6,7 @@
 //   goto frame=F,phase=velocity,iteration=I,contact=C,step=NAME
 //   set <setting> <value>                           (as --set setting=value; re-runs the scene)
 //   view front|top|side|3d                         (the scene view's plane, or the rotatable view)
+//   lesson step N                                  (the open lesson's step N, from 1)
 //   screenshot FILE.png | export trace FILE.json | export table FILE.csv | quit
 // Blank lines and lines starting with # are ignored. Paths are relative to the working directory.
 
@@ -33,6 +34,7 @@ enum class ActionKind {
     go_to,
     set,
     view,
+    lesson_step,  // "lesson step N": the open lesson's step N (from 1)
     screenshot,
     export_trace,
     export_table,
@@ -57,6 +59,7 @@ public:
     virtual ~ActionHost() = default;
     virtual void screenshot(const std::string& path) = 0;
     virtual void view(const std::string& plane) = 0;  // front, top, side or 3d
+    virtual void lesson_step(int step) = 0;           // from 0; throws io::InputError when there is none
     virtual void quit() = 0;
 };
 

@@ -114,7 +114,9 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
              "': No such file or directory"},
         {{"resolve", ruler, "--explian"}, "impulse-lab: The following argument was not expected: --explian"},
         {{"resolve"}, "impulse-lab: CASE is required"},
-        {{"frobnicate"}, "impulse-lab: unknown command \"frobnicate\" (commands: resolve, run, inspect, validate"},
+        {{"frobnicate"},
+         "impulse-lab: unknown command \"frobnicate\" (commands: resolve, run, inspect, lesson, validate, worksheet, "
+         "diff;"},
     };
     for (const BadFlag& b : table) {
         std::vector<std::string> args = b.args;

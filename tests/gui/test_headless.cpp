@@ -5,6 +5,7 @@
 #include "io/json_text.hpp"
 #include "io/scene_file.hpp"
 #include "io/trace_json.hpp"
+#include "lessons/lesson.hpp"
 #include "model/runs.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
@@ -225,6 +226,51 @@ TEST_CASE("--bench-frames prints frame-time percentiles and the time the file to
     CHECK(r.out.starts_with("bench: 5 frames at 1280x800 headless"));
     CHECK(r.out.find("opened in ") != std::string::npos);
     CHECK(r.out.find("frame time ms: p50 ") != std::string::npos);
+}
+
+}  // namespace impulse::test
+
+namespace impulse::test {
+
+TEST_CASE("every lesson runs headless: annotated text, its trace and one screenshot per step") {
+    TempDir dir;
+    ::setenv("XDG_CONFIG_HOME", dir.file("cfg").c_str(), 1);
+    const std::vector<std::filesystem::path> files = lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
+    REQUIRE(files.size() == 12);
+    for (const std::filesystem::path& file : files) {
+        const lessons::Lesson lesson = lessons::read_lesson(file);
+        const std::string number = std::to_string(lesson.number);
+        const auto out = dir.file("lesson-" + number);
+        const CliResult r = run_cli({"lesson", number, "--headless", "--out", out.string(), "--size", "640x400"});
+        INFO(file.filename().string() << ": " << r.err);
+        REQUIRE(r.code == 0);
+        CHECK(r.out.starts_with("Lesson " + number + " · " + lesson.title));
+        std::size_t pictures = 0;
+        for (const auto& entry : std::filesystem::directory_iterator(out))
+            if (entry.path().extension() == ".png") {
+                ++pictures;
+                const Image image = load_png(entry.path());
+                CHECK(image.width == 640);
+                CHECK(distinct_colours(image) > 100);
+            }
+        CHECK(pictures == lesson.steps.size());
+        CHECK(io::read_trace_text(read(out / "trace.json")).frames.size() >= 1);
+    }
+    // Showing answers in text does not count as answering: no progress is written.
+    CHECK_FALSE(std::filesystem::exists(dir.file("cfg/impulse-lab/progress.json")));
+    ::unsetenv("XDG_CONFIG_HOME");
+}
+
+TEST_CASE("without a display a lesson falls back to text and pictures, and says so") {
+    TempDir dir;
+    const char* display = std::getenv("DISPLAY");
+    const std::string saved = display ? display : "";
+    ::unsetenv("DISPLAY");
+    const CliResult r = run_cli({"lesson", "1", "--out", dir.file("one").string()});
+    if (display) ::setenv("DISPLAY", saved.c_str(), 1);
+    CHECK(r.code == 0);
+    CHECK(r.err.find("note: no display") != std::string::npos);
+    CHECK(std::filesystem::exists(dir.file("one/trace.json")));
 }
 
 }  // namespace impulse::test

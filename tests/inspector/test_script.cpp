@@ -93,9 +93,11 @@ std::string step_name(const Session& session) {
 struct RecordingHost : ActionHost {
     std::vector<std::string> screenshots;
     std::vector<std::string> views;
+    std::vector<int> lesson_steps;
     int quits = 0;
     void screenshot(const std::string& path) override { screenshots.push_back(path); }
     void view(const std::string& plane) override { views.push_back(plane); }
+    void lesson_step(int step) override { lesson_steps.push_back(step); }
     void quit() override { ++quits; }
 };
 

@@ -1,0 +1,97 @@
+#pragma once
+// Lessons (docs/lessons.md): a scene, its settings, and an ordered path through its trace, each step with
+// text and perhaps a question. Reading checks the header against schemas/lesson.schema.json and pairs each
+// step with its "## id" section; preparing runs the scene and checks that every place exists and every
+// question's answer can be read from the trace. The answers are the engine's values, never the author's.
+
+#include "model/session.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impulse::lessons {
+
+struct Tolerance {
+    std::optional<double> relative;  // |answer - value| <= relative |value|
+    std::optional<double> absolute;  // |answer - value| <= absolute, in the value's unit
+};
+
+struct Option {
+    std::string label;
+    nlohmann::ordered_json value;
+};
+
+struct Question {
+    enum class Kind { predict, choose } kind;
+    std::string prompt;
+    std::string value;  // a path inside the place's item: "desired_delta_velocity", "impulse_world[1]"
+    Tolerance tolerance;
+    std::vector<Option> options;
+};
+
+struct Step {
+    std::string id;
+    std::string at;  // a place, as inspect --goto takes it
+    std::optional<Question> question;
+    std::string text;  // the step's Markdown section
+};
+
+struct Lesson {
+    std::filesystem::path file;
+    std::string name;  // the file's stem: "01-impulse-is-a-velocity-change"
+    int number = 0;    // from the name's leading digits
+    std::string title;
+    std::filesystem::path scene;  // resolved against the lesson's folder
+    std::vector<std::string> settings;
+    std::optional<int> frames;
+    std::vector<std::string> record;  // as --record takes them: frames=A..B, contacts=I,J
+    std::string introduction;  // the text before the first section
+    std::vector<Step> steps;
+};
+
+// Throws io::InputError("line N" or a header JSON path, problem); `file` names the lesson.
+Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file);
+// Throws cli::FileError naming the file.
+Lesson read_lesson(const std::filesystem::path& file);
+
+// The lesson files of a folder (NN-*.md), in number order.
+std::vector<std::filesystem::path> lesson_files(const std::filesystem::path& folder);
+
+// The engine's answer to a question.
+struct Answer {
+    nlohmann::ordered_json value;  // a number for predict; the trace's value for choose
+    std::string unit;              // from the annotations of the path's quantity ("m/s"); may be empty
+    int correct_option = -1;       // choose: the index of the option equal to the value
+    std::string shown;             // "3.24 m/s", or the correct option's label
+};
+
+// A lesson with its run: the place of each step and the answer of each question.
+struct PreparedLesson {
+    Lesson lesson;
+    inspect::Session session;
+    std::vector<inspect::Cursor> places;         // one per step
+    std::vector<std::optional<Answer>> answers;  // one per step: none without a question
+};
+
+// Runs the lesson's scene with its settings; throws cli::FileError naming the lesson file and the header
+// path of the first step whose place or question does not work with this run.
+PreparedLesson prepare_lesson(Lesson lesson);
+
+// What a student typed (a number, or for choose the option's index from 0), against the engine's answer.
+struct Verdict {
+    bool correct = false;
+    std::string feedback;  // one line: "right: the engine has 3.24 m/s (you were 1.2 % off)"
+};
+// Throws io::InputError("answer", ...) when the text is not a number (or not an option's index).
+Verdict check_answer(const Question& question, const Answer& answer, std::string_view typed);
+
+// The first key of a question's value path ("impulse_world" for "impulse_world[1]"): the table rows that
+// show it are hidden until the question is answered.
+std::string question_quantity(const Question& question);
+
+}  // namespace impulse::lessons

@@ -1,0 +1,42 @@
+#pragma once
+// A student's progress through the lessons: each question's last answer and whether it was right, and the
+// step each lesson was left at. Kept per user in the standard config location
+// ($XDG_CONFIG_HOME/impulse-lab/progress.json, else ~/.config/impulse-lab/progress.json) and written
+// atomically. A file that cannot be read is moved aside and reported, never silently dropped.
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+namespace impulse::lessons {
+
+struct AnswerRecord {
+    std::string answer;  // as typed
+    bool correct = false;
+    int tries = 0;
+};
+
+struct LessonProgress {
+    int last_step = 0;                            // index of the step the student was last on
+    std::map<std::string, AnswerRecord> answers;  // by step id
+};
+
+struct Progress {
+    std::map<std::string, LessonProgress> lessons;  // by lesson name ("01-impulse-is-a-velocity-change")
+};
+
+// Where progress is kept; none when neither XDG_CONFIG_HOME nor HOME is set.
+std::optional<std::filesystem::path> progress_file();
+
+struct LoadedProgress {
+    Progress progress;
+    std::string note;  // one line when a corrupt file was moved aside ("... kept as progress.json.corrupt-...")
+};
+// A missing file is empty progress. A corrupt one is renamed beside itself with a time stamp and reported.
+LoadedProgress load_progress(const std::filesystem::path& file);
+
+// Writes atomically (creating the folder); throws io::InputError("progress", ...) when it cannot.
+void save_progress(const std::filesystem::path& file, const Progress& progress);
+
+}  // namespace impulse::lessons

@@ -51,6 +51,15 @@ void add_run(CLI::App& app, RunOptions& o) {
     run->add_option("--states", o.states_file, "Write every body's state per frame as CSV, atomically");
 }
 
+// How a case or scene is run before it is looked at: the same four flags for inspect, worksheet and diff.
+void add_open_options(CLI::App& command, inspect::OpenOptions& o, const std::string& what) {
+    command.add_option("--preset", o.preset, "Settings preset for " + what)->check(CLI::IsMember({"book", "chapter"}));
+    command.add_option("--set", o.settings, "Change one setting of " + what + " (repeatable)");
+    command.add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of " + what);
+    command.add_option("--frames", o.frames, "Frames to simulate for a scene (default: its own, at most 60)")
+        ->check(CLI::Range(1, 100000));
+}
+
 void add_inspect(CLI::App& app, InspectOptions& o) {
     CLI::App* inspect = app.add_subcommand(
         "inspect",
@@ -76,12 +85,7 @@ void add_inspect(CLI::App& app, InspectOptions& o) {
         ->add_option("--bench-frames", o.bench_frames,
                      "Render N frames stepping one derivation step per frame; print frame-time percentiles")
         ->check(CLI::Range(1, 1000000));
-    inspect->add_option("--preset", o.preset, "Settings preset for a case or scene")
-        ->check(CLI::IsMember({"book", "chapter"}));
-    inspect->add_option("--set", o.settings, "Change one setting of a case or scene (repeatable)");
-    inspect->add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of a case or scene");
-    inspect->add_option("--frames", o.frames, "Frames to simulate for a scene (default: its own, at most 60)")
-        ->check(CLI::Range(1, 100000));
+    add_open_options(*inspect, o.open, "a case or scene");
 }
 
 void add_lesson(CLI::App& app, LessonOptions& o) {
@@ -115,12 +119,7 @@ void add_worksheet(CLI::App& app, WorksheetOptions& o) {
                           "(repeatable; default: every step of the first recorded frame)");
     worksheet->add_option("--out", o.out, "The worksheet: .json or .csv (one row per number), written atomically")
         ->required();
-    worksheet->add_option("--preset", o.preset, "Settings preset for a case or scene")
-        ->check(CLI::IsMember({"book", "chapter"}));
-    worksheet->add_option("--set", o.settings, "Change one setting of a case or scene (repeatable)");
-    worksheet->add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of a case or scene");
-    worksheet->add_option("--frames", o.frames, "Frames to simulate for a scene (default: its own, at most 60)")
-        ->check(CLI::Range(1, 100000));
+    add_open_options(*worksheet, o.open, "a case or scene");
 }
 
 void add_diff(CLI::App& app, DiffOptions& o) {
@@ -139,12 +138,7 @@ void add_diff(CLI::App& app, DiffOptions& o) {
     diff->add_option("--format", o.format, "Report as text (default), json or csv")
         ->check(CLI::IsMember({"text", "json", "csv"}));
     diff->add_option("--out", o.out, "Also write the report to this file, atomically");
-    diff->add_option("--preset", o.preset, "Settings preset for a case or scene reference")
-        ->check(CLI::IsMember({"book", "chapter"}));
-    diff->add_option("--set", o.settings, "Change one setting of a case or scene reference (repeatable)");
-    diff->add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of the reference");
-    diff->add_option("--frames", o.frames, "Frames to simulate for a scene reference (default: its own, at most 60)")
-        ->check(CLI::Range(1, 100000));
+    add_open_options(*diff, o.open, "a case or scene reference");
 }
 
 void add_validate(CLI::App& app, std::vector<std::string>& files) {

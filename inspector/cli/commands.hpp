@@ -3,6 +3,7 @@
 // `where` is then prefixed with the file it concerns by the caller (cli.cpp).
 
 #include "model/script.hpp"
+#include "model/session.hpp"
 
 #include <optional>
 #include <ostream>
@@ -45,10 +46,7 @@ struct InspectOptions {
     std::optional<std::string> script;
     std::optional<std::string> screenshot;
     std::optional<int> bench_frames;
-    std::optional<std::string> preset;
-    std::vector<std::string> settings;
-    std::vector<std::string> record;
-    std::optional<int> frames;
+    inspect::OpenOptions open;  // --preset, --set, --record, --frames for a case or scene
 };
 
 // Opens the inspector: a window, or with --headless the same frames rendered offscreen.
@@ -81,10 +79,7 @@ struct WorksheetOptions {
     std::string file;                // a lesson, case, scene or trace
     std::vector<std::string> steps;  // --steps: places in the --goto syntax; empty = the first recorded frame
     std::string out;                 // .json or .csv
-    std::optional<std::string> preset;
-    std::vector<std::string> settings;
-    std::vector<std::string> record;
-    std::optional<int> frames;
+    inspect::OpenOptions open;       // --preset, --set, --record, --frames for a case or scene
 };
 int worksheet_command(const WorksheetOptions& options, std::ostream& out);
 
@@ -95,10 +90,7 @@ struct DiffOptions {
     double atol = 1e-12;
     std::string format = "text";  // text, json or csv
     std::optional<std::string> out;
-    std::optional<std::string> preset;
-    std::vector<std::string> settings;
-    std::vector<std::string> record;
-    std::optional<int> frames;
+    inspect::OpenOptions open;  // --preset, --set, --record, --frames for a case or scene
 };
 // Returns exit_ok when everything matches, exit_failure for a mismatch, a blank cell or (of several files) one
 // that could not be read; throws for a bad reference, flag or single file.

@@ -81,11 +81,8 @@ inspect::Session open_reference(const DiffOptions& o) {
     try {
         document = io::parse_json_text(text);
         if (coursework::is_worksheet(document)) {
-            if (o.preset || !o.settings.empty() || !o.record.empty() || o.frames)
-                throw io::InputError(o.preset              ? "--preset"
-                                     : !o.settings.empty() ? "--set"
-                                     : o.frames            ? "--frames"
-                                                           : "--record",
+            if (const auto flag = o.open.first_given())
+                throw io::InputError(std::string(*flag),
                                      "a worksheet reference is re-run as it was made; give the case or scene to "
                                      "run it differently");
             return inspect::Session::from_trace(coursework::rerun_reference(document), inspect::SourceKind::trace_file,
@@ -95,7 +92,7 @@ inspect::Session open_reference(const DiffOptions& o) {
         if (e.where().starts_with("--")) throw;
         throw FileError{o.reference, e.where(), e.problem()};
     }
-    return inspect::Session::open(o.reference, inspect::OpenOptions{o.preset, o.settings, o.record, o.frames});
+    return inspect::Session::open(o.reference, o.open);
 }
 
 void check_tolerance(double value, const char* flag) {

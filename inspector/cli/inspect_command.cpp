@@ -52,8 +52,7 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
     }
 
     const auto start = std::chrono::steady_clock::now();
-    inspect::Session session = inspect::Session::open(
-        options.file, inspect::OpenOptions{options.preset, options.settings, options.record, options.frames});
+    inspect::Session session = inspect::Session::open(options.file, options.open);
     run.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.go_to)
         session.move_to(

@@ -25,12 +25,6 @@ std::filesystem::path lessons_folder(const LessonOptions& options) {
                                   : std::filesystem::path(IMPULSE_LESSONS_DIR);
 }
 
-int question_count(const lessons::Lesson& lesson) {
-    int n = 0;
-    for (const lessons::Step& s : lesson.steps) n += s.question ? 1 : 0;
-    return n;
-}
-
 int list_lessons(const LessonOptions& options, const lessons::Progress& progress, std::ostream& out,
                  std::ostream& err) {
     const std::filesystem::path folder = lessons_folder(options);
@@ -41,7 +35,7 @@ int list_lessons(const LessonOptions& options, const lessons::Progress& progress
     for (const std::filesystem::path& file : files) {
         try {
             const lessons::Lesson lesson = lessons::read_lesson(file);
-            const int questions = question_count(lesson);
+            const int questions = lessons::question_count(lesson);
             int answered = 0, right = 0;
             if (const auto p = progress.lessons.find(lesson.name); p != progress.lessons.end())
                 for (const auto& [id, record] : p->second.answers) ++answered, right += record.correct ? 1 : 0;

@@ -4,6 +4,7 @@
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
 #include "cli/progress.hpp"
+#include "explain/csv.hpp"
 #include "explain/format.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
@@ -22,14 +23,6 @@ namespace impulse::cli {
 
 namespace {
 
-// A name as a CSV field: quoted when it holds a comma, a quote or a line break.
-std::string csv_name(const std::string& name) {
-    if (name.find_first_of(",\"\n\r") == std::string::npos) return name;
-    std::string quoted = "\"";
-    for (char c : name) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-}
-
 // One CSV row per body per frame; frame -1 is the scene as given (time 0).
 void append_states(std::string& csv, int frame, double time, const Scene& scene, const std::vector<RigidBody>& bodies) {
     char line[512];
@@ -37,7 +30,7 @@ void append_states(std::string& csv, int frame, double time, const Scene& scene,
         const RigidBody& b = bodies[i];
         std::snprintf(line, sizeof line, "%d,%.17g,%zu,", frame, time, i);
         csv += line;
-        csv += csv_name(scene.body_names[i]);
+        csv += explain::csv_field(scene.body_names[i]);
         std::snprintf(line, sizeof line,
                       ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
                       b.position.x(), b.position.y(), b.position.z(), b.orientation.w(), b.orientation.x(),

@@ -23,8 +23,7 @@ std::string check_file(const std::string& path) {
     if (path.ends_with(".md")) {
         // A lesson: its header and sections, then its run, places and answers.
         const lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(path));
-        std::size_t questions = 0;
-        for (const lessons::Step& s : lesson.lesson.steps) questions += s.question ? 1 : 0;
+        const auto questions = static_cast<std::size_t>(lessons::question_count(lesson.lesson));
         return "valid lesson " + std::to_string(lesson.lesson.number) + " (" +
                count(lesson.lesson.steps.size(), "step", "steps") + ", " + count(questions, "question", "questions") +
                ")";

@@ -35,16 +35,14 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out) {
     // compute something to fill in (a step that only shows a choice has no cells).
     std::optional<lessons::PreparedLesson> lesson;
     if (ends_with_case_blind(options.file, ".md")) {
-        if (options.preset || !options.settings.empty() || !options.record.empty() || options.frames)
+        if (options.open.preset || !options.open.settings.empty() || !options.open.record.empty() ||
+            options.open.frames)
             throw io::InputError("worksheet",
                                  "a lesson runs with its own settings; give its scene file to change "
                                  "them");
         lesson.emplace(lessons::prepare_lesson(lessons::read_lesson(options.file)));
     }
-    const inspect::Session session =
-        lesson ? lesson->session
-               : inspect::Session::open(options.file, inspect::OpenOptions{options.preset, options.settings,
-                                                                           options.record, options.frames});
+    const inspect::Session session = lesson ? lesson->session : inspect::Session::open(options.file, options.open);
     const Trace& trace = session.trace();
     std::vector<inspect::Cursor> places;
     if (!options.steps.empty())

@@ -1,6 +1,6 @@
 #include "coursework/diff_report.hpp"
 
-#include "coursework/csv.hpp"
+#include "explain/csv.hpp"
 #include "coursework/worksheet.hpp"
 #include "explain/text_table.hpp"
 #include "io/input_error.hpp"
@@ -130,9 +130,9 @@ std::string report_csv(const DiffReport& report) {
     std::string text = "kind,path,expected,found,relative_error,quantity,formula,equation,first_divergence\n";
     const auto cell = [](const io::json& v) { return v.is_structured() ? v.dump() : scalar_text(v); };
     for (const Finding& f : report.findings)
-        text += csv_row({std::string(finding_kind_name(f.kind)), f.path, cell(f.expected), cell(f.found),
-                         f.relative_error ? io::number_text(*f.relative_error) : "", f.quantity, f.formula, f.equation,
-                         f.first_divergence ? "true" : "false"});
+        text += explain::csv_row({std::string(finding_kind_name(f.kind)), f.path, cell(f.expected), cell(f.found),
+                                  f.relative_error ? io::number_text(*f.relative_error) : "", f.quantity, f.formula,
+                                  f.equation, f.first_divergence ? "true" : "false"});
     return text;
 }
 
@@ -186,13 +186,13 @@ std::string summary_csv(const std::vector<ClassRow>& rows) {
     std::string text = "file,matched,mismatched,blank,first_divergence,error\n";
     for (const ClassRow& row : rows) {
         if (!row.report) {
-            text += csv_row({row.file, "", "", "", "", row.error});
+            text += explain::csv_row({row.file, "", "", "", "", row.error});
             continue;
         }
         const DiffReport& r = *row.report;
         const Finding* first = r.first_divergence();
-        text += csv_row({row.file, std::to_string(r.matched), std::to_string(r.mismatched), std::to_string(r.blank),
-                         first ? first->path : "", ""});
+        text += explain::csv_row({row.file, std::to_string(r.matched), std::to_string(r.mismatched),
+                                  std::to_string(r.blank), first ? first->path : "", ""});
     }
     return text;
 }

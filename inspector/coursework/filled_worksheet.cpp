@@ -1,6 +1,6 @@
 #include "coursework/filled_worksheet.hpp"
 
-#include "coursework/csv.hpp"
+#include "explain/csv.hpp"
 #include "coursework/worksheet.hpp"
 #include "io/input_error.hpp"
 #include "io/schemas.hpp"
@@ -64,7 +64,7 @@ FilledWorksheet read_worksheet_json(const io::json& document) {
 }
 
 FilledWorksheet read_worksheet_csv(std::string_view text) {
-    const std::vector<CsvRow> rows = parse_csv(text);
+    const std::vector<explain::CsvRow> rows = explain::parse_csv(text);
     if (rows.empty()) throw io::InputError("line 1", "no header: expected " + std::string(worksheet_csv_header));
     const std::vector<std::string>& header = rows.front().fields;
     const auto column = [&header](const char* name) {

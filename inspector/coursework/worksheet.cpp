@@ -1,6 +1,6 @@
 #include "coursework/worksheet.hpp"
 
-#include "coursework/csv.hpp"
+#include "explain/csv.hpp"
 #include "coursework/step_keys.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_file.hpp"
@@ -336,7 +336,7 @@ std::string worksheet_csv(const Worksheet& sheet) {
         for_each_scalar(e.value, e.path, [&](const std::string& path, const io::json& v) {
             const std::string quantity = e.quantity + path.substr(e.path.size());
             const std::string value = blank ? "" : v.is_null() ? "null" : scalar_text(v);
-            text += csv_row({kind, path, e.step, quantity, value, e.unit, e.formula, e.equation, e.meaning});
+            text += explain::csv_row({kind, path, e.step, quantity, value, e.unit, e.formula, e.equation, e.meaning});
         });
     };
     for (const WorksheetStep& s : sheet.steps) {

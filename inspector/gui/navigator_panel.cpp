@@ -11,17 +11,13 @@ namespace {
 using inspect::Cursor;
 using inspect::Stage;
 
-std::string body_label(const Trace& trace, int body) {
-    return body == world_body ? std::string("world") : trace.scene.body_names[static_cast<std::size_t>(body)];
-}
-
 // `secret`: a lesson's open question asks for this kind of value, so it is not shown.
 std::string item_label(const Trace& trace, const FrameRecord& frame, Stage stage, int item, bool secret) {
     const auto i = static_cast<std::size_t>(item);
     if (stage == Stage::preparation) {
         const ContactPreparation& c = frame.contacts[i];
-        return "contact " + std::to_string(c.contact) + " · " + body_label(trace, c.bodies[0]) + " / " +
-               body_label(trace, c.bodies[1]);
+        return "contact " + std::to_string(c.contact) + " · " + inspect::body_label(trace, c.bodies[0]) + " / " +
+               inspect::body_label(trace, c.bodies[1]);
     }
     if (stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[i];

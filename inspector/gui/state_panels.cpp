@@ -65,10 +65,6 @@ bool begin_list_table(const char* id, std::initializer_list<Column> columns) {
     return true;
 }
 
-std::string body_label(const Trace& trace, int body) {
-    return body == world_body ? std::string("world") : trace.scene.body_names[static_cast<std::size_t>(body)];
-}
-
 }  // namespace
 
 void draw_contacts(inspect::Session& session, UiState& state) {
@@ -103,8 +99,8 @@ void draw_contacts(inspect::Session& session, UiState& state) {
             if (row.contact == current && v.scroll_to_cursor) ImGui::SetScrollHereY(0.4f);
             ImGui::PopID();
             ImGui::TableSetColumnIndex(1);
-            ImGui::Text("%s / %s", body_label(trace, row.prepared->bodies[0]).c_str(),
-                        body_label(trace, row.prepared->bodies[1]).c_str());
+            ImGui::Text("%s / %s", inspect::body_label(trace, row.prepared->bodies[0]).c_str(),
+                        inspect::body_label(trace, row.prepared->bodies[1]).c_str());
             ImGui::PushFont(value_font());
             ImGui::TableSetColumnIndex(2);
             ImGui::TextUnformatted(hidden == "penetration" ? "?" : explain::number(row.penetration).c_str());

@@ -221,6 +221,11 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
     return lesson;
 }
 
+int question_count(const Lesson& lesson) {
+    return static_cast<int>(
+        std::count_if(lesson.steps.begin(), lesson.steps.end(), [](const Step& s) { return s.question.has_value(); }));
+}
+
 Lesson read_lesson(const std::filesystem::path& file) {
     try {
         return read_lesson_text(cli::read_input_file(file.string()), file);
@@ -266,7 +271,10 @@ PreparedLesson prepare_lesson(Lesson lesson) {
         try {
             return inspect::Session::open(scene_file, options);
         } catch (const io::InputError& e) {
-            throw cli::FileError{file, e.where() == "--set" ? "set" : e.where() == "--record" ? "record" : e.where(),
+            throw cli::FileError{file,
+                                 e.where() == "--set"      ? "set"
+                                 : e.where() == "--record" ? "record"
+                                                           : e.where(),
                                  e.problem()};
         }
     }();

@@ -50,9 +50,12 @@ struct Lesson {
     std::vector<std::string> settings;
     std::optional<int> frames;
     std::vector<std::string> record;  // as --record takes them: frames=A..B, contacts=I,J
-    std::string introduction;  // the text before the first section
+    std::string introduction;         // the text before the first section
     std::vector<Step> steps;
 };
+
+// How many of the lesson's steps ask a question.
+int question_count(const Lesson& lesson);
 
 // Throws io::InputError("line N" or a header JSON path, problem); `file` names the lesson.
 Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file);

@@ -1,19 +1,8 @@
 #include "model/derivation_view.hpp"
 
+#include "explain/csv.hpp"
+
 namespace impulse::inspect {
-
-namespace {
-
-std::string csv_field(std::string text) {
-    // A matrix is formatted one row per line; a CSV row stays on one line.
-    for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at)) text.replace(at, 1, "; ");
-    if (text.find_first_of(",\"\r") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-}
-
-}  // namespace
 
 DerivationView derivation_view(const Trace& trace, const Cursor& cursor) {
     const std::vector<explain::StepTable> tables = step_tables(trace, cursor);
@@ -32,10 +21,12 @@ DerivationView derivation_view(const Trace& trace, const Cursor& cursor) {
 std::string derivation_csv(const DerivationView& view) {
     std::string csv = "step,quantity,value,other_frame,formula,equation,meaning,changed\n";
     for (const ViewRow& r : view.rows) {
-        for (const std::string* field : {&r.step, &r.row.quantity, &r.row.value, &r.row.other_frame, &r.row.formula,
-                                         &r.row.equation, &r.row.meaning})
-            csv += csv_field(*field) + ",";
-        csv += r.changed ? "yes\n" : "no\n";
+        // A matrix is formatted one row per line; in CSV its rows are joined by "; ".
+        std::string value = r.row.value;
+        for (std::size_t at = value.find('\n'); at != std::string::npos; at = value.find('\n', at))
+            value.replace(at, 1, "; ");
+        csv += explain::csv_row({r.step, r.row.quantity, value, r.row.other_frame, r.row.formula, r.row.equation,
+                                 r.row.meaning, r.changed ? "yes" : "no"});
     }
     return csv;
 }

@@ -441,6 +441,10 @@ std::optional<Cursor> nearest_cursor(const Trace& trace, const Location& where) 
     return c;
 }
 
+std::string body_label(const Trace& trace, int body) {
+    return body == world_body ? std::string("world") : trace.scene.body_names[static_cast<std::size_t>(body)];
+}
+
 std::string describe(const Trace& trace, const Cursor& c) {
     const FrameRecord& frame = frame_at(trace, c);
     std::string text = "frame " + std::to_string(frame.frame) + " · ";

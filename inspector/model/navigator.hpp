@@ -101,6 +101,9 @@ Location location_of(const Trace& trace, const Cursor& cursor);
 // same step by name; whatever no longer exists falls back to the closest that does.
 std::optional<Cursor> nearest_cursor(const Trace& trace, const Location& location);
 
+// A body's name in the trace's scene, or "world" for the static world (world_body).
+std::string body_label(const Trace& trace, int body);
+
 // "frame 0 · velocity phase · iteration 3 · contact 1 · impulse"
 std::string describe(const Trace& trace, const Cursor& cursor);
 

@@ -41,12 +41,9 @@ Session Session::open(const std::string& path, const OpenOptions& options) {
     for (const std::string& spec : options.record) cli::apply_record_spec(spec, s.recording_);
     if (s.kind_ == SourceKind::trace_file) {
         // A trace is shown as recorded; its header is what a changed setting re-runs.
-        if (options.preset || !options.settings.empty() || !options.record.empty() || options.frames)
+        if (const auto flag = options.first_given())
             throw io::InputError(
-                options.preset              ? "--preset"
-                : !options.settings.empty() ? "--set"
-                : options.frames            ? "--frames"
-                                            : "--record",
+                std::string(*flag),
                 "a trace is shown as it was recorded; give a scene or case file to run it differently");
         s.scene_ = s.trace_.scene;
         s.recording_ = s.trace_.recording;

@@ -7,6 +7,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace impulse::inspect {
@@ -22,6 +23,16 @@ struct OpenOptions {
     std::vector<std::string> settings;  // --set name=value, in order
     std::vector<std::string> record;    // --record frames=A..B / contacts=I,J
     std::optional<int> frames;          // frames to simulate for a scene (default: up to 60, the first second)
+
+    // The flag of the first option given ("--preset", "--set", "--frames", "--record"), or none: for the
+    // sources that run as they were made (a trace, a worksheet, a lesson) and refuse all four.
+    std::optional<std::string_view> first_given() const {
+        if (preset) return "--preset";
+        if (!settings.empty()) return "--set";
+        if (frames) return "--frames";
+        if (!record.empty()) return "--record";
+        return std::nullopt;
+    }
 };
 
 inline constexpr int default_inspect_frames = 60;

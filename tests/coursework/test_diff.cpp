@@ -2,7 +2,7 @@
 // student's engine would) graded cell by cell, a folder of submissions summarised one row per file, and
 // bad input refused in one line.
 
-#include "coursework/csv.hpp"
+#include "explain/csv.hpp"
 #include "coursework/diff.hpp"
 #include "coursework/json_path.hpp"
 #include "coursework/worksheet.hpp"
@@ -88,9 +88,9 @@ std::string filled_csv(const std::string& file, const std::vector<std::string>& 
     for (const std::string& s : steps) args.insert(args.end(), {"--steps", s});
     REQUIRE(run_cli(args).code == 0);
     std::string text;
-    for (CsvRow& row : parse_csv(read_text(sheet))) {
+    for (explain::CsvRow& row : explain::parse_csv(read_text(sheet))) {
         if (row.fields[0] == "cell") row.fields[4] = scalar_text(*value_at(trace, parse_json_path(row.fields[1], "")));
-        text += csv_row(row.fields);
+        text += explain::csv_row(row.fields);
     }
     return text;
 }
@@ -330,7 +330,7 @@ TEST_CASE("a folder of filled worksheets is graded into a CSV, one row per file,
     const std::string cy = dir.file("class/cy.json").string();
     CHECK(r.err == "impulse-lab: " + cy + ": version: must be 1, got 2\n");
     CHECK(r.out == read_text(grades));
-    const std::vector<CsvRow> rows = parse_csv(read_text(grades));
+    const std::vector<explain::CsvRow> rows = explain::parse_csv(read_text(grades));
     REQUIRE(rows.size() == 4);
     CHECK(rows[0].fields ==
           std::vector<std::string>{"file", "matched", "mismatched", "blank", "first_divergence", "error"});

@@ -2,7 +2,7 @@
 // shipped cases write under every method), the inputs and cells of a step, the places --steps names, the
 // files `impulse-lab worksheet` writes, and the paths and CSV they are written in.
 
-#include "coursework/csv.hpp"
+#include "explain/csv.hpp"
 #include "coursework/json_path.hpp"
 #include "coursework/step_keys.hpp"
 #include "coursework/worksheet.hpp"
@@ -252,9 +252,9 @@ TEST_CASE("worksheet writes CSV with one row per number, each input once") {
                                              "phase=velocity,iteration=0,step=impulse", "--steps",
                                              "phase=velocity,iteration=0,step=velocity_change"});
     CHECK(r.code == 0);
-    const std::vector<CsvRow> rows = parse_csv(read_text(out));
+    const std::vector<explain::CsvRow> rows = explain::parse_csv(read_text(out));
     REQUIRE(rows.size() > 1);
-    CHECK(csv_row(rows[0].fields) == std::string(worksheet_csv_header) + "\n");
+    CHECK(explain::csv_row(rows[0].fields) == std::string(worksheet_csv_header) + "\n");
     std::size_t cells = 0;
     std::set<std::string> paths;
     for (auto row = rows.begin() + 1; row != rows.end(); ++row) {
@@ -346,13 +346,13 @@ TEST_CASE("a path reads back as json_path_child and json_path_index wrote it") {
 
 TEST_CASE("CSV fields round trip through quoting, CRLF line ends and a byte-order mark") {
     const std::vector<std::string> fields{"plain", "a, b", "say \"hi\"", "two\nlines", ""};
-    const std::string text = "\xEF\xBB\xBF" + csv_row(fields) + "x,y\r\n\r\nz\n";
-    const std::vector<CsvRow> rows = parse_csv(text);
+    const std::string text = "\xEF\xBB\xBF" + explain::csv_row(fields) + "x,y\r\n\r\nz\n";
+    const std::vector<explain::CsvRow> rows = explain::parse_csv(text);
     REQUIRE(rows.size() == 3);
     CHECK(rows[0].fields == fields);
     CHECK(rows[1].line == 3);
     CHECK(rows[1].fields == std::vector<std::string>{"x", "y"});
     CHECK(rows[2].line == 5);
-    CHECK_THROWS_AS(parse_csv("a,\"open\n"), io::InputError);
-    CHECK_THROWS_AS(parse_csv("\"closed\"x\n"), io::InputError);
+    CHECK_THROWS_AS(explain::parse_csv("a,\"open\n"), io::InputError);
+    CHECK_THROWS_AS(explain::parse_csv("\"closed\"x\n"), io::InputError);
 }

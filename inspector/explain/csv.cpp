@@ -1,8 +1,8 @@
-#include "coursework/csv.hpp"
+#include "explain/csv.hpp"
 
 #include "io/input_error.hpp"
 
-namespace impulse::coursework {
+namespace impulse::explain {
 
 std::string csv_field(std::string_view text) {
     if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
@@ -70,4 +70,4 @@ std::vector<CsvRow> parse_csv(std::string_view text) {
     return rows;
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::explain

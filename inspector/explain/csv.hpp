@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::coursework {
+namespace impulse::explain {
 
 // The field as written into a row: quoted only when it must be.
 std::string csv_field(std::string_view text);
@@ -23,4 +23,4 @@ struct CsvRow {
 // throws io::InputError("line N", ...) for a quote left open or text after a closing quote.
 std::vector<CsvRow> parse_csv(std::string_view text);
 
-}  // namespace impulse::coursework
+}  // namespace impulse::explain

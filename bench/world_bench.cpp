@@ -39,8 +39,9 @@ Figures simulate(const Scene& scene, int frames) {
     std::vector<RigidBody> bodies = scene.bodies;
     Recorder nobody;
     const std::size_t top = highest_body(scene);
+    ContactMemory memory;
     for (int frame = 0; frame < frames; ++frame) {
-        const StepReport r = step(scene, bodies, nobody, frame);
+        const StepReport r = step(scene, bodies, nobody, frame, &memory);
         f.stage_ms.integrate += r.times.integrate * 1e3 / frames;
         f.stage_ms.broad_phase += r.times.broad_phase * 1e3 / frames;
         f.stage_ms.narrow_phase += r.times.narrow_phase * 1e3 / frames;

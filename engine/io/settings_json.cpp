@@ -22,6 +22,23 @@ void apply_fields(Scene& scene, const json& object, std::string_view path) {
     if (has("phase_order")) s.phase_order = read_enum(phase_order_names, object["phase_order"]);
     if (has("position_method")) s.position_method = read_enum(position_method_names, object["position_method"]);
     if (has("velocity_method")) s.velocity_method = read_enum(velocity_method_names, object["velocity_method"]);
+    if (has("worst_first_search"))
+        s.worst_first_search = read_enum(worst_first_search_names, object["worst_first_search"]);
+    if (has("sweeps")) s.sweeps = object["sweeps"].get<int>();
+    if (has("warm_start")) s.warm_start = object["warm_start"].get<bool>();
+    if (has("position_bias")) {
+        const json& bias = object["position_bias"];
+        if (bias.contains("factor")) s.position_bias.factor = bias["factor"].get<double>();
+        if (bias.contains("slop")) s.position_bias.slop = bias["slop"].get<double>();
+    }
+    if (has("soft_step")) {
+        const json& soft = object["soft_step"];
+        if (soft.contains("substeps")) s.soft_step.substeps = soft["substeps"].get<int>();
+        if (soft.contains("contact_hertz")) s.soft_step.contact_hertz = soft["contact_hertz"].get<double>();
+        if (soft.contains("damping_ratio")) s.soft_step.damping_ratio = soft["damping_ratio"].get<double>();
+        if (soft.contains("max_push_velocity"))
+            s.soft_step.max_push_velocity = soft["max_push_velocity"].get<double>();
+    }
     if (has("angular_limit")) {
         const json& limit = object["angular_limit"];
         if (limit.contains("policy")) {
@@ -71,7 +88,7 @@ void read_settings(Scene& scene, const json* settings, std::string_view path,
     if (settings && settings->contains("preset")) preset_name = (*settings)["preset"].get<std::string>();
     if (preset_override) preset_name = *preset_override;
     const std::optional<ResolverSettings> s = preset(preset_name);
-    if (!s) throw InputError("--preset", "unknown preset \"" + preset_name + "\"; expected \"book\" or \"chapter\"");
+    if (!s) throw InputError("--preset", "unknown preset \"" + preset_name + "\"; expected one of " + preset_list_text());
     scene.settings = *s;
     if (settings) apply_fields(scene, *settings, path);
 }
@@ -83,6 +100,15 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
         {"phase_order", name_of(phase_order_names, s.phase_order)},
         {"position_method", name_of(position_method_names, s.position_method)},
         {"velocity_method", name_of(velocity_method_names, s.velocity_method)},
+        {"worst_first_search", name_of(worst_first_search_names, s.worst_first_search)},
+        {"sweeps", s.sweeps},
+        {"warm_start", s.warm_start},
+        {"position_bias", {{"factor", s.position_bias.factor}, {"slop", s.position_bias.slop}}},
+        {"soft_step",
+         {{"substeps", s.soft_step.substeps},
+          {"contact_hertz", s.soft_step.contact_hertz},
+          {"damping_ratio", s.soft_step.damping_ratio},
+          {"max_push_velocity", s.soft_step.max_push_velocity}}},
         {"angular_limit",
          {{"policy", name_of(angular_limit_policy_names, s.angular_limit.policy)}, {"factor", s.angular_limit.factor}}},
         {"relaxation", {{"fraction", s.relaxation.fraction}, {"passes", s.relaxation.passes}}},
@@ -126,7 +152,7 @@ void apply_setting(Scene& scene, std::string_view assignment, std::string_view f
     if (object.contains("preset")) {
         const std::optional<ResolverSettings> base =
             preset(object["preset"].is_string() ? object["preset"].get<std::string>() : "");
-        if (!base) throw InputError(std::string(flag), "preset: must be \"book\" or \"chapter\", got " + value.dump());
+        if (!base) throw InputError(std::string(flag), "preset: must be one of " + preset_list_text() + ", got " + value.dump());
         scene.settings = *base;
         return;
     }

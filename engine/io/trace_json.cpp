@@ -277,9 +277,17 @@ json velocity_iteration_json(const VelocityIteration& it) {
                 {"contact", it.contact},
                 {"desired_delta_velocity", it.desired_delta_velocity},
                 {"epsilon", it.epsilon}};
+    if (const auto& w = it.sweep)
+        out["sweep"] = {{"substep", w->substep}, {"pass", w->pass}, {"stage", name_of(solver_stage_names, w->stage)}};
+    if (const auto& a = it.accumulated)
+        out["accumulated"] = {{"before", vec3_json(a->before)},
+                              {"unclamped", vec3_json(a->unclamped)},
+                              {"after", vec3_json(a->after)},
+                              {"clamp", name_of(impulse_clamp_names, a->clamp)}};
     if (const auto& r = it.resolution) {
         out["contact_velocity"] = vec3_json(r->contact_velocity);
         write_desired(out, r->desired_delta_velocity);
+        if (r->position_bias) out["position_bias"] = *r->position_bias;
         out["impulse_model"] = name_of(impulse_model_names, r->impulse.model);
         if (r->impulse.friction) out["friction_solve"] = friction_solve_json(*r->impulse.friction);
         out["impulse_contact"] = vec3_json(r->impulse.impulse_contact);
@@ -308,10 +316,20 @@ VelocityIteration read_velocity_iteration(const json& j) {
     it.contact = j["contact"].get<int>();
     it.desired_delta_velocity = j["desired_delta_velocity"].get<double>();
     it.epsilon = j["epsilon"].get<double>();
+    if (j.contains("sweep")) {
+        const json& w = j["sweep"];
+        it.sweep = SweepPlace{w["substep"].get<int>(), w["pass"].get<int>(), read_enum(solver_stage_names, w["stage"])};
+    }
+    if (j.contains("accumulated")) {
+        const json& a = j["accumulated"];
+        it.accumulated = AccumulatedImpulse{read_vec3(a["before"]), read_vec3(a["unclamped"]), read_vec3(a["after"]),
+                                            read_enum(impulse_clamp_names, a["clamp"])};
+    }
     if (j.contains("impulse_model")) {
         VelocityResolution r;
         r.contact_velocity = read_vec3(j["contact_velocity"]);
         r.desired_delta_velocity = read_desired(j);
+        if (j.contains("position_bias")) r.position_bias = j["position_bias"].get<double>();
         r.impulse.model = read_enum(impulse_model_names, j["impulse_model"]);
         if (j.contains("friction_solve")) r.impulse.friction = read_friction_solve(j["friction_solve"]);
         r.impulse.impulse_contact = read_vec3(j["impulse_contact"]);

@@ -58,18 +58,58 @@ struct PositionIteration {
 struct VelocityResolution {
     Vec3 contact_velocity;                        // step 4 as the bookkeeping has it now
     DesiredDeltaVelocity desired_delta_velocity;  // step 5 re-evaluated on that velocity
-    Impulse impulse;                              // step 6
+    std::optional<double> position_bias;          // baumgarte / split impulse / soft step: velocity added to the
+                                                  // target to push the bodies apart (m/s), included above
+    Impulse impulse;                              // step 6 (for an accumulating solver: the clamped increment)
     VelocityChange velocity_change;               // step 7
 
     bool operator==(const VelocityResolution&) const = default;
 };
 
+// Which limit an accumulating solver (projected Gauss-Seidel, soft step) applied to a contact's running total.
+enum class ImpulseClamp {
+    none,      // the total stayed inside its limits
+    push_only, // the normal total would have pulled (< 0): set to 0
+    friction,  // the tangential total left the cone |f_t| <= mu f_n: scaled back onto it
+    both,
+};
+
+// Sequential impulses keep a running total per contact; each visit changes it, and only the change is applied.
+struct AccumulatedImpulse {
+    Vec3 before;     // contact coordinates: the total before this visit
+    Vec3 unclamped;  // before + this visit's raw impulse
+    Vec3 after;      // after the clamp; the impulse applied this visit is after - before
+    ImpulseClamp clamp = ImpulseClamp::none;
+
+    bool operator==(const AccumulatedImpulse&) const = default;
+};
+
+// What a sweeping solver was doing when it visited the contact.
+enum class SolverStage {
+    warm_start,   // last frame's total applied again at the start
+    solve,        // a sweep with the position bias
+    relax,        // soft step: a sweep without the bias, removing the velocity the bias added
+    restitution,  // soft step: the bounce, applied once after the sub-steps
+    push,         // split impulse: a sweep on the pseudo-velocities that only move positions
+};
+
+struct SweepPlace {
+    int substep = 0;  // soft step's sub-step; 0 otherwise
+    int pass = 0;     // sweep number within the stage
+    SolverStage stage = SolverStage::solve;
+
+    bool operator==(const SweepPlace&) const = default;
+};
+
 struct VelocityIteration {
     int iteration;
-    int contact;                    // the contact chosen: the largest desired delta v above the epsilon
+    int contact;                    // the contact chosen: the largest desired delta v above the epsilon (or the
+                                    // contact a sweep visits)
     double desired_delta_velocity;  // its value, compared with the epsilon
     double epsilon;
-    std::optional<VelocityResolution> resolution;  // absent when filtered out
+    std::optional<SweepPlace> sweep;                // every method but worst-first: where in the sweeps
+    std::optional<AccumulatedImpulse> accumulated;  // projected Gauss-Seidel and soft step
+    std::optional<VelocityResolution> resolution;   // absent when filtered out
     std::vector<VelocityUpdate> updates;
 
     bool operator==(const VelocityIteration&) const = default;

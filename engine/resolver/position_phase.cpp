@@ -29,6 +29,8 @@ PositionResolution projection_for(const PreparedContact& contact, double amount,
             }
             return velocity_based(contact, motion, time_left, settings.angular_limit, settings.orientation_update);
         }
+        case PositionMethod::baumgarte:
+        case PositionMethod::split_impulse:  // velocity-level methods: never projected (resolve_positions)
         case PositionMethod::nonlinear_projection:
         case PositionMethod::relaxation: {
             PositionResolution r =

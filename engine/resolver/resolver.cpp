@@ -6,12 +6,14 @@
 namespace impulse {
 
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
-                                   const ResolverSettings& settings, Recorder& recorder, int frame) {
+                                   const ResolverSettings& settings, Recorder& recorder, int frame,
+                                   ContactMemory* memory) {
     const std::vector<MassProperties> mass = mass_properties(bodies);
     recorder.begin_frame(frame, bodies, mass);
     std::vector<PreparedContact> prepared = prepare_contacts(contacts, bodies, mass, settings);
     recorder.contacts_prepared(prepared);
 
+    (void)memory;  // read by the warm-starting methods
     ResolutionSummary summary;
     if (settings.phase_order == PhaseOrder::positions_first) {
         summary.position = resolve_positions(bodies, prepared, settings, recorder);

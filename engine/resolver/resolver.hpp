@@ -4,6 +4,7 @@
 
 #include "body/rigid_body.hpp"
 #include "contact/contact.hpp"
+#include "memory/contact_memory.hpp"
 #include "record/recorder.hpp"
 #include "resolver/settings.hpp"
 
@@ -21,8 +22,10 @@ struct ResolutionSummary {
 
 // Resolves `contacts` between `bodies` once (one frame), changing the bodies' positions, orientations and
 // velocities. Contacts must name bodies inside the list, body 0 and body 1 different, unit normals.
+// `memory` carries warm-starting solvers' impulses from frame to frame (nothing = start cold every frame).
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
-                                   const ResolverSettings& settings, Recorder& recorder, int frame = 0);
+                                   const ResolverSettings& settings, Recorder& recorder, int frame = 0,
+                                   ContactMemory* memory = nullptr);
 
 // The same with nobody listening.
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,

@@ -14,11 +14,17 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 }
 
 namespace {
-constexpr std::array<std::string_view, 2> names{"book", "chapter"};
+constexpr std::array<std::string_view, 6> names{"book", "chapter", "sweep", "pgs", "pgs_split", "soft_step"};
 }
 
 std::span<const std::string_view> preset_names() {
     return names;
+}
+
+std::string preset_list_text() {
+    std::string text;
+    for (const std::string_view name : names) text += (text.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+    return text;
 }
 
 std::optional<ResolverSettings> preset(std::string_view name) {
@@ -29,6 +35,24 @@ std::optional<ResolverSettings> preset(std::string_view name) {
         s.phase_order = PhaseOrder::velocities_first;
         s.angular_limit = {AngularLimitPolicy::fixed, default_angular_limit_factor(AngularLimitPolicy::fixed)};
         s.refinements = {0.0, false, false};
+        return s;
+    }
+    s.preset = std::string(name);
+    if (name == "sweep") {
+        s.velocity_method = VelocityMethod::sequential_sweep;
+        return s;
+    }
+    if (name == "pgs" || name == "pgs_split") {
+        s.velocity_method = VelocityMethod::projected_gauss_seidel;
+        s.position_method = name == "pgs" ? PositionMethod::baumgarte : PositionMethod::split_impulse;
+        // Bullet: ERP 0.2 for Baumgarte; its split impulse pushes with ERP2 0.8 on the pseudo-velocities.
+        s.position_bias.factor = name == "pgs" ? 0.2 : 0.8;
+        return s;
+    }
+    if (name == "soft_step") {
+        s.velocity_method = VelocityMethod::soft_step;
+        s.position_method = PositionMethod::baumgarte;  // the soft contact carries its own push (see SoftStepSettings)
+        s.sweeps = 1;
         return s;
     }
     return std::nullopt;

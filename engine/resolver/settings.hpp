@@ -20,10 +20,47 @@ enum class PositionMethod {
     nonlinear_projection,  // move and turn them, in proportion to linear and angular inertia (the book)
     velocity_based,        // move them back along their paths, then project whatever remains
     relaxation,            // nonlinear projection of a fraction of each contact's penetration per pass
+    baumgarte,             // no position phase: the velocity targets gain a bias beta (d - slop) / h that
+                           // pushes the bodies apart over the next frames (Baumgarte stabilisation)
+    split_impulse,         // a second velocity solve on pseudo-velocities that only move positions and are
+                           // then discarded, so pushing apart adds no energy (Bullet's split impulse)
 };
 
 enum class VelocityMethod {
-    worst_first,  // the book: resolve the contact with the largest desired delta v, update the others
+    worst_first,             // the book: resolve the contact with the largest desired delta v, update the others
+    sequential_sweep,        // every contact in turn, the book's impulse on its current velocity, `sweeps` times
+    projected_gauss_seidel,  // sequential impulses: accumulated impulse per contact, clamped to push only and
+                             // to the friction cone, warm started from last frame's matching contact
+    soft_step,               // Box2D v3's soft step: sub-steps with soft (spring-damper) contacts, relax, then
+                             // restitution; it integrates the bodies itself
+};
+
+// How worst-first finds its next contact. Both choose the same contacts in the same order and give identical
+// results; full_scan is the reference engine's loop over every contact per iteration (cost ~ contacts^2).
+enum class WorstFirstSearch {
+    priority_queue,  // a max-heap of contacts; after each resolution only the contacts sharing a body change
+    full_scan,       // the book's scan of every contact per iteration
+};
+
+// The velocity-level position correction of baumgarte and split_impulse: the target separating velocity
+// gains factor x max(penetration - slop, 0) / duration.
+struct PositionBiasSettings {
+    double factor = 0.2;   // beta: share of the penetration removed per frame
+    double slop = 0.005;   // m: penetration left alone, so resting contacts do not jitter
+
+    bool operator==(const PositionBiasSettings&) const = default;
+};
+
+// Box2D v3's soft step (solver.c, contact_solver.c): `substeps` sub-steps per frame, each integrating the
+// velocities, solving with a soft contact of stiffness `contact_hertz` and damping ratio `damping_ratio`,
+// integrating the positions and relaxing without the bias; restitution is applied once after the sub-steps.
+struct SoftStepSettings {
+    int substeps = 4;
+    double contact_hertz = 30.0;
+    double damping_ratio = 10.0;
+    double max_push_velocity = 3.0;  // m/s: the fastest the soft contact pushes overlapping bodies apart
+
+    bool operator==(const SoftStepSettings&) const = default;
 };
 
 struct RelaxationSettings {
@@ -46,11 +83,16 @@ struct ResolverSettings {
     PhaseOrder phase_order = PhaseOrder::positions_first;
     PositionMethod position_method = PositionMethod::nonlinear_projection;
     VelocityMethod velocity_method = VelocityMethod::worst_first;
+    WorstFirstSearch worst_first_search = WorstFirstSearch::priority_queue;
     AngularLimitSettings angular_limit{};
     RelaxationSettings relaxation{};
     double position_epsilon = 0.01;  // m: penetrations at or below this are left alone
     double velocity_epsilon = 0.01;  // m/s: desired velocity changes at or below this are left alone
     IterationLimits iterations{};
+    int sweeps = 10;          // sequential_sweep, projected_gauss_seidel, soft_step (per sub-step), split_impulse
+    bool warm_start = true;   // projected_gauss_seidel and soft_step: start from last frame's impulses
+    PositionBiasSettings position_bias{};
+    SoftStepSettings soft_step{};
     VelocityRefinements refinements{};
     OrientationUpdate orientation_update = OrientationUpdate::first_order;
     double duration = 1.0 / 60.0;  // s: the frame the contacts come from (for the acceleration terms)
@@ -67,7 +109,14 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 //            refinements, first-order orientation update then normalise.
 //   chapter  the chapter's text as written: velocities then positions, delta v = -(1 + c) v_s with no
 //            chapter-15 refinements, the text's fixed angular limit of 0.5; otherwise as book.
+//   sweep    the book's impulses and projections, but contacts visited in order, `sweeps` sweeps.
+//   pgs      sequential impulses as production engines use them: projected Gauss-Seidel with accumulated,
+//            clamped, warm-started impulses and Baumgarte bias 0.2 (Bullet's defaults, 10 iterations).
+//   pgs_split   pgs with split impulse instead of Baumgarte (Bullet's split-impulse mode).
+//   soft_step   Box2D v3: 4 sub-steps of soft contacts, one relax sweep each, restitution after.
 std::span<const std::string_view> preset_names();
+// "book", "chapter", ... as one line for error messages.
+std::string preset_list_text();
 std::optional<ResolverSettings> preset(std::string_view name);
 
 }  // namespace impulse

@@ -5,6 +5,7 @@
 #include "contact/contact.hpp"
 #include "derivation/basis.hpp"
 #include "derivation/impulse.hpp"
+#include "record/iteration_records.hpp"
 #include "resolver/settings.hpp"
 
 #include <array>
@@ -21,14 +22,23 @@ inline constexpr NameTable<PhaseOrder, 2> phase_order_names{{
     {PhaseOrder::positions_first, "positions_first"},
     {PhaseOrder::velocities_first, "velocities_first"},
 }};
-inline constexpr NameTable<PositionMethod, 4> position_method_names{{
+inline constexpr NameTable<PositionMethod, 6> position_method_names{{
     {PositionMethod::linear_projection, "linear_projection"},
     {PositionMethod::nonlinear_projection, "nonlinear_projection"},
     {PositionMethod::velocity_based, "velocity_based"},
     {PositionMethod::relaxation, "relaxation"},
+    {PositionMethod::baumgarte, "baumgarte"},
+    {PositionMethod::split_impulse, "split_impulse"},
 }};
-inline constexpr NameTable<VelocityMethod, 1> velocity_method_names{{
+inline constexpr NameTable<VelocityMethod, 4> velocity_method_names{{
     {VelocityMethod::worst_first, "worst_first"},
+    {VelocityMethod::sequential_sweep, "sequential_sweep"},
+    {VelocityMethod::projected_gauss_seidel, "projected_gauss_seidel"},
+    {VelocityMethod::soft_step, "soft_step"},
+}};
+inline constexpr NameTable<WorstFirstSearch, 2> worst_first_search_names{{
+    {WorstFirstSearch::priority_queue, "priority_queue"},
+    {WorstFirstSearch::full_scan, "full_scan"},
 }};
 inline constexpr NameTable<AngularLimitPolicy, 4> angular_limit_policy_names{{
     {AngularLimitPolicy::none, "none"},
@@ -48,6 +58,20 @@ inline constexpr NameTable<ImpulseModel, 3> impulse_model_names{{
     {ImpulseModel::frictionless, "frictionless"},
     {ImpulseModel::static_friction, "static"},
     {ImpulseModel::sliding_friction, "sliding"},
+}};
+
+inline constexpr NameTable<ImpulseClamp, 4> impulse_clamp_names{{
+    {ImpulseClamp::none, "none"},
+    {ImpulseClamp::push_only, "push_only"},
+    {ImpulseClamp::friction, "friction"},
+    {ImpulseClamp::both, "both"},
+}};
+inline constexpr NameTable<SolverStage, 5> solver_stage_names{{
+    {SolverStage::warm_start, "warm_start"},
+    {SolverStage::solve, "solve"},
+    {SolverStage::relax, "relax"},
+    {SolverStage::restitution, "restitution"},
+    {SolverStage::push, "push"},
 }};
 
 inline constexpr NameTable<CollisionTest, 6> collision_test_names{{

@@ -34,8 +34,14 @@ PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<Prep
         const std::optional<int> chosen = worst_contact(contacts, desired_of, settings.velocity_epsilon);
         if (!chosen) break;
         const PreparedContact& contact = contacts[static_cast<std::size_t>(*chosen)];
-        VelocityIteration record{outcome.iterations_used,   *chosen, desired_of(contact), settings.velocity_epsilon,
-                                 resolve_velocity(contact), {}};
+        VelocityIteration record{.iteration = outcome.iterations_used,
+                                 .contact = *chosen,
+                                 .desired_delta_velocity = desired_of(contact),
+                                 .epsilon = settings.velocity_epsilon,
+                                 .sweep = {},
+                                 .accumulated = {},
+                                 .resolution = resolve_velocity(contact),
+                                 .updates = {}};
         const std::array<int, 2> changed = contact.derivation.bodies;
         const VelocityChange& change = record.resolution->velocity_change;
         for (int i = 0; i < 2; ++i) {

@@ -84,7 +84,8 @@ std::size_t highest_body(const Scene& scene) {
     return top;
 }
 
-StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame) {
+StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame,
+                ContactMemory* memory) {
     StepReport report;
     report.frame = frame;
     const double dt = scene.settings.duration;
@@ -101,7 +102,7 @@ StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& re
         report.deepest_penetration = std::max(report.deepest_penetration, c.penetration);
 
     start = Clock::now();
-    report.resolution = resolve_contacts(bodies, detection.contacts, scene.settings, recorder, frame);
+    report.resolution = resolve_contacts(bodies, detection.contacts, scene.settings, recorder, frame, memory);
     report.times.resolve = seconds_since(start);
 
     for (const RigidBody& body : bodies) report.kinetic_energy += kinetic_energy(body);

@@ -41,7 +41,9 @@ struct StepReport {
 std::size_t highest_body(const Scene& scene);
 
 // One frame of `scene.settings.duration` seconds: integrate -> detect -> resolve. `bodies` is the state,
-// changed in place; the scene gives shapes, materials, the ground and the settings.
-StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame);
+// changed in place; the scene gives shapes, materials, the ground and the settings. `memory` keeps
+// warm-starting solvers' impulses between frames; pass the same one every frame of a run.
+StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame,
+                ContactMemory* memory = nullptr);
 
 }  // namespace impulse

@@ -15,13 +15,18 @@ namespace {
 
 constexpr const char* version_text = "impulse-lab " IMPULSE_LAB_VERSION;
 
+std::vector<std::string> preset_choices() {
+    const auto names = preset_names();
+    return {names.begin(), names.end()};
+}
+
 void add_resolve(CLI::App& app, ResolveOptions& o) {
     CLI::App* resolve = app.add_subcommand("resolve",
                                            "Resolve a case's contacts once and record every derivation step.\n"
                                            "Example: impulse-lab resolve scenes/cases/ruler.json --explain");
     resolve->add_option("CASE", o.case_file, "Scene file (JSON): bodies, explicit contacts, settings")->required();
     resolve->add_option("--preset", o.preset, "Settings preset the case's own settings apply on top of")
-        ->check(CLI::IsMember({"book", "chapter"}));
+        ->check(CLI::IsMember(preset_choices()));
     resolve->add_option("--set", o.settings,
                         "Change one setting, e.g. --set position_method=linear_projection or "
                         "--set angular_limit.policy=angle (repeatable; applied after the case's settings)");
@@ -43,7 +48,7 @@ void add_run(CLI::App& app, RunOptions& o) {
     run->add_option("--dt", o.dt, "Frame duration in seconds (default: the scene's settings.duration, 1/60)")
         ->check(CLI::Range(1e-6, 10.0));
     run->add_option("--preset", o.preset, "Settings preset the scene's own settings apply on top of")
-        ->check(CLI::IsMember({"book", "chapter"}));
+        ->check(CLI::IsMember(preset_choices()));
     run->add_option("--set", o.settings, "Change one setting, e.g. --set position_epsilon=0.001 (repeatable)");
     run->add_option("--trace", o.trace_file, "Write the trace of the recorded frames (JSON), atomically");
     run->add_option("--record", o.record,
@@ -53,7 +58,7 @@ void add_run(CLI::App& app, RunOptions& o) {
 
 // How a case or scene is run before it is looked at: the same four flags for inspect, worksheet and diff.
 void add_open_options(CLI::App& command, inspect::OpenOptions& o, const std::string& what) {
-    command.add_option("--preset", o.preset, "Settings preset for " + what)->check(CLI::IsMember({"book", "chapter"}));
+    command.add_option("--preset", o.preset, "Settings preset for " + what)->check(CLI::IsMember(preset_choices()));
     command.add_option("--set", o.settings, "Change one setting of " + what + " (repeatable)");
     command.add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of " + what);
     command.add_option("--frames", o.frames, "Frames to simulate for a scene (default: its own, at most 60)")

@@ -89,8 +89,9 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     std::vector<StepReport> reports;
     reports.reserve(static_cast<std::size_t>(frames));
     ProgressBar bar(progress, frames);
+    ContactMemory memory;
     for (int frame = 0; frame < frames; ++frame) {
-        reports.push_back(step(scene, bodies, recorder, frame));
+        reports.push_back(step(scene, bodies, recorder, frame, &memory));
         if (options.states_file) append_states(states, frame, (frame + 1) * dt, scene, bodies);
         const double drift = (bodies[top].position - top_start).norm();
         if (drift > top_drift_most) top_drift_most = drift, top_drift_frame = frame;

@@ -34,7 +34,8 @@ Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames) {
     trace.recording = recording;
     std::vector<RigidBody> bodies = scene.bodies;
     TraceRecorder recorder(trace);
-    for (int frame = 0; frame < frames; ++frame) step(trace.scene, bodies, recorder, frame);
+    ContactMemory memory;
+    for (int frame = 0; frame < frames; ++frame) step(trace.scene, bodies, recorder, frame, &memory);
     return trace;
 }
 

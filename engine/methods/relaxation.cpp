@@ -14,33 +14,30 @@ namespace impulse {
 
 PhaseOutcome relax_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
                              const ResolverSettings& settings, Recorder& recorder) {
-    const auto penetration_of = [](const PreparedContact& c) { return c.penetration; };
     PhaseOutcome outcome;
     outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));
     PositionPhaseState state = position_phase_state(bodies.size());
-    std::vector<char> visited(contacts.size());
+    WorstFirstSelector selector = penetration_selector(contacts, bodies.size(), settings);
     bool cut_short = false;  // the iteration limit stopped a pass with a contact still waiting for its turn
     for (int pass = 0; pass < settings.relaxation.passes && !cut_short; ++pass) {
-        if (!any_above(contacts, penetration_of, settings.position_epsilon)) break;
-        std::fill(visited.begin(), visited.end(), 0);
-        const auto already_visited = [&visited](int i) { return visited[static_cast<std::size_t>(i)] != 0; };
-        while (const std::optional<int> chosen =
-                   worst_contact(contacts, penetration_of, settings.position_epsilon, already_visited)) {
+        if (!any_penetration_above(contacts, settings.position_epsilon)) break;
+        if (pass > 0) selector.restart();  // every contact gets a turn again
+        while (const std::optional<int> chosen = selector.worst(settings.position_epsilon)) {
             if (outcome.iterations_used == outcome.iteration_limit) {
                 cut_short = true;
                 break;
             }
-            visited[static_cast<std::size_t>(*chosen)] = 1;
+            selector.set_aside(*chosen);  // one visit per pass
             const double amount =
                 settings.relaxation.fraction * contacts[static_cast<std::size_t>(*chosen)].penetration;
-            resolve_penetration(bodies, contacts, state, *chosen, amount, outcome.iterations_used, pass, settings,
-                                recorder);
+            resolve_penetration(bodies, contacts, state, selector, *chosen, amount, outcome.iterations_used, pass,
+                                settings, recorder);
             ++outcome.iterations_used;
         }
     }
     // Relaxation leaves penetration by design; the stop reason says whether any is left above the epsilon,
     // and whether the iteration limit cut the passes short.
-    const bool remaining = any_above(contacts, penetration_of, settings.position_epsilon);
+    const bool remaining = any_penetration_above(contacts, settings.position_epsilon);
     outcome.stop = !remaining  ? StopReason::resolved
                    : cut_short ? StopReason::iteration_limit
                                : StopReason::passes_complete;

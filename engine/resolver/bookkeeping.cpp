@@ -1,27 +1,37 @@
 #include "resolver/bookkeeping.hpp"
 
+#include <ranges>
+
 namespace impulse {
 
 namespace {
 
-// Calls visit(other, slot, m) for every contact `other` whose body `slot` is the moved body `m` (0 or 1 of
-// the resolved contact). The world never moves. A contact sharing both moved bodies is visited twice.
-template <typename Visit>
-void for_each_contact_sharing(std::vector<PreparedContact>& contacts, const std::array<int, 2>& moved, Visit visit) {
-    for (PreparedContact& other : contacts)
+// Calls visit(other, slot, m) for every candidate contact `other` whose body `slot` is the moved body `m`
+// (0 or 1 of the resolved contact). The world never moves. A contact sharing both moved bodies is visited
+// twice.
+template <typename Indices, typename Visit>
+void for_each_contact_sharing(std::vector<PreparedContact>& contacts, const Indices& candidates,
+                              const std::array<int, 2>& moved, Visit visit) {
+    for (const int index : candidates) {
+        PreparedContact& other = contacts[static_cast<std::size_t>(index)];
         for (int slot = 0; slot < 2; ++slot) {
             const int body = other.derivation.bodies[slot];
             if (body == world_body) continue;
             for (int m = 0; m < 2; ++m)
                 if (moved[m] == body) visit(other, slot, m);
         }
+    }
 }
 
-}  // namespace
+auto every_contact(const std::vector<PreparedContact>& contacts) {
+    return std::views::iota(0, static_cast<int>(contacts.size()));
+}
 
-void update_penetrations(std::vector<PreparedContact>& contacts, const std::array<int, 2>& moved,
-                         const PositionChange& change, std::vector<PenetrationUpdate>* log) {
-    for_each_contact_sharing(contacts, moved, [&](PreparedContact& other, int slot, int m) {
+template <typename Indices>
+void update_penetrations_of(std::vector<PreparedContact>& contacts, const Indices& candidates,
+                            const std::array<int, 2>& moved, const PositionChange& change,
+                            std::vector<PenetrationUpdate>* log) {
+    for_each_contact_sharing(contacts, candidates, moved, [&](PreparedContact& other, int slot, int m) {
         const ContactPreparation& d = other.derivation;
         // How far this contact's point on the moved body travelled along this contact's normal:
         // the translation plus the rotation's linear effect at the point, (dtheta x q_rel) . n.
@@ -34,10 +44,11 @@ void update_penetrations(std::vector<PreparedContact>& contacts, const std::arra
     });
 }
 
-void update_contact_velocities(std::vector<PreparedContact>& contacts, const std::array<int, 2>& moved,
-                               const VelocityChange& change, const ResolverSettings& settings,
-                               std::vector<VelocityUpdate>* log) {
-    for_each_contact_sharing(contacts, moved, [&](PreparedContact& other, int slot, int m) {
+template <typename Indices>
+void update_contact_velocities_of(std::vector<PreparedContact>& contacts, const Indices& candidates,
+                                  const std::array<int, 2>& moved, const VelocityChange& change,
+                                  const ResolverSettings& settings, std::vector<VelocityUpdate>* log) {
+    for_each_contact_sharing(contacts, candidates, moved, [&](PreparedContact& other, int slot, int m) {
         const ContactPreparation& d = other.derivation;
         // The velocity change of this contact's point on the changed body (9.5), in its contact
         // coordinates, counted positive for body 0 and negative for body 1.
@@ -55,6 +66,31 @@ void update_contact_velocities(std::vector<PreparedContact>& contacts, const std
             log->push_back({d.contact, moved[m], slot, delta, before, other.contact_velocity, desired_before,
                             other.desired_delta_velocity.desired_delta_velocity});
     });
+}
+
+}  // namespace
+
+void update_penetrations(std::vector<PreparedContact>& contacts, std::span<const int> candidates,
+                         const std::array<int, 2>& moved, const PositionChange& change,
+                         std::vector<PenetrationUpdate>* log) {
+    update_penetrations_of(contacts, candidates, moved, change, log);
+}
+
+void update_penetrations(std::vector<PreparedContact>& contacts, const std::array<int, 2>& moved,
+                         const PositionChange& change, std::vector<PenetrationUpdate>* log) {
+    update_penetrations_of(contacts, every_contact(contacts), moved, change, log);
+}
+
+void update_contact_velocities(std::vector<PreparedContact>& contacts, std::span<const int> candidates,
+                               const std::array<int, 2>& moved, const VelocityChange& change,
+                               const ResolverSettings& settings, std::vector<VelocityUpdate>* log) {
+    update_contact_velocities_of(contacts, candidates, moved, change, settings, log);
+}
+
+void update_contact_velocities(std::vector<PreparedContact>& contacts, const std::array<int, 2>& moved,
+                               const VelocityChange& change, const ResolverSettings& settings,
+                               std::vector<VelocityUpdate>* log) {
+    update_contact_velocities_of(contacts, every_contact(contacts), moved, change, settings, log);
 }
 
 }  // namespace impulse

@@ -7,42 +7,20 @@
 #include "record/recorder.hpp"
 #include "resolver/prepared_contact.hpp"
 #include "resolver/settings.hpp"
+#include "resolver/worst_first_selector.hpp"
 
 #include <optional>
 #include <vector>
 
 namespace impulse {
 
-// The default for worst_contact: every contact may be chosen.
-struct SkipNone {
-    bool operator()(int) const { return false; }
-};
+// The phase's chooser (worst_first_selector.hpp): every non-inert contact, by the value the phase compares.
+WorstFirstSelector penetration_selector(const std::vector<PreparedContact>& contacts, std::size_t body_count,
+                                        const ResolverSettings& settings);
 
-// The index of the contact with the largest value(contact) strictly above `epsilon`, skipping inert contacts
-// and those skip(index) rejects; the first index wins a tie, as in the reference engine. This scan over every
-// contact is the book's own, and the resolver's cost per iteration.
-template <typename Value, typename Skip = SkipNone>
-std::optional<int> worst_contact(const std::vector<PreparedContact>& contacts, Value value, double epsilon,
-                                 Skip skip = {}) {
-    std::optional<int> worst;
-    double largest = epsilon;
-    for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
-        const PreparedContact& c = contacts[static_cast<std::size_t>(i)];
-        if (c.derivation.inert || skip(i)) continue;
-        const double v = value(c);
-        if (v > largest) {
-            largest = v;
-            worst = i;
-        }
-    }
-    return worst;
-}
-
-// Whether any contact is still above the epsilon (tells "resolved" from "iteration limit").
-template <typename Value>
-bool any_above(const std::vector<PreparedContact>& contacts, Value value, double epsilon) {
-    return worst_contact(contacts, value, epsilon).has_value();
-}
+// Whether any non-inert contact is still above the epsilon (tells "resolved" from the other stop reasons);
+// one scan, once per phase.
+bool any_penetration_above(const std::vector<PreparedContact>& contacts, double epsilon);
 
 // What the position phase carries from one iteration to the next besides the contacts.
 struct PositionPhaseState {
@@ -56,10 +34,10 @@ PositionPhaseState position_phase_state(std::size_t body_count);
 bool movable_by(PositionMethod method, const PreparedContact& contact);
 
 // Removes `amount` of contact `chosen`'s penetration with the configured method, moves its bodies, updates
-// the penetration of every contact sharing them, and reports the iteration.
+// the penetration of every contact sharing them (telling `selector`), and reports the iteration.
 void resolve_penetration(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                         PositionPhaseState& state, int chosen, double amount, int iteration, std::optional<int> pass,
-                         const ResolverSettings& settings, Recorder& recorder);
+                         PositionPhaseState& state, WorstFirstSelector& selector, int chosen, double amount,
+                         int iteration, std::optional<int> pass, const ResolverSettings& settings, Recorder& recorder);
 
 PhaseOutcome resolve_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
                                const ResolverSettings& settings, Recorder& recorder);
@@ -70,9 +48,5 @@ PhaseOutcome relax_positions(std::vector<RigidBody>& bodies, std::vector<Prepare
 
 PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
                                 const ResolverSettings& settings, Recorder& recorder);
-
-// Whether any contact is still above the epsilon (used to tell "resolved" from "iteration limit").
-bool any_above(const std::vector<PreparedContact>& contacts, const std::function<double(const PreparedContact&)>& value,
-               double epsilon);
 
 }  // namespace impulse

@@ -44,6 +44,19 @@ PositionResolution projection_for(const PreparedContact& contact, double amount,
 
 }  // namespace
 
+WorstFirstSelector penetration_selector(const std::vector<PreparedContact>& contacts, std::size_t body_count,
+                                        const ResolverSettings& settings) {
+    std::vector<char> eligible(contacts.size());
+    for (std::size_t i = 0; i < contacts.size(); ++i)
+        eligible[i] = !contacts[i].derivation.inert && movable_by(settings.position_method, contacts[i]);
+    return WorstFirstSelector(settings.worst_first_search, contacts, body_count, penetration_of, std::move(eligible));
+}
+
+bool any_penetration_above(const std::vector<PreparedContact>& contacts, double epsilon) {
+    return std::any_of(contacts.begin(), contacts.end(),
+                       [epsilon](const PreparedContact& c) { return !c.derivation.inert && c.penetration > epsilon; });
+}
+
 PositionPhaseState position_phase_state(std::size_t body_count) {
     return {std::vector<double>(body_count, 0.0)};
 }
@@ -56,8 +69,8 @@ bool movable_by(PositionMethod method, const PreparedContact& contact) {
 }
 
 void resolve_penetration(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                         PositionPhaseState& state, int chosen, double amount, int iteration, std::optional<int> pass,
-                         const ResolverSettings& settings, Recorder& recorder) {
+                         PositionPhaseState& state, WorstFirstSelector& selector, int chosen, double amount,
+                         int iteration, std::optional<int> pass, const ResolverSettings& settings, Recorder& recorder) {
     const PreparedContact& contact = contacts[static_cast<std::size_t>(chosen)];
     PositionIteration record{iteration,
                              chosen,
@@ -76,7 +89,9 @@ void resolve_penetration(std::vector<RigidBody>& bodies, std::vector<PreparedCon
         body.position += *change.linear_change[i];
         body.orientation = rotated(body.orientation, *change.angular_change[i], settings.orientation_update);
     }
-    update_penetrations(contacts, moved, change, recorder.wants_updates() ? &record.updates : nullptr);
+    const std::span<const int> sharing = selector.sharing(moved);
+    update_penetrations(contacts, sharing, moved, change, recorder.wants_updates() ? &record.updates : nullptr);
+    selector.values_changed(sharing);
     recorder.position_iteration(record);
 }
 
@@ -88,21 +103,18 @@ PhaseOutcome resolve_positions(std::vector<RigidBody>& bodies, std::vector<Prepa
     PhaseOutcome outcome;
     outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));
     PositionPhaseState state = position_phase_state(bodies.size());
-    const auto unmovable = [&](int i) {
-        return !movable_by(settings.position_method, contacts[static_cast<std::size_t>(i)]);
-    };
+    WorstFirstSelector selector = penetration_selector(contacts, bodies.size(), settings);
     while (outcome.iterations_used < outcome.iteration_limit) {
-        const std::optional<int> chosen = worst_contact(contacts, penetration_of, settings.position_epsilon, unmovable);
+        const std::optional<int> chosen = selector.worst(settings.position_epsilon);
         if (!chosen) break;
         const double penetration = contacts[static_cast<std::size_t>(*chosen)].penetration;
-        resolve_penetration(bodies, contacts, state, *chosen, penetration, outcome.iterations_used, std::nullopt,
-                            settings, recorder);
+        resolve_penetration(bodies, contacts, state, selector, *chosen, penetration, outcome.iterations_used,
+                            std::nullopt, settings, recorder);
         ++outcome.iterations_used;
     }
-    outcome.stop = worst_contact(contacts, penetration_of, settings.position_epsilon, unmovable)
-                       ? StopReason::iteration_limit
-                   : any_above(contacts, penetration_of, settings.position_epsilon) ? StopReason::unmovable_left
-                                                                                    : StopReason::resolved;
+    outcome.stop = selector.worst(settings.position_epsilon)                    ? StopReason::iteration_limit
+                   : any_penetration_above(contacts, settings.position_epsilon) ? StopReason::unmovable_left
+                                                                                : StopReason::resolved;
     recorder.end_phase(Phase::position, outcome);
     return outcome;
 }

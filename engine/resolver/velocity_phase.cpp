@@ -30,8 +30,11 @@ PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<Prep
                                 const ResolverSettings& settings, Recorder& recorder) {
     PhaseOutcome outcome;
     outcome.iteration_limit = velocity_iteration_limit(settings, static_cast<int>(contacts.size()));
+    std::vector<char> eligible(contacts.size());
+    for (std::size_t i = 0; i < contacts.size(); ++i) eligible[i] = !contacts[i].derivation.inert;
+    WorstFirstSelector selector(settings.worst_first_search, contacts, bodies.size(), desired_of, std::move(eligible));
     while (outcome.iterations_used < outcome.iteration_limit) {
-        const std::optional<int> chosen = worst_contact(contacts, desired_of, settings.velocity_epsilon);
+        const std::optional<int> chosen = selector.worst(settings.velocity_epsilon);
         if (!chosen) break;
         const PreparedContact& contact = contacts[static_cast<std::size_t>(*chosen)];
         VelocityIteration record{.iteration = outcome.iterations_used,
@@ -50,13 +53,14 @@ PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<Prep
             body.velocity += *change.velocity_change[i];
             body.angular_velocity += *change.rotation_change[i];
         }
-        update_contact_velocities(contacts, changed, change, settings,
+        const std::span<const int> sharing = selector.sharing(changed);
+        update_contact_velocities(contacts, sharing, changed, change, settings,
                                   recorder.wants_updates() ? &record.updates : nullptr);
+        selector.values_changed(sharing);
         recorder.velocity_iteration(record);
         ++outcome.iterations_used;
     }
-    outcome.stop =
-        any_above(contacts, desired_of, settings.velocity_epsilon) ? StopReason::iteration_limit : StopReason::resolved;
+    outcome.stop = selector.worst(settings.velocity_epsilon) ? StopReason::iteration_limit : StopReason::resolved;
     recorder.end_phase(Phase::velocity, outcome);
     return outcome;
 }

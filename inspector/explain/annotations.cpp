@@ -57,6 +57,16 @@ constexpr std::array annotations{
                "direction kept once the contact slides"},
     Annotation{"sliding_normal_response", "K₀₀ + μ (K₀₁ ŷ + K₀₂ ẑ)", "ch. 15", "m/s per N·s",
                "normal velocity change per unit normal impulse, sliding"},
+    // Accumulating solvers (projected Gauss-Seidel, soft step): Catto's sequential impulses
+    Annotation{"position_bias", "β max(d − slop, 0) / Δt", "Baumgarte", "m/s",
+               "extra separating speed asked for, to push out the penetration"},
+    Annotation{"accumulated_before", "λ, this frame's total so far", "", "N·s",
+               "impulse this contact has given so far (x normal, y, z sliding)"},
+    Annotation{"accumulated_unclamped", "λ + Δv / d", "", "N·s", "the total this visit asks for, before its limits"},
+    Annotation{"clamp", "λ_n ≥ 0, |λ_t| ≤ μ λ_n", "", "",
+               "which limit applied: a contact can only push, friction stays inside its cone"},
+    Annotation{"accumulated_after", "clamp(λ + Δv / d)", "", "N·s",
+               "the new total; only its change is applied, so a later visit can take back an earlier push"},
     Annotation{"impulse_contact", "g = Δv / d, (g, 0, 0)", "(14.3)", "N·s", "the impulse in contact coordinates"},
     Annotation{"impulse_world", "C · impulse_contact", "", "N·s", "+ on body 0, − on body 1"},
     // Step 7

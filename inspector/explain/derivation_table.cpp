@@ -197,6 +197,32 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
     return tables;
 }
 
+std::string sweep_text(const SweepPlace& sweep) {
+    std::string text;
+    if (sweep.substep > 0 || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::restitution)
+        text = "sub-step " + std::to_string(sweep.substep) + " · ";
+    text += std::string(name_of(solver_stage_names, sweep.stage));
+    if (sweep.stage == SolverStage::solve || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::push)
+        text += " sweep " + std::to_string(sweep.pass);
+    return text;
+}
+
+std::string sweep_meaning(SolverStage stage) {
+    switch (stage) {
+        case SolverStage::warm_start:
+            return "last frame's total impulse for this contact, applied again before any sweep";
+        case SolverStage::solve:
+            return "one visit of a sweep: move this contact's total towards its target, within its limits";
+        case SolverStage::relax:
+            return "a sweep without the position bias: takes back the speed the push added";
+        case SolverStage::restitution:
+            return "the bounce, once after the sub-steps: target −c times the closing speed before solving";
+        case SolverStage::push:
+            return "a sweep on pseudo-velocities that only move positions";
+    }
+    return "";
+}
+
 std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, const Mat3* basis) {
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
@@ -204,6 +230,20 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         velocity.contact_vector("contact_velocity", r->contact_velocity);
         tables.push_back(velocity.done());
         tables.push_back(desired_table(r->desired_delta_velocity));
+        if (r->position_bias) {
+            Table bias("position_bias", "Step 5 · position_bias — speed added to push the bodies apart");
+            bias.row("position_bias", number(*r->position_bias));
+            tables.push_back(bias.done());
+        }
+        if (const auto& a = it.accumulated) {
+            Table total("accumulated_impulse",
+                        "Step 6 · accumulated impulse — the running total, kept within its limits", basis);
+            total.contact_vector("accumulated_before", a->before)
+                .contact_vector("accumulated_unclamped", a->unclamped)
+                .row("clamp", std::string(name_of(impulse_clamp_names, a->clamp)))
+                .contact_vector("accumulated_after", a->after);
+            tables.push_back(total.done());
+        }
 
         const Impulse& g = r->impulse;
         Table impulse("impulse", "Step 6 · impulse_contact and impulse_world — the impulse", basis);
@@ -221,7 +261,8 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         }
         impulse
             .contact_vector("impulse_contact", g.impulse_contact,
-                            g.model == ImpulseModel::frictionless ? std::string_view{}
+                            it.accumulated                          ? "accumulated_after − accumulated_before"
+                            : g.model == ImpulseModel::frictionless ? std::string_view{}
                             : g.model == ImpulseModel::static_friction
                                 ? "static_impulse (inside the cone)"
                                 : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding response")

@@ -36,7 +36,13 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& contact);
 std::vector<StepTable> position_iteration_tables(const PositionIteration& iteration,
                                                  const Mat3* contact_to_world = nullptr);
 
-// Steps 4-7 for one velocity iteration, then its updates.
+// Where a sweeping solver was: "sub-step 1 · solve sweep 2" (the sub-step only for soft step), and what that
+// stage does.
+std::string sweep_text(const SweepPlace& sweep);
+std::string sweep_meaning(SolverStage stage);
+
+// Steps 4-7 for one velocity iteration (with the accumulated impulse and its clamp for the accumulating
+// solvers), then its updates.
 std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& iteration,
                                                  const Mat3* contact_to_world = nullptr);
 

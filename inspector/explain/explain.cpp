@@ -85,8 +85,13 @@ void write_position_phase(std::ostream& out, const Trace& trace, const FrameReco
 void write_velocity_phase(std::ostream& out, const Trace& trace, const FrameRecord& frame) {
     out << "\n== Velocity phase: " << name_of(velocity_method_names, trace.scene.settings.velocity_method) << " ==\n";
     for (const VelocityIteration& it : frame.velocity.iterations) {
-        out << "\nIteration " << it.iteration << " · contact " << it.contact << " needs the largest change: desired Δv "
-            << number(it.desired_delta_velocity) << " m/s > ε " << number(it.epsilon) << " m/s\n";
+        if (it.sweep)
+            out << "\nIteration " << it.iteration << " · " << sweep_text(*it.sweep) << " visits contact " << it.contact
+                << ": desired Δv " << number(it.desired_delta_velocity) << " m/s\n";
+        else
+            out << "\nIteration " << it.iteration << " · contact " << it.contact
+                << " needs the largest change: desired Δv " << number(it.desired_delta_velocity) << " m/s > ε "
+                << number(it.epsilon) << " m/s\n";
         for (const StepTable& t : velocity_iteration_tables(it)) write_table(out, t);
     }
     out << "Velocity phase ends: " << stop_text(frame.velocity.outcome) << '\n';

@@ -17,14 +17,24 @@ const FrameRecord& frame_at(const Trace& trace, const Cursor& c) {
     return trace.frames[static_cast<std::size_t>(c.frame)];
 }
 
-// Why an iteration picked its contact, as the first table of every iteration.
+// Why an iteration picked its contact, as the first table of every iteration: worst first, or a sweep's turn.
 StepTable choice_table(const char* what, int iteration, int contact, double value, double epsilon, const char* unit,
-                       std::optional<int> pass) {
+                       const std::string& pass, const std::optional<SweepPlace>& sweep) {
     const std::string v = explain::number(value) + " " + unit;
     const std::string e = explain::number(epsilon) + " " + unit;
+    if (sweep) {
+        std::vector<Row> rows{
+            {"iteration", std::to_string(iteration), "", "", "contact visits count from 0 within the phase"},
+            {"sweep", explain::sweep_text(*sweep), "", "", explain::sweep_meaning(sweep->stage)},
+            {"contact", std::to_string(contact), "next in index order", "",
+             "a sweep visits every contact in turn, whatever its value"},
+            {what, v, "", "", "its value now, after the visits before this one"},
+        };
+        return {"choice", "Sweep · " + explain::sweep_text(*sweep) + " visits contact " + std::to_string(contact),
+                std::move(rows)};
+    }
     std::vector<Row> rows{
-        {"iteration", std::to_string(iteration) + (pass ? " (relaxation pass " + std::to_string(*pass) + ")" : ""), "",
-         "", "iterations count from 0 within the phase"},
+        {"iteration", std::to_string(iteration) + pass, "", "", "iterations count from 0 within the phase"},
         {"contact", std::to_string(contact), "argmax over contacts above ε", "",
          std::string("the contact with the largest ") + what + " is resolved first (worst first)"},
         {what, v, "", "", "its value now, after the updates made by earlier iterations"},
@@ -33,6 +43,13 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
     };
     return {"choice", "Choice · iteration " + std::to_string(iteration) + " picks contact " + std::to_string(contact),
             std::move(rows)};
+}
+
+// A position iteration's pass, as the choice table words it.
+std::string pass_text(const PositionIteration& it) {
+    if (!it.pass) return "";
+    const bool pushes = it.resolution && it.resolution->method == PositionMethod::split_impulse;
+    return (pushes ? " (push sweep " : " (relaxation pass ") + std::to_string(*it.pass) + ")";
 }
 
 int steps_in(const Trace& trace, const Cursor& c) {
@@ -191,13 +208,13 @@ std::vector<StepTable> step_tables(const Trace& trace, const Cursor& c) {
     std::vector<StepTable> tables;
     if (c.stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[item];
-        tables.push_back(
-            choice_table("penetration", it.iteration, it.contact, it.penetration, it.epsilon, "m", it.pass));
+        tables.push_back(choice_table("penetration", it.iteration, it.contact, it.penetration, it.epsilon, "m",
+                                      pass_text(it), std::nullopt));
         for (StepTable& t : explain::position_iteration_tables(it, basis)) tables.push_back(std::move(t));
     } else {
         const VelocityIteration& it = frame.velocity.iterations[item];
         tables.push_back(choice_table("desired_delta_velocity", it.iteration, it.contact, it.desired_delta_velocity,
-                                      it.epsilon, "m/s", std::nullopt));
+                                      it.epsilon, "m/s", "", it.sweep));
         for (StepTable& t : explain::velocity_iteration_tables(it, basis)) tables.push_back(std::move(t));
     }
     return tables;

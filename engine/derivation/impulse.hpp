@@ -48,6 +48,11 @@ struct Impulse {
 // g = v / d  (14.3), along the contact normal only.
 Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_per_unit_impulse);
 
+// K: the change of contact velocity per unit impulse, both in contact coordinates (see FrictionSolve). Its
+// (0, 0) entry is the delta_velocity_per_unit_impulse d of step 3.
+Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
+                           const PerBody<MassProperties>& mass);
+
 FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
                              const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
                              double desired_delta_velocity, double friction);

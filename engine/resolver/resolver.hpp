@@ -23,6 +23,8 @@ struct ResolutionSummary {
 // Resolves `contacts` between `bodies` once (one frame), changing the bodies' positions, orientations and
 // velocities. Contacts must name bodies inside the list, body 0 and body 1 different, unit normals.
 // `memory` carries warm-starting solvers' impulses from frame to frame (nothing = start cold every frame).
+// Soft step (methods/soft_step.hpp) integrates the bodies itself: here it moves them by their velocities over
+// settings.duration, with no gravity, while it resolves the contacts.
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
                                    const ResolverSettings& settings, Recorder& recorder, int frame = 0,
                                    ContactMemory* memory = nullptr);

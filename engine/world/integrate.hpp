@@ -19,4 +19,9 @@ struct Damping {
 // An immovable body (inverse mass 0) feels no gravity and keeps its motion as given.
 void integrate(RigidBody& body, const Vec3& gravity, double dt, const Damping& damping, OrientationUpdate update);
 
+// The two halves of `integrate`, for a solver that works between them (soft step: velocities, then the contacts,
+// then positions). integrate(...) is exactly integrate_velocity(...) followed by integrate_position(...).
+void integrate_velocity(RigidBody& body, const Vec3& gravity, double dt, const Damping& damping);
+void integrate_position(RigidBody& body, double dt, OrientationUpdate update);
+
 }  // namespace impulse

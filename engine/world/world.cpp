@@ -2,6 +2,7 @@
 
 #include "collision/broad_phase.hpp"
 #include "collision/collision.hpp"
+#include "methods/soft_step.hpp"
 #include "world/integrate.hpp"
 
 #include <algorithm>
@@ -90,9 +91,14 @@ StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& re
     report.frame = frame;
     const double dt = scene.settings.duration;
 
+    // Soft step integrates the bodies itself, sub-step by sub-step: it takes the contacts at the current positions
+    // and the forces, and its integration counts as resolution time.
+    const bool soft_step = scene.settings.velocity_method == VelocityMethod::soft_step;
     auto start = Clock::now();
     const Damping damping{scene.world.linear_damping, scene.world.angular_damping};
-    for (RigidBody& body : bodies) integrate(body, scene.world.gravity, dt, damping, scene.settings.orientation_update);
+    if (!soft_step)
+        for (RigidBody& body : bodies)
+            integrate(body, scene.world.gravity, dt, damping, scene.settings.orientation_update);
     report.times.integrate = seconds_since(start);
 
     const Detection detection = detect_contacts(scene, bodies, &report.times);
@@ -102,7 +108,10 @@ StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& re
         report.deepest_penetration = std::max(report.deepest_penetration, c.penetration);
 
     start = Clock::now();
-    report.resolution = resolve_contacts(bodies, detection.contacts, scene.settings, recorder, frame, memory);
+    report.resolution = soft_step
+                            ? solve_soft_step(bodies, detection.contacts, scene.settings,
+                                              {scene.world.gravity, damping}, recorder, frame, memory)
+                            : resolve_contacts(bodies, detection.contacts, scene.settings, recorder, frame, memory);
     report.times.resolve = seconds_since(start);
 
     for (const RigidBody& body : bodies) report.kinetic_energy += kinetic_energy(body);

@@ -40,7 +40,8 @@ struct StepReport {
 // The body that starts highest against gravity (the top of a stack): whose drift measures a stack's hold.
 std::size_t highest_body(const Scene& scene);
 
-// One frame of `scene.settings.duration` seconds: integrate -> detect -> resolve. `bodies` is the state,
+// One frame of `scene.settings.duration` seconds: integrate -> detect -> resolve (soft step: detect -> soft step,
+// which integrates the bodies in its sub-steps). `bodies` is the state,
 // changed in place; the scene gives shapes, materials, the ground and the settings. `memory` keeps
 // warm-starting solvers' impulses between frames; pass the same one every frame of a run.
 StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame,

@@ -1,0 +1,99 @@
+#pragma once
+// Soft step, Box2D v3's solver (solver.c, contact_solver.c; solver2d's solve_soft_step.c), in 3D.
+//
+// A frame of h = settings.duration is cut into n = settings.soft_step.substeps sub-steps of h_s = h / n, and
+// the method integrates the bodies itself, so the world step detects contacts at the current positions and
+// hands the frame to it. Per sub-step:
+//   1. integrate velocities: v += g h_s, damping as in the world step (world/integrate.hpp);
+//   2. warm start: apply each contact's accumulated impulse lambda (contact coordinates) again;
+//   3. solve: `sweeps` sweeps over the contacts with the soft contact's bias;
+//   4. integrate positions: x += v h_s, q turned by w h_s (settings.orientation_update);
+//   5. relax: `sweeps` sweeps without the bias, removing the velocity the bias added.
+// After the sub-steps:
+//   6. restitution, once: contacts that closed faster than the cut-off when the frame began and were pushed
+//      get the normal target -c v_n(before);
+//   7. store each lambda in the ContactMemory (world coordinates) when settings.warm_start.
+//
+// The soft contact (Catto, "Solver2D" and Box2D v3's b2MakeSoft): the contact is a spring of stiffness
+// k = m omega^2 and damper c = 2 m zeta omega on the effective mass m, omega = 2 pi hertz, stepped with implicit
+// Euler over h_s. Solving m (v2 - v1) = -h_s (k (C + h_s v2) + c v2) for the impulse gives
+//   a1 = 2 zeta + h_s omega,  a2 = h_s omega a1,
+//   bias_rate = omega / a1,  mass_scale = a2 / (1 + a2),  impulse_scale = 1 / (1 + a2),
+// and one visit changes the accumulated normal impulse by
+//   delta lambda_n = -m_n mass_scale (v_n + bias) - impulse_scale lambda_n,   m_n = 1 / d (step 3),
+//   bias = max(-bias_rate p, -max_push_velocity)   for penetration p >= 0,
+// then lambda_n = max(lambda_n + delta, 0). Since mass_scale + impulse_scale = 1 the visit's fixed point is the
+// soft impulse -m_n mass_scale (v_free + bias): the bodies are pushed apart at most at max_push_velocity, and
+// softly, so a stack does not jitter. The hertz is capped at a quarter of the sub-step rate (the spring must
+// not be stiffer than the sub-step can follow). A separated point (p < 0) is speculative: bias = -p / h_s,
+// with mass_scale 1 and impulse_scale 0, so the bodies may close the gap in this sub-step but no further.
+// Relax uses mass_scale 1, impulse_scale 0 and no bias for p >= 0: a rigid velocity solve.
+// Friction: both tangent rows take -v_t / K_tt (K from derivation/impulse.hpp) on the tangential velocity the
+// normal increment leaves, and their total is scaled back onto the cone |lambda_t| <= mu lambda_n.
+//
+// The penetration is recomputed from how the bodies moved since the frame began, with the anchors fixed in
+// the bodies (Box2D: separation + dot(d, normal)):
+//   p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)],
+// dx_i the body's move and R_i its turn since the frame began, r_i the relative position at preparation. The
+// velocities use the anchors and world inverse inertia fixed at preparation, as Box2D does.
+//
+// Warm starting across frames is `settings.warm_start`; within a frame every sub-step's warm start applies the
+// current totals whatever the setting (as in Box2D v3, where the setting only scales last step's impulses).
+//
+// What is recorded (only when the recorder wants iteration details, recorder.wants_updates(); the numbers
+// are computed the same way either way, so recorded and unrecorded runs are bit-identical): the frame's
+// bodies before, the prepared contacts (steps 1-5, as for every method), an empty position phase, then every
+// contact visit as a VelocityIteration with sweep = {substep, pass, stage}, the accumulated impulse
+// {before, unclamped, after, clamp} and a VelocityResolution:
+//   contact_velocity        the contact's velocity when visited (contact coordinates, fixed anchors);
+//   desired_delta_velocity  target - current along the normal: solve: position_bias - v_n; relax: -v_n (or
+//                           the speculative bias); restitution: -c v_n(before) - v_n; warm start (which has no
+//                           target): the normal velocity change the re-applied impulse makes, (K lambda)_n;
+//   position_bias           the separating velocity the soft bias asks for, -bias (m/s; solve and relax);
+//   impulse                 the increment applied, after - before (frictionless, static or sliding);
+//   velocity_change         step 7 of that increment: exactly what was added to the bodies.
+// For a warm start `before` is 0: the total counts what this sub-step has applied, and the warm start applies
+// all of lambda at once. The bodies' moves by sub-step integration are not recorded per visit: bodies_after
+// holds the frame's end. Every visit counts as an iteration of the velocity phase.
+
+#include "body/rigid_body.hpp"
+#include "contact/contact.hpp"
+#include "memory/contact_memory.hpp"
+#include "record/recorder.hpp"
+#include "resolver/resolver.hpp"
+#include "resolver/settings.hpp"
+#include "world/integrate.hpp"
+
+#include <span>
+#include <vector>
+
+namespace impulse {
+
+// b2MakeSoft: the soft contact's coefficients for a spring of `hertz` and `damping_ratio` over a step `h`.
+struct Softness {
+    double bias_rate;      // 1/s: omega / (2 zeta + h omega)
+    double mass_scale;     // share of the rigid impulse a visit applies, a2 / (1 + a2)
+    double impulse_scale;  // share of the accumulated impulse a visit gives back, 1 / (1 + a2)
+
+    bool operator==(const Softness&) const = default;
+};
+
+Softness soft_contact(double hertz, double damping_ratio, double h);
+
+// The soft contact soft step uses for `settings`: hertz capped at a quarter of the sub-step rate.
+Softness soft_step_softness(const ResolverSettings& settings);
+
+// What acts on the bodies between contacts during the frame.
+struct SoftStepForces {
+    Vec3 gravity = Vec3::Zero();
+    Damping damping{};
+};
+
+// One frame of soft step: moves every body in `bodies` over settings.duration (contacts or not) and resolves
+// `contacts` on the way. Reports to `recorder` as resolve_contacts does; reads and replaces `memory` (may be
+// null: start cold, remember nothing).
+ResolutionSummary solve_soft_step(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
+                                  const ResolverSettings& settings, const SoftStepForces& forces, Recorder& recorder,
+                                  int frame, ContactMemory* memory);
+
+}  // namespace impulse

@@ -10,10 +10,8 @@ Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_p
     return {desired_delta_velocity / delta_velocity_per_unit_impulse, 0.0, 0.0};  // g = v / d  (14.3)
 }
 
-FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
-                             const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
-                             double desired_delta_velocity, double friction) {
-    FrictionSolve s;
+Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
+                           const PerBody<MassProperties>& mass) {
     // In world coordinates an impulse g at the contact changes body i's point velocity by
     // m^-1 g + (I^-1 (q_rel x g)) x q_rel = (m^-1 1 - [q_rel]x I^-1 [q_rel]x) g, the matrix form of the
     // per-unit-impulse chain (14.2, 14.1, 9.5) for every direction at once.
@@ -23,7 +21,14 @@ FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_p
         const Mat3 r = skew(*relative_position[i]);
         world += mass[i]->inverse_mass * Mat3::Identity() - r * mass[i]->inverse_inertia_world * r;
     }
-    s.delta_velocity_matrix = basis.contact_to_world.transpose() * world * basis.contact_to_world;
+    return basis.contact_to_world.transpose() * world * basis.contact_to_world;
+}
+
+FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
+                             const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
+                             double desired_delta_velocity, double friction) {
+    FrictionSolve s;
+    s.delta_velocity_matrix = delta_velocity_matrix(basis, relative_position, mass);
     s.target_delta_velocity = {desired_delta_velocity, -contact_velocity.y(), -contact_velocity.z()};
 
     const Eigen::FullPivLU<Mat3> lu(s.delta_velocity_matrix);

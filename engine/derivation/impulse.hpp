@@ -48,8 +48,8 @@ struct Impulse {
 // g = v / d  (14.3), along the contact normal only.
 Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_per_unit_impulse);
 
-// K: the change of contact velocity per unit impulse, both in contact coordinates (see FrictionSolve). Its
-// (0, 0) entry is the delta_velocity_per_unit_impulse d of step 3.
+// K = C^T (sum_i m_i^-1 1 - [q_rel_i]x I_i^-1 [q_rel_i]x) C: the change of contact velocity per unit impulse,
+// both in contact coordinates (step 3 for every direction at once; K00 is d up to rounding).
 Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
                            const PerBody<MassProperties>& mass);
 

@@ -44,7 +44,8 @@ int read_body_index(const json& j) {
     return j.is_null() ? world_body : j.get<int>();
 }
 
-constexpr std::string_view stop_names[] = {"resolved", "iteration_limit", "passes_complete", "unmovable_left"};
+constexpr std::string_view stop_names[] = {"resolved", "iteration_limit", "passes_complete", "unmovable_left",
+                                           "sweeps_complete"};
 
 // --- step 5, shared by prepared contacts and velocity iterations ----------------------------------------
 

@@ -335,7 +335,7 @@ ResolutionSummary solve_soft_step(std::vector<RigidBody>& bodies, std::span<cons
 
     ResolutionSummary summary;
     // Soft step has no position phase: the soft bias inside the velocity solve pushes the bodies apart.
-    summary.position = {0, 0, StopReason::passes_complete};
+    summary.position = {0, 0, StopReason::resolved};  // no position phase: the soft contact pushes
     recorder.end_phase(Phase::position, summary.position);
 
     SoftStep step(bodies, prepared, settings, forces, recorder);
@@ -349,7 +349,7 @@ ResolutionSummary solve_soft_step(std::vector<RigidBody>& bodies, std::span<cons
     }
 
     // Every visit of every stage is an iteration; the schedule is fixed, so it always runs to its end.
-    summary.velocity = {step.visits(), step.visits(), StopReason::passes_complete};
+    summary.velocity = {step.visits(), step.visits(), StopReason::sweeps_complete};
     recorder.end_phase(Phase::velocity, summary.velocity);
     recorder.end_frame(bodies);
     return summary;

@@ -121,6 +121,8 @@ enum class StopReason {
     passes_complete,  // relaxation ran all its passes; what remains above the epsilon is left by design
     unmovable_left,   // what remains above the epsilon the method cannot move (linear projection, bodies
                       // that cannot translate)
+    sweeps_complete,  // a sweeping method ran all its sweeps with something still above the epsilon (or, for
+                      // soft step, which always runs them all)
 };
 
 struct PhaseOutcome {

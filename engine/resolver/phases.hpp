@@ -4,6 +4,7 @@
 // nothing is above the epsilon or the iteration limit is reached.
 
 #include "body/rigid_body.hpp"
+#include "memory/contact_memory.hpp"
 #include "record/recorder.hpp"
 #include "resolver/prepared_contact.hpp"
 #include "resolver/settings.hpp"
@@ -21,6 +22,7 @@ WorstFirstSelector penetration_selector(const std::vector<PreparedContact>& cont
 // Whether any non-inert contact is still above the epsilon (tells "resolved" from the other stop reasons);
 // one scan, once per phase.
 bool any_penetration_above(const std::vector<PreparedContact>& contacts, double epsilon);
+bool any_desired_delta_velocity_above(const std::vector<PreparedContact>& contacts, double epsilon);
 
 // What the position phase carries from one iteration to the next besides the contacts.
 struct PositionPhaseState {
@@ -46,7 +48,23 @@ PhaseOutcome resolve_positions(std::vector<RigidBody>& bodies, std::vector<Prepa
 PhaseOutcome relax_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
                              const ResolverSettings& settings, Recorder& recorder);
 
+// Baumgarte's position phase (methods/baumgarte.cpp): nothing to move, the bias is in the velocity targets.
+PhaseOutcome baumgarte_positions(const ResolverSettings& settings, Recorder& recorder);
+
+// The split impulse's position phase (methods/split_impulse.cpp): a push solve on pseudo-velocities.
+PhaseOutcome split_impulse_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
+                                     const ResolverSettings& settings, Recorder& recorder);
+
+// The velocity phase of the configured method; `memory` carries projected Gauss-Seidel's totals between frames.
 PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                                const ResolverSettings& settings, Recorder& recorder);
+                                const ResolverSettings& settings, Recorder& recorder, ContactMemory* memory = nullptr);
+
+// The sequential sweep's velocity phase (methods/sequential_sweep.cpp).
+PhaseOutcome sweep_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
+                              const ResolverSettings& settings, Recorder& recorder);
+
+// Projected Gauss-Seidel's velocity phase (methods/projected_gauss_seidel.cpp).
+PhaseOutcome pgs_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
+                            const ResolverSettings& settings, Recorder& recorder, ContactMemory* memory);
 
 }  // namespace impulse

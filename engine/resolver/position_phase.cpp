@@ -97,8 +97,18 @@ void resolve_penetration(std::vector<RigidBody>& bodies, std::vector<PreparedCon
 
 PhaseOutcome resolve_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
                                const ResolverSettings& settings, Recorder& recorder) {
-    if (settings.position_method == PositionMethod::relaxation)
-        return relax_positions(bodies, contacts, settings, recorder);
+    switch (settings.position_method) {
+        case PositionMethod::relaxation:
+            return relax_positions(bodies, contacts, settings, recorder);
+        case PositionMethod::baumgarte:
+            return baumgarte_positions(settings, recorder);
+        case PositionMethod::split_impulse:
+            return split_impulse_positions(bodies, contacts, settings, recorder);
+        case PositionMethod::linear_projection:
+        case PositionMethod::nonlinear_projection:
+        case PositionMethod::velocity_based:
+            break;
+    }
 
     PhaseOutcome outcome;
     outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));

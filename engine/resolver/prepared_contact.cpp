@@ -1,6 +1,7 @@
 #include "resolver/prepared_contact.hpp"
 
 #include "derivation/relative_position.hpp"
+#include "methods/position_bias.hpp"
 
 #include <utility>
 
@@ -55,6 +56,10 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     p.penetration = d.penetration;
     p.contact_velocity = d.contact_velocity.contact_velocity;
     p.desired_delta_velocity = d.desired_delta_velocity;
+    if (settings.position_method == PositionMethod::baumgarte) {
+        p.position_bias = position_bias(d.penetration, settings.position_bias, settings.duration);
+        p.desired_delta_velocity.desired_delta_velocity += *p.position_bias;
+    }
     return p;
 }
 

@@ -46,6 +46,10 @@ struct PreparedContact {
     double penetration;
     Vec3 contact_velocity;
     DesiredDeltaVelocity desired_delta_velocity;
+    // Baumgarte only (position_method baumgarte): beta max(penetration - slop, 0) / h, fixed at preparation and
+    // already added to desired_delta_velocity above (but not to the recorded step 5 in `derivation`), so
+    // worst-first and the sequential sweep push the bodies apart through their velocities.
+    std::optional<double> position_bias;
 
     bool operator==(const PreparedContact&) const = default;
 };

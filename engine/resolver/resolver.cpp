@@ -19,13 +19,12 @@ ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<con
     std::vector<PreparedContact> prepared = prepare_contacts(contacts, bodies, mass, settings);
     recorder.contacts_prepared(prepared);
 
-    (void)memory;  // read by the warm-starting methods
     ResolutionSummary summary;
     if (settings.phase_order == PhaseOrder::positions_first) {
         summary.position = resolve_positions(bodies, prepared, settings, recorder);
-        summary.velocity = resolve_velocities(bodies, prepared, settings, recorder);
+        summary.velocity = resolve_velocities(bodies, prepared, settings, recorder, memory);
     } else {
-        summary.velocity = resolve_velocities(bodies, prepared, settings, recorder);
+        summary.velocity = resolve_velocities(bodies, prepared, settings, recorder, memory);
         summary.position = resolve_positions(bodies, prepared, settings, recorder);
     }
     recorder.end_frame(bodies);

@@ -1,7 +1,10 @@
 #include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
+#include "methods/solver_common.hpp"
 #include "resolver/bookkeeping.hpp"
 #include "resolver/phases.hpp"
+
+#include <algorithm>
 
 namespace impulse {
 
@@ -11,23 +14,25 @@ double desired_of(const PreparedContact& c) {
     return c.desired_delta_velocity.desired_delta_velocity;
 }
 
-// Steps 6 and 7 for the chosen contact, on its current (partly resolved) velocity.
-VelocityResolution resolve_velocity(const PreparedContact& contact) {
-    const ContactPreparation& d = contact.derivation;
-    VelocityResolution r;
-    r.contact_velocity = contact.contact_velocity;
-    r.desired_delta_velocity = contact.desired_delta_velocity;
-    r.impulse = calculate_impulse(d.basis, d.relative_position, contact.mass, contact.contact_velocity,
-                                  contact.desired_delta_velocity.desired_delta_velocity,
-                                  d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, d.friction);
-    r.velocity_change = velocity_change(r.impulse.impulse_world, d.relative_position, contact.mass);
-    return r;
-}
-
 }  // namespace
 
+bool any_desired_delta_velocity_above(const std::vector<PreparedContact>& contacts, double epsilon) {
+    return std::any_of(contacts.begin(), contacts.end(), [epsilon](const PreparedContact& c) {
+        return !c.derivation.inert && desired_of(c) > epsilon;
+    });
+}
+
 PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                                const ResolverSettings& settings, Recorder& recorder) {
+                                const ResolverSettings& settings, Recorder& recorder, ContactMemory* memory) {
+    switch (settings.velocity_method) {
+        case VelocityMethod::sequential_sweep:
+            return sweep_velocities(bodies, contacts, settings, recorder);
+        case VelocityMethod::projected_gauss_seidel:
+            return pgs_velocities(bodies, contacts, settings, recorder, memory);
+        case VelocityMethod::soft_step:  // soft_step never reaches here: resolve_contacts hands it to soft_step()
+        case VelocityMethod::worst_first:
+            break;
+    }
     PhaseOutcome outcome;
     outcome.iteration_limit = velocity_iteration_limit(settings, static_cast<int>(contacts.size()));
     std::vector<char> eligible(contacts.size());

@@ -117,8 +117,11 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     int deepest_frame = 0;
     int position_limited = 0, velocity_limited = 0;
     for (const StepReport& r : reports) {
-        position_limited += r.resolution.position.stop == StopReason::iteration_limit ? 1 : 0;
-        velocity_limited += r.resolution.velocity.stop == StopReason::iteration_limit ? 1 : 0;
+        const auto ran_out = [](StopReason stop) {
+            return stop == StopReason::iteration_limit || stop == StopReason::sweeps_complete ? 1 : 0;
+        };
+        position_limited += ran_out(r.resolution.position.stop);
+        velocity_limited += ran_out(r.resolution.velocity.stop);
         total.integrate += r.times.integrate;
         total.broad_phase += r.times.broad_phase;
         total.narrow_phase += r.times.narrow_phase;
@@ -135,8 +138,8 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     out << "  per frame: integrate " << fixed(total.integrate / n * 1e3, 3) << " ms, broad phase "
         << fixed(total.broad_phase / n * 1e3, 3) << " ms, pair tests " << fixed(total.narrow_phase / n * 1e3, 3)
         << " ms, resolve " << fixed(total.resolve / n * 1e3, 3) << " ms\n";
-    out << "  iteration limit reached in " << position_limited << " of " << frames << " frames (positions) and "
-        << velocity_limited << " (velocities)\n";
+    out << "  iteration limit (or every sweep) used in " << position_limited << " of " << frames
+        << " frames (positions) and " << velocity_limited << " (velocities)\n";
     out << "  deepest penetration " << fixed(deepest * 1e3, 3) << " mm (frame " << deepest_frame << "); "
         << scene.body_names[top] << " (highest at the start) ends "
         << fixed((bodies[top].position - top_start).norm() * 1e3, 3) << " mm from where it started, at most "

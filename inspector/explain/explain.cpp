@@ -67,6 +67,8 @@ std::string stop_text(const PhaseOutcome& o) {
             return "all relaxation passes done (" + used + "), penetration left by design";
         case StopReason::unmovable_left:
             return "what is left above ε this method cannot move (" + used + ")";
+        case StopReason::sweeps_complete:
+            return "all sweeps done (" + used + ")";
     }
     return used;
 }

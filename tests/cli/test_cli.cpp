@@ -144,7 +144,7 @@ TEST_CASE("run simulates a scene, writes its trace and states, and summarises ev
     CHECK(r.code == 0);
     CHECK(r.err.empty());
     for (const char* part : {"3 bodies, ground, 5 frames", "frame    time s  contacts  deepest mm   kinetic J",
-                             "per frame: integrate", "iteration limit reached in", "box2 (highest at the start)"})
+                             "per frame: integrate", "iteration limit (or every sweep) used in", "box2 (highest at the start)"})
         CHECK_MESSAGE(r.out.find(part) != std::string::npos, part);
     const CliResult v = run_cli({"validate", trace});
     CHECK(v.code == 0);

@@ -28,9 +28,10 @@ Trace with_settings(const std::string& name, std::vector<std::string> settings) 
     return opened(name, options);
 }
 
-Trace stack_run() {
+Trace stack_run(std::vector<std::string> settings = {}) {
     OpenOptions options;
     options.frames = 3;
+    options.settings = std::move(settings);
     return opened("stack_3", options);
 }
 
@@ -239,7 +240,9 @@ TEST_CASE("the bodies after a frame's last item are the frame's recorded end sta
                                opened("cases/two_body_oblique"), stack_run(), relaxed_plank(),
                                with_settings("cases/ruler", {"phase_order=velocities_first"}),
                                with_settings("cases/ruler", {"orientation_update=exact"}),
-                               with_settings("cases/deep_corner", {"position_method=velocity_based"})}) {
+                               with_settings("cases/deep_corner", {"position_method=velocity_based"}),
+                               stack_run({"preset=sweep"}), stack_run({"preset=pgs"}), stack_run({"preset=pgs_split"}),
+                               with_settings("cases/deep_corner", {"preset=pgs_split"})}) {
         for (int f = 0; f < static_cast<int>(trace.frames.size()); ++f) {
             const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
             const Stage last = stages(frame).back();

@@ -1,0 +1,56 @@
+#include "methods/solver_common.hpp"
+
+#include "derivation/contact_velocity.hpp"
+#include "derivation/impulse.hpp"
+
+#include <utility>
+
+namespace impulse {
+
+VelocityResolution resolve_velocity(const PreparedContact& contact) {
+    const ContactPreparation& d = contact.derivation;
+    VelocityResolution r;
+    r.contact_velocity = contact.contact_velocity;
+    r.desired_delta_velocity = contact.desired_delta_velocity;
+    r.position_bias = contact.position_bias;
+    r.impulse = calculate_impulse(d.basis, d.relative_position, contact.mass, contact.contact_velocity,
+                                  contact.desired_delta_velocity.desired_delta_velocity,
+                                  d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, d.friction);
+    r.velocity_change = velocity_change(r.impulse.impulse_world, d.relative_position, contact.mass);
+    return r;
+}
+
+void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int, 2>& changed,
+                           const VelocityChange& change) {
+    for (int i = 0; i < 2; ++i) {
+        if (changed[i] == world_body) continue;
+        RigidBody& body = bodies[static_cast<std::size_t>(changed[i])];
+        body.velocity += *change.velocity_change[i];
+        body.angular_velocity += *change.rotation_change[i];
+    }
+}
+
+Vec3 current_contact_velocity(const PreparedContact& contact, std::span<const RigidBody> bodies,
+                              const ResolverSettings& settings) {
+    const ContactPreparation& d = contact.derivation;
+    PerBody<BodyMotion> motion;
+    for (int i = 0; i < 2; ++i) {
+        if (d.bodies[i] == world_body) continue;
+        const RigidBody& body = bodies[static_cast<std::size_t>(d.bodies[i])];
+        motion[i] = BodyMotion{body.velocity, body.angular_velocity, body.last_frame_acceleration};
+    }
+    return contact_velocity(d.basis, d.relative_position, motion, settings.duration,
+                            settings.refinements.tangential_acceleration_velocity)
+        .contact_velocity;
+}
+
+ContactKey contact_key(const ContactPreparation& contact) {
+    ContactKey key{contact.bodies, contact.origin};
+    if (contact.swapped) {
+        std::swap(key.bodies[0], key.bodies[1]);
+        std::swap(key.origin.features[0], key.origin.features[1]);
+    }
+    return key;
+}
+
+}  // namespace impulse

@@ -197,9 +197,9 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
     return tables;
 }
 
-std::string sweep_text(const SweepPlace& sweep) {
+std::string sweep_text(const SweepPlace& sweep, const ResolverSettings& settings) {
     std::string text;
-    if (sweep.substep > 0 || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::restitution)
+    if (settings.velocity_method == VelocityMethod::soft_step && sweep.stage != SolverStage::restitution)
         text = "sub-step " + std::to_string(sweep.substep) + " · ";
     text += std::string(name_of(solver_stage_names, sweep.stage));
     if (sweep.stage == SolverStage::solve || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::push)

@@ -36,9 +36,9 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& contact);
 std::vector<StepTable> position_iteration_tables(const PositionIteration& iteration,
                                                  const Mat3* contact_to_world = nullptr);
 
-// Where a sweeping solver was: "sub-step 1 · solve sweep 2" (the sub-step only for soft step), and what that
-// stage does.
-std::string sweep_text(const SweepPlace& sweep);
+// Where a sweeping solver was: "sub-step 1 · solve sweep 2" (the sub-step only where the method sub-steps:
+// `settings` soft step), and what that stage does.
+std::string sweep_text(const SweepPlace& sweep, const ResolverSettings& settings);
 std::string sweep_meaning(SolverStage stage);
 
 // Steps 4-7 for one velocity iteration (with the accumulated impulse and its clamp for the accumulating

@@ -88,7 +88,7 @@ void write_velocity_phase(std::ostream& out, const Trace& trace, const FrameReco
     out << "\n== Velocity phase: " << name_of(velocity_method_names, trace.scene.settings.velocity_method) << " ==\n";
     for (const VelocityIteration& it : frame.velocity.iterations) {
         if (it.sweep)
-            out << "\nIteration " << it.iteration << " · " << sweep_text(*it.sweep) << " visits contact " << it.contact
+            out << "\nIteration " << it.iteration << " · " << sweep_text(*it.sweep, trace.scene.settings) << " visits contact " << it.contact
                 << ": desired Δv " << number(it.desired_delta_velocity) << " m/s\n";
         else
             out << "\nIteration " << it.iteration << " · contact " << it.contact

@@ -26,7 +26,7 @@ std::string item_label(const Trace& trace, const FrameRecord& frame, Stage stage
     }
     const VelocityIteration& it = frame.velocity.iterations[i];
     if (it.sweep)
-        return explain::sweep_text(*it.sweep) + " → contact " + std::to_string(it.contact) +
+        return explain::sweep_text(*it.sweep, trace.scene.settings) + " → contact " + std::to_string(it.contact) +
                (secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)");
     return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) +
            (secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)");

@@ -66,7 +66,29 @@ void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHos
     number_field(session, state, host, "limit factor", "angular_limit.factor", s.angular_limit.factor);
     number_field(session, state, host, "position ε (m)", "position_epsilon", s.position_epsilon);
     number_field(session, state, host, "velocity ε (m/s)", "velocity_epsilon", s.velocity_epsilon);
-    integer_field(session, state, host, "iterations/contact", "iterations_per_contact", s.iterations.per_contact);
+    // Each method's own knobs, shown only where they apply.
+    const VelocityMethod v = s.velocity_method;
+    if (v == VelocityMethod::worst_first) {
+        integer_field(session, state, host, "iterations/contact", "iterations_per_contact", s.iterations.per_contact);
+        enum_combo(session, state, host, "worst-first search", "worst_first_search", worst_first_search_names,
+                   s.worst_first_search);
+    } else if (v == VelocityMethod::soft_step) {
+        integer_field(session, state, host, "sub-steps", "soft_step.substeps", s.soft_step.substeps);
+        number_field(session, state, host, "contact hertz", "soft_step.contact_hertz", s.soft_step.contact_hertz);
+        number_field(session, state, host, "damping ratio", "soft_step.damping_ratio", s.soft_step.damping_ratio);
+    }
+    if (v != VelocityMethod::worst_first || s.position_method == PositionMethod::split_impulse)
+        integer_field(session, state, host, "sweeps", "sweeps", s.sweeps);
+    if (v == VelocityMethod::projected_gauss_seidel || v == VelocityMethod::soft_step) {
+        bool warm = s.warm_start;
+        if (ImGui::Checkbox("warm start", &warm)) set(session, state, host, "warm_start", warm ? "true" : "false");
+    }
+    const bool biased =
+        s.position_method == PositionMethod::baumgarte || s.position_method == PositionMethod::split_impulse;
+    if (biased && v != VelocityMethod::soft_step) {  // the soft contact carries its own push
+        number_field(session, state, host, "bias factor β", "position_bias.factor", s.position_bias.factor);
+        number_field(session, state, host, "slop (m)", "position_bias.slop", s.position_bias.slop);
+    }
     if (s.position_method == PositionMethod::relaxation) {
         number_field(session, state, host, "relaxation fraction", "relaxation.fraction", s.relaxation.fraction);
         integer_field(session, state, host, "relaxation passes", "relaxation.passes", s.relaxation.passes);

@@ -19,18 +19,20 @@ const FrameRecord& frame_at(const Trace& trace, const Cursor& c) {
 
 // Why an iteration picked its contact, as the first table of every iteration: worst first, or a sweep's turn.
 StepTable choice_table(const char* what, int iteration, int contact, double value, double epsilon, const char* unit,
-                       const std::string& pass, const std::optional<SweepPlace>& sweep) {
+                       const std::string& pass, const std::optional<SweepPlace>& sweep,
+                       const ResolverSettings& settings) {
     const std::string v = explain::number(value) + " " + unit;
     const std::string e = explain::number(epsilon) + " " + unit;
     if (sweep) {
         std::vector<Row> rows{
             {"iteration", std::to_string(iteration), "", "", "contact visits count from 0 within the phase"},
-            {"sweep", explain::sweep_text(*sweep), "", "", explain::sweep_meaning(sweep->stage)},
+            {"sweep", explain::sweep_text(*sweep, settings), "", "", explain::sweep_meaning(sweep->stage)},
             {"contact", std::to_string(contact), "next in index order", "",
              "a sweep visits every contact in turn, whatever its value"},
             {what, v, "", "", "its value now, after the visits before this one"},
         };
-        return {"choice", "Sweep · " + explain::sweep_text(*sweep) + " visits contact " + std::to_string(contact),
+        return {"choice",
+                "Sweep · " + explain::sweep_text(*sweep, settings) + " visits contact " + std::to_string(contact),
                 std::move(rows)};
     }
     std::vector<Row> rows{
@@ -209,12 +211,12 @@ std::vector<StepTable> step_tables(const Trace& trace, const Cursor& c) {
     if (c.stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[item];
         tables.push_back(choice_table("penetration", it.iteration, it.contact, it.penetration, it.epsilon, "m",
-                                      pass_text(it), std::nullopt));
+                                      pass_text(it), std::nullopt, trace.scene.settings));
         for (StepTable& t : explain::position_iteration_tables(it, basis)) tables.push_back(std::move(t));
     } else {
         const VelocityIteration& it = frame.velocity.iterations[item];
         tables.push_back(choice_table("desired_delta_velocity", it.iteration, it.contact, it.desired_delta_velocity,
-                                      it.epsilon, "m/s", "", it.sweep));
+                                      it.epsilon, "m/s", "", it.sweep, trace.scene.settings));
         for (StepTable& t : explain::velocity_iteration_tables(it, basis)) tables.push_back(std::move(t));
     }
     return tables;

@@ -448,3 +448,34 @@ TEST_CASE("contact_at and preparation_of find a contact by its index in the fram
     CHECK(preparation_of(filtered.frames[0], 0) == nullptr);
     CHECK(preparation_of(filtered.frames[0], 2) == &filtered.frames[0].contacts[1]);
 }
+
+TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accumulated impulse with the clamp") {
+    OpenOptions options;
+    options.preset = "pgs";
+    options.frames = 3;
+    const Trace trace = opened("stack_3", options);
+    // The first visit of frame 2 that has a derivation: warm-started frames begin with last frame's totals.
+    const FrameRecord& frame = trace.frames[2];
+    REQUIRE(!frame.velocity.iterations.empty());
+    const VelocityIteration& first = frame.velocity.iterations[0];
+    REQUIRE(first.sweep);
+    CHECK(first.sweep->stage == SolverStage::warm_start);
+    const Cursor at{2, Stage::velocity, 0, 0};
+    CHECK(step_names(trace, at) == std::vector<std::string>{"choice", "contact_velocity", "desired_delta_velocity",
+                                                            "position_bias", "accumulated_impulse", "impulse",
+                                                            "velocity_change", "updates"});
+    const explain::StepTable choice = step_tables(trace, at)[0];
+    CHECK(choice.title == "Sweep · warm_start visits contact " + std::to_string(first.contact));
+    const explain::StepTable total = step_tables(trace, at)[4];
+    REQUIRE(total.rows.size() == 4);
+    CHECK(total.rows[0].quantity == "accumulated_before");
+    CHECK(total.rows[2].quantity == "clamp");
+    CHECK(total.rows[3].quantity == "accumulated_after");
+    // A later visit is a solve sweep, and names its pass.
+    const auto solve = std::find_if(frame.velocity.iterations.begin(), frame.velocity.iterations.end(),
+                                    [](const VelocityIteration& it) { return it.sweep->stage == SolverStage::solve; });
+    REQUIRE(solve != frame.velocity.iterations.end());
+    const Cursor later{2, Stage::velocity, static_cast<int>(solve - frame.velocity.iterations.begin()), 0};
+    CHECK(step_tables(trace, later)[0].title == "Sweep · solve sweep " + std::to_string(solve->sweep->pass) +
+                                                    " visits contact " + std::to_string(solve->contact));
+}

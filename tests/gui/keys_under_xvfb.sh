@@ -13,12 +13,14 @@ set -euo pipefail
 cd "$work"
 "$program" inspect "$case_file" --size 1280x800 2> stderr &
 pid=\$!
-for i in \$(seq 50); do win=\$(xdotool search --name "Impulse Lab" 2>/dev/null | head -1) && [ -n "\$win" ] && break; sleep 0.1; done
+# Generous waits: under CI's load (two cores, two tests at a time) the first frames can take a second.
+for i in \$(seq 150); do win=\$(xdotool search --onlyvisible --name "Impulse Lab" 2>/dev/null | head -1) && [ -n "\$win" ] && break; sleep 0.1; done
+sleep 1.5
+for key in Right Right Right Down Next Right; do xdotool key --window "\$win" "\$key"; sleep 0.4; done
 sleep 0.5
-for key in Right Right Right Down Next Right; do xdotool key --window "\$win" "\$key"; sleep 0.2; done
 # The Export panel's second button, "Export table", at the layout's place for a 1280x800 window.
 xdotool mousemove --window "\$win" 1020 760 click 1
-for i in \$(seq 50); do [ -s table.csv ] && break; sleep 0.1; done
+for i in \$(seq 150); do [ -s table.csv ] && break; sleep 0.1; done
 kill \$pid
 wait \$pid || true
 DRIVE

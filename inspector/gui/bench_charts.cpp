@@ -103,8 +103,9 @@ struct LogAxis {
         LogAxis a;
         if (values.empty()) return a;
         const auto [mn, mx] = std::minmax_element(values.begin(), values.end());
-        a.lo = static_cast<int>(std::floor(std::log10(*mn) + 1e-9));
-        a.hi = static_cast<int>(std::ceil(std::log10(*mx) - 1e-9));
+        // A twentieth of a decade of room, so a point never sits on the frame.
+        a.lo = static_cast<int>(std::floor(std::log10(*mn) - 0.05));
+        a.hi = static_cast<int>(std::ceil(std::log10(*mx) + 0.05));
         if (a.hi <= a.lo) a.hi = a.lo + 1;
         if (a.hi - a.lo > 12) a.lo = a.hi - 12;  // tiny errors (1e-16) are drawn on the bottom edge
         return a;
@@ -221,21 +222,24 @@ std::string speed_accuracy_png(const BenchRun& run) {
     const int count = static_cast<int>(run.scenes.size());
     const int columns = std::clamp(count, 1, 4);
     const int rows = (count + columns - 1) / columns;
-    const float panel_w = 470.0f, panel_h = 390.0f, header = 78.0f;
-    const int width = static_cast<int>(columns * panel_w + 20), height = static_cast<int>(header + rows * panel_h + 10);
+    const float panel_w = 470.0f, panel_h = 390.0f, header = 100.0f;
+    // At least 960 pixels wide, so the header's lines fit above a single panel too.
+    const int width = std::max(960, static_cast<int>(columns * panel_w + 20));
+    const int height = static_cast<int>(header + rows * panel_h + 10);
     return render(width, height, [&](ImDrawList& list) {
         text(list, {12, 8}, ink,
              "Speed against accuracy: time per step (recorder off, median) against each scene's error, log-log. "
              "Lower left is better.",
              17.0f);
         text(list, {12, 30}, faint,
-             "Numbers beside the markers: the iteration count N. Filled: the run held; hollow: it failed. "
+             "Numbers beside the markers: the iteration count N. Filled: the run held; hollow: it failed.");
+        text(list, {12, 49}, faint,
              "Grey line and rings: the Pareto front. Dashed: the scene's target. An error of 0 sits on the bottom "
              "edge.");
         float at = 12;
         for (std::size_t m = 0; m < run.methods.size(); ++m) {
-            marker(list, m, {at + 6, 62}, method_colour(m), true);
-            text(list, {at + 16, 53}, ink, run.methods[m]);
+            marker(list, m, {at + 6, 84}, method_colour(m), true);
+            text(list, {at + 16, 75}, ink, run.methods[m]);
             at += 34 + text_width(run.methods[m]);
         }
         for (int i = 0; i < count; ++i) {

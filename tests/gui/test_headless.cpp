@@ -289,9 +289,10 @@ TEST_CASE("a tiny bench run writes all five files, and its charts are legible pi
     int rows = 0;
     while (std::getline(csv, line)) rows += line.starts_with("sphere_drop,restitution_error,,0.01,book,") ? 1 : 0;
     CHECK(rows == 2);
-    // One panel (470 x 390 plus the header) and one colour per method: not blank, more than two colours.
+    // One panel (470 x 390 below a 100-pixel header, at least 960 wide): not blank, drawn in many colours.
     const Image chart = load_png(out / "speed_accuracy.png");
-    CHECK(chart.width == 490);
+    CHECK(chart.width == 960);
+    CHECK(chart.height == 500);
     CHECK(distinct_colours(chart) > 20);
     const Image matrix = load_png(out / "stability.png");
     CHECK(matrix.width > 100);

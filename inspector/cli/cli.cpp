@@ -146,6 +146,31 @@ void add_diff(CLI::App& app, DiffOptions& o) {
     add_open_options(*diff, o.open, "a case or scene reference");
 }
 
+void add_bench(CLI::App& app, BenchOptions& o) {
+    CLI::App* bench = app.add_subcommand(
+        "bench",
+        "Time every scene x method x iteration count (recorder off) and judge its accuracy; write results.csv,\n"
+        "results.json, speed_accuracy.png, stability.md and stability.png (docs/bench.md).\n"
+        "Example: impulse-lab bench --scenes stack_10,box_resting --methods book,pgs --iterations 1,4,16");
+    bench->add_option("--scenes", o.scenes,
+                      "Bench scenes, comma-separated (default: all: stack_10, stack_20, pyramid_20, brick_wall, "
+                      "mass_ratio_100, mass_ratio_1000, deep_plank, box_resting, spinning_box, grid_1000, "
+                      "sphere_drop, two_spheres)");
+    bench->add_option("--methods", o.methods,
+                      "Presets, comma-separated (default: book, sweep, pgs, pgs_split, soft_step)");
+    bench->add_option("--iterations", o.iterations,
+                      "Iteration counts N, comma-separated (default 1,2,4,8,16,32): iterations_per_contact for "
+                      "worst-first, sweeps for sweep/pgs/pgs_split, substeps for soft_step");
+    bench->add_option("--repeats", o.repeats, "Timed windows per configuration; the median step time is kept (default 3)");
+    bench->add_option("--out", o.out, "Folder for the five result files (default bench-results/), written atomically");
+    bench->add_option("--frames", o.frames, "Simulate this many frames of every scene instead of its own duration")
+        ->check(CLI::Range(1, 100000));
+    bench->add_option("--scene-dir", o.scene_dir, "Folder of the scene files (default: the repository's scenes/)");
+    bench->add_flag("--scaling", o.scaling,
+                    "Instead: time per resolved contact of the book preset on grid_10, grid_100, grid_1000 with "
+                    "worst_first_search priority_queue and full_scan; prints it and writes scaling.csv");
+}
+
 void add_validate(CLI::App& app, std::vector<std::string>& files) {
     CLI::App* validate = app.add_subcommand("validate", "Check case, trace and lesson files");
     validate->add_option("FILE", files, "Scene, case or trace files (JSON), lesson files (lessons/NN-name.md)")
@@ -180,6 +205,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     DiffOptions diff;
     add_worksheet(app, worksheet);
     add_diff(app, diff);
+    BenchOptions bench;
+    add_bench(app, bench);
 
     // CLI11 would say only "A subcommand is required" for a misspelt command; name it instead.
     const auto is_command = [&app](const std::string& name) {
@@ -187,7 +214,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     };
     if (!args.empty() && !args[0].empty() && args[0][0] != '-' && !is_command(args[0])) {
         err << "impulse-lab: unknown command \"" << args[0]
-            << "\" (commands: resolve, run, inspect, lesson, validate, worksheet, diff; see impulse-lab --help)\n";
+            << "\" (commands: resolve, run, inspect, lesson, validate, worksheet, diff, bench; see impulse-lab --help)\n";
         return exit_bad_input;
     }
     try {
@@ -212,6 +239,8 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         if (app.got_subcommand("lesson")) return lesson_command(lesson, out, err);
         if (app.got_subcommand("worksheet")) return worksheet_command(worksheet, out);
         if (app.got_subcommand("diff")) return diff_command(diff, out, err);
+        if (app.got_subcommand("bench"))
+            return bench_command(bench, out, err, err_is_terminal ? &err : nullptr);
         return validate_command(validate_files, out, err);
     } catch (const FileError& e) {
         err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';

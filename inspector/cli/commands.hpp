@@ -96,4 +96,19 @@ struct DiffOptions {
 // that could not be read; throws for a bad reference, flag or single file.
 int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& err);
 
+// `bench` (docs/bench.md): scenes x methods x iteration counts, timed and judged; five files into `out`.
+struct BenchOptions {
+    std::optional<std::string> scenes;      // comma-separated bench scene names; default: all
+    std::optional<std::string> methods;     // comma-separated preset names; default: book, sweep, pgs, pgs_split,
+                                            // soft_step
+    std::optional<std::string> iterations;  // comma-separated counts; default 1,2,4,8,16,32
+    int repeats = 3;                        // timed windows per configuration
+    std::string out = "bench-results";
+    std::optional<int> frames;              // overrides every scene's simulated frames
+    std::optional<std::string> scene_dir;   // default: the repository's scenes/
+    bool scaling = false;                   // instead: time per resolved contact on grid_10..grid_1000
+};
+// `progress` is where a progress bar may go (a terminal), or null for none.
+int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress);
+
 }  // namespace impulse::cli

@@ -116,7 +116,7 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
         {{"resolve"}, "impulse-lab: CASE is required"},
         {{"frobnicate"},
          "impulse-lab: unknown command \"frobnicate\" (commands: resolve, run, inspect, lesson, validate, worksheet, "
-         "diff;"},
+         "diff, bench;"},
     };
     for (const BadFlag& b : table) {
         std::vector<std::string> args = b.args;

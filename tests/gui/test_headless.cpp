@@ -273,4 +273,30 @@ TEST_CASE("without a display a lesson falls back to text and pictures, and says 
     CHECK(std::filesystem::exists(dir.file("one/trace.json")));
 }
 
+TEST_CASE("a tiny bench run writes all five files, and its charts are legible pictures of the requested data") {
+    TempDir dir;
+    const auto out = dir.file("bench");
+    const CliResult r = run_cli({"bench", "--scenes", "sphere_drop", "--methods", "book", "--iterations", "1,2",
+                                 "--frames", "40", "--repeats", "1", "--out", out.string()});
+    CAPTURE(r.err);
+    REQUIRE(r.code == 0);
+    for (const char* name : {"results.csv", "results.json", "speed_accuracy.png", "stability.md", "stability.png"})
+        CHECK_MESSAGE(std::filesystem::exists(out / name), name);
+    std::istringstream csv(read(out / "results.csv"));
+    std::string header, line;
+    std::getline(csv, header);
+    CHECK(header.starts_with("scene,metric,unit,target,method,n,"));
+    int rows = 0;
+    while (std::getline(csv, line)) rows += line.starts_with("sphere_drop,restitution_error,,0.01,book,") ? 1 : 0;
+    CHECK(rows == 2);
+    // One panel (470 x 390 below a 100-pixel header, at least 960 wide): not blank, drawn in many colours.
+    const Image chart = load_png(out / "speed_accuracy.png");
+    CHECK(chart.width == 960);
+    CHECK(chart.height == 500);
+    CHECK(distinct_colours(chart) > 20);
+    const Image matrix = load_png(out / "stability.png");
+    CHECK(matrix.width > 100);
+    CHECK(distinct_colours(matrix) > 20);
+}
+
 }  // namespace impulse::test

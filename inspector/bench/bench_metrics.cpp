@@ -1,0 +1,194 @@
+#include "bench/bench_metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace impulse::bench {
+
+namespace {
+
+bool finite(const RigidBody& b) {
+    return b.position.allFinite() && b.velocity.allFinite() && b.angular_velocity.allFinite() &&
+           b.orientation.coeffs().allFinite();
+}
+
+Vec3 linear_momentum(const std::vector<RigidBody>& bodies) {
+    Vec3 p = Vec3::Zero();
+    for (const RigidBody& b : bodies)
+        if (b.inverse_mass > 0.0) p += b.velocity / b.inverse_mass;
+    return p;
+}
+
+double momentum_scale(const std::vector<RigidBody>& bodies) {
+    double sum = 0.0;
+    for (const RigidBody& b : bodies)
+        if (b.inverse_mass > 0.0) sum += b.velocity.norm() / b.inverse_mass;
+    return sum;
+}
+
+Vec3 ground_normal(const Scene& scene) {
+    return scene.ground ? scene.ground->plane.normal : Vec3::UnitY();
+}
+
+}  // namespace
+
+AccuracyTracker::AccuracyTracker(const Scene& scene, const BenchScene& spec, int frames)
+    : scene_(scene),
+      spec_(spec),
+      dt_(scene.settings.duration),
+      top_(highest_body(scene)),
+      jitter_from_frame_(std::max(0, frames - static_cast<int>(std::lround(1.0 / scene.settings.duration)))) {
+    previous_energy_ = mechanical_energy(scene.bodies);
+    previous_kinetic_ = 0.0;
+    for (const RigidBody& b : scene.bodies) previous_kinetic_ += kinetic_energy(b);
+    previous_normal_velocity_ = scene.bodies.empty() ? 0.0 : scene.bodies[0].velocity.dot(ground_normal(scene));
+    // The isolated impact's restitution: body 0's material against the ground's (or against body 1's).
+    if (!scene.bodies.empty() && !scene.body_materials.empty()) {
+        const Material& own = scene.materials.at(scene.body_materials[0]);
+        const Material& other = scene.ground
+                                    ? scene.materials.at(scene.ground->material)
+                                    : scene.materials.at(scene.body_materials.size() > 1 ? scene.body_materials[1]
+                                                                                         : scene.body_materials[0]);
+        restitution_ = combine(own, other).restitution;
+    }
+}
+
+double AccuracyTracker::mechanical_energy(const std::vector<RigidBody>& bodies) const {
+    // E = sum of 1/2 m v^2 + 1/2 w.Iw - m g.p (potential energy against gravity, zero at the origin).
+    double e = 0.0;
+    for (const RigidBody& b : bodies) {
+        e += kinetic_energy(b);
+        if (b.inverse_mass > 0.0) e -= scene_.world.gravity.dot(b.position) / b.inverse_mass;
+    }
+    return e;
+}
+
+bool AccuracyTracker::observe(int frame, const std::vector<RigidBody>& bodies, const StepReport& report) {
+    last_frame_ = frame;
+    const double time = (frame + 1) * dt_;
+    if (!std::all_of(bodies.begin(), bodies.end(), finite)) {
+        a_.nan_time = time;
+        return false;
+    }
+    const double top_drift = (bodies[top_].position - scene_.bodies[top_].position).norm();
+    a_.top_drift_most = std::max(a_.top_drift_most, top_drift);
+    a_.top_drift_end = top_drift;
+    double any = 0.0;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        any = std::max(any, (bodies[i].position - scene_.bodies[i].position).norm());
+    a_.any_drift_most = std::max(a_.any_drift_most, any);
+    const double drift = spec_.metric == Metric::any_drift ? any : top_drift;
+    if (!a_.collapse_time && (spec_.metric == Metric::top_drift || spec_.metric == Metric::any_drift) &&
+        drift > spec_.failure_threshold)
+        a_.collapse_time = time;
+
+    if (frame >= jitter_from_frame_) {
+        for (const RigidBody& b : bodies) jitter_sum_ += b.velocity.squaredNorm();
+        jitter_samples_ += static_cast<long>(bodies.size());
+    }
+
+    // Energy: the reference is the state arriving at the first contact (the end of the frame before it).
+    const double energy = mechanical_energy(bodies);
+    double kinetic = 0.0;
+    for (const RigidBody& b : bodies) kinetic += kinetic_energy(b);
+    if (report.contacts > 0 && !energy_before_contact_) {
+        energy_before_contact_ = previous_energy_;
+        kinetic_before_contact_ = previous_kinetic_;
+    }
+    if (energy_before_contact_ && kinetic_before_contact_ > 0.0) {
+        a_.energy_gain = std::max(a_.energy_gain, (energy - *energy_before_contact_) / kinetic_before_contact_);
+        if (!energy_gain_time_ && a_.energy_gain > spec_.failure_threshold) energy_gain_time_ = time;
+    }
+    previous_energy_ = energy;
+    previous_kinetic_ = kinetic;
+
+    // Restitution of body 0's first bounce: v_before is its normal velocity at the end of the frame before the
+    // first contact, v_after at the end of the last frame of that contact. The velocity this frame's gravity
+    // added before the contact is not part of the collision (the book removes it: velocity_from_acceleration).
+    const double normal_velocity = bodies[0].velocity.dot(ground_normal(scene_));
+    if (!bounce_done_) {
+        if (report.contacts > 0) {
+            if (!arriving_) arriving_ = previous_normal_velocity_;
+            leaving_ = normal_velocity;
+        } else if (arriving_) {
+            bounce_done_ = true;
+        }
+    }
+    previous_normal_velocity_ = normal_velocity;
+    return true;
+}
+
+Accuracy AccuracyTracker::finish(const std::vector<RigidBody>& bodies) const {
+    Accuracy a = a_;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    if (!a.nan_time) {
+        for (const Contact& c : detect_contacts(scene_, bodies).contacts)
+            a.end_penetration = std::max(a.end_penetration, c.penetration);
+        for (const RigidBody& b : bodies) a.end_kinetic_energy += kinetic_energy(b);
+        a.jitter = jitter_samples_ > 0 ? std::sqrt(jitter_sum_ / static_cast<double>(jitter_samples_)) : 0.0;
+        if (arriving_ && restitution_ > 0.0 && *arriving_ != 0.0)
+            a.restitution_error = std::abs(leaving_ + restitution_ * *arriving_) / std::abs(restitution_ * *arriving_);
+        if (scene_.world.gravity.isZero()) {
+            const double scale = momentum_scale(scene_.bodies);
+            if (scale > 0.0)
+                a.momentum_error = (linear_momentum(bodies) - linear_momentum(scene_.bodies)).norm() / scale;
+        }
+    } else {
+        a.end_penetration = a.end_kinetic_energy = a.jitter = nan;
+    }
+
+    switch (spec_.metric) {
+        case Metric::top_drift:
+            a.error = a.top_drift_most;
+            break;
+        case Metric::any_drift:
+            a.error = a.any_drift_most;
+            break;
+        case Metric::end_penetration:
+            a.error = a.end_penetration;
+            break;
+        case Metric::jitter:
+            a.error = a.jitter;
+            break;
+        case Metric::energy_gain:
+            a.error = a.energy_gain;
+            break;
+        case Metric::restitution_error:
+            a.error = a.restitution_error.value_or(nan);
+            break;
+        case Metric::momentum_error:
+            a.error = a.momentum_error.value_or(nan);
+            break;
+    }
+    const double end_time = (last_frame_ + 1) * dt_;
+    if (a.nan_time) {
+        a.error = nan;
+        a.failure = "NaN";
+        a.failure_time = a.nan_time;
+    } else if (a.collapse_time) {
+        a.failure = "collapsed";
+        a.failure_time = a.collapse_time;
+    } else if (spec_.metric == Metric::end_penetration && a.end_penetration > spec_.failure_threshold) {
+        a.failure = "left deep";
+        a.failure_time = end_time;
+    } else if (spec_.metric == Metric::jitter && a.jitter > spec_.failure_threshold) {
+        a.failure = "jitters";
+        a.failure_time = end_time;
+    } else if (spec_.metric == Metric::energy_gain && energy_gain_time_) {
+        a.failure = "gained energy";
+        a.failure_time = energy_gain_time_;
+    } else if (spec_.metric == Metric::energy_gain && a.end_kinetic_energy > 0.01 * kinetic_before_contact_) {
+        // It must come to rest: at the end at most 1 % of the kinetic energy it struck with.
+        a.failure = "not at rest";
+        a.failure_time = end_time;
+    } else if (std::isnan(a.error)) {
+        a.failure = "no " + std::string(metric_meaning(spec_.metric));  // e.g. the ball never bounced
+        a.failure_time = end_time;
+    }
+    a.holds = a.failure.empty();
+    a.meets_target = a.holds && a.error <= spec_.target;
+    return a;
+}
+
+}  // namespace impulse::bench

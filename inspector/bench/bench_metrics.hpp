@@ -1,0 +1,74 @@
+#pragma once
+// The accuracy of one run, measured as it goes: a tracker sees the bodies after every frame and, at the end,
+// gives every measure the results report (not only the scene's own metric), the scene's error, whether it
+// met its target and whether it held.
+
+#include "bench/bench_plan.hpp"
+#include "scene/scene.hpp"
+#include "world/world.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impulse::bench {
+
+struct Accuracy {
+    double end_penetration = 0.0;             // m: deepest contact left after the last frame
+    double top_drift_end = 0.0;               // m: the top body's distance from its start after the last frame
+    double top_drift_most = 0.0;              // m: its largest distance from its start
+    double any_drift_most = 0.0;              // m: the largest distance any body moved from its start
+    std::optional<double> collapse_time;      // s: when the scene's drift first passed its collapse threshold
+    double end_kinetic_energy = 0.0;          // J
+    double jitter = 0.0;                      // m/s: RMS linear speed over the last second, every body
+    double energy_gain = 0.0;                 // share of the kinetic energy at the first contact gained after it
+    std::optional<double> restitution_error;  // the isolated impact, once it bounced
+    std::optional<double> momentum_error;     // scenes without gravity
+    std::optional<double> nan_time;           // s: when a state first became NaN or infinite
+
+    double error = 0.0;  // the scene's metric (BenchScene::metric); NaN when the run produced NaN
+    bool meets_target = false;
+    bool holds = false;
+    std::optional<double> failure_time;  // s, when it failed (the end of the run for end-of-run measures)
+    std::string failure;                 // why it failed, one phrase; empty when it holds
+};
+
+class AccuracyTracker {
+public:
+    // `scene` is the scene as run (its bodies are the start); frames are `scene.settings.duration` long.
+    AccuracyTracker(const Scene& scene, const BenchScene& spec, int frames);
+
+    // After frame `frame` was stepped: the bodies and what the step reported. Returns false once a state is
+    // NaN (the run should stop: nothing after it means anything).
+    bool observe(int frame, const std::vector<RigidBody>& bodies, const StepReport& report);
+
+    // After the last observed frame: `bodies` as they ended.
+    Accuracy finish(const std::vector<RigidBody>& bodies) const;
+
+private:
+    double mechanical_energy(const std::vector<RigidBody>& bodies) const;
+
+    const Scene& scene_;
+    BenchScene spec_;
+    double dt_;
+    std::size_t top_;
+    Accuracy a_;
+    int last_frame_ = -1;
+    // Jitter: squared speeds over the last second.
+    int jitter_from_frame_;
+    double jitter_sum_ = 0.0;
+    long jitter_samples_ = 0;
+    // Energy: the reference at the first contact.
+    std::optional<double> energy_before_contact_;
+    double kinetic_before_contact_ = 0.0;
+    double previous_energy_ = 0.0, previous_kinetic_ = 0.0;
+    std::optional<double> energy_gain_time_;  // s: when the gain first passed the failure threshold
+    // Restitution: the normal velocity arriving, and the one leaving when the first contact ends.
+    double previous_normal_velocity_ = 0.0;
+    std::optional<double> arriving_;
+    double leaving_ = 0.0;
+    bool bounce_done_ = false;
+    double restitution_ = 0.0;
+};
+
+}  // namespace impulse::bench

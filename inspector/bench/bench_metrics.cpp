@@ -83,10 +83,16 @@ bool AccuracyTracker::observe(int frame, const std::vector<RigidBody>& bodies, c
         drift > spec_.failure_threshold)
         a_.collapse_time = time;
 
-    if (frame >= jitter_from_frame_) {
-        for (const RigidBody& b : bodies) jitter_sum_ += b.velocity.squaredNorm();
+    // Jitter is the motion the eye sees: each body's displacement over the frame / the frame's duration. The
+    // velocity left after a step is not it: with Baumgarte and the integrate-first step, a resting box leaves
+    // every step at +g h upwards, exactly what the next step's gravity removes, and never moves.
+    if (frame >= jitter_from_frame_ && previous_positions_.size() == bodies.size()) {
+        for (std::size_t i = 0; i < bodies.size(); ++i)
+            jitter_sum_ += ((bodies[i].position - previous_positions_[i]) / dt_).squaredNorm();
         jitter_samples_ += static_cast<long>(bodies.size());
     }
+    previous_positions_.resize(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) previous_positions_[i] = bodies[i].position;
 
     // Energy: the reference is the state arriving at the first contact (the end of the frame before it).
     const double energy = mechanical_energy(bodies);

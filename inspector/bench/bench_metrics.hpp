@@ -20,7 +20,7 @@ struct Accuracy {
     double any_drift_most = 0.0;              // m: the largest distance any body moved from its start
     std::optional<double> collapse_time;      // s: when the scene's drift first passed its collapse threshold
     double end_kinetic_energy = 0.0;          // J
-    double jitter = 0.0;                      // m/s: RMS linear speed over the last second, every body
+    double jitter = 0.0;                      // m/s: RMS of |displacement| / frame over the last second, every body
     double energy_gain = 0.0;                 // share of the kinetic energy at the first contact gained after it
     std::optional<double> restitution_error;  // the isolated impact, once it bounced
     std::optional<double> momentum_error;     // scenes without gravity
@@ -58,6 +58,7 @@ private:
     int jitter_from_frame_;
     double jitter_sum_ = 0.0;
     long jitter_samples_ = 0;
+    std::vector<Vec3> previous_positions_;  // each body's position after the previous frame
     // Energy: the reference at the first contact.
     std::optional<double> energy_before_contact_;
     double kinetic_before_contact_ = 0.0;

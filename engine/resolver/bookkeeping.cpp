@@ -1,6 +1,5 @@
 #include "resolver/bookkeeping.hpp"
 
-#include <ranges>
 
 namespace impulse {
 
@@ -23,8 +22,25 @@ void for_each_contact_sharing(std::vector<PreparedContact>& contacts, const Indi
     }
 }
 
-auto every_contact(const std::vector<PreparedContact>& contacts) {
-    return std::views::iota(0, static_cast<int>(contacts.size()));
+// Every contact's index, 0 to count - 1, as a range-for walks it. Not std::views::iota: clang 14 cannot
+// compile libstdc++ 12's <ranges>, and the fuzz preset (docs/fuzzing.md) builds the engine with clang.
+struct ContactIndices {
+    struct Iterator {
+        int index;
+        int operator*() const { return index; }
+        Iterator& operator++() {
+            ++index;
+            return *this;
+        }
+        bool operator!=(const Iterator& other) const { return index != other.index; }
+    };
+    int count;
+    Iterator begin() const { return {0}; }
+    Iterator end() const { return {count}; }
+};
+
+ContactIndices every_contact(const std::vector<PreparedContact>& contacts) {
+    return {static_cast<int>(contacts.size())};
 }
 
 template <typename Indices>

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdint>
+#include <limits>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
@@ -19,21 +21,54 @@ namespace {
 using json = nlohmann::ordered_json;
 constexpr std::string_view format_name = "impulse-lab-progress";
 
-// Throws std::exception (any) when the document is not progress as written by save_progress.
-Progress read(const json& document) {
-    if (!document.is_object() || document.value("format", "") != format_name || document.value("version", 0) != 1)
-        throw std::runtime_error("not an impulse-lab-progress file of version 1");
+// A whole number from 0 to INT_MAX at `path`; anything else (a fraction, a huge or negative number, text)
+// is an error, never a cast.
+int read_count(const json& object, const std::string& path, const char* key) {
+    const std::string where = io::json_path_child(path, key);
+    if (!object.contains(key)) throw io::InputError(where, "missing");
+    const json& value = object[key];
+    if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
+        value.get<std::int64_t>() > std::numeric_limits<int>::max())
+        throw io::InputError(where, "must be a whole number from 0 to " +
+                                        std::to_string(std::numeric_limits<int>::max()) + ", got " + value.dump());
+    return static_cast<int>(value.get<std::int64_t>());
+}
+
+const json& member(const json& object, const std::string& path, const char* key, json::value_t type,
+                   const char* type_name) {
+    const std::string where = io::json_path_child(path, key);
+    if (!object.contains(key)) throw io::InputError(where, "missing");
+    if (object[key].type() != type) throw io::InputError(where, std::string("must be ") + type_name);
+    return object[key];
+}
+
+}  // namespace
+
+Progress read_progress_text(std::string_view text) {
+    const json document = io::parse_json_text(text);
+    if (!document.is_object() || document.value("format", json()) != format_name ||
+        document.value("version", json()) != 1)
+        throw io::InputError("", "not an impulse-lab-progress file of version 1");
     Progress progress;
-    for (const auto& [name, lesson] : document.at("lessons").items()) {
+    for (const auto& [name, lesson] : member(document, "", "lessons", json::value_t::object, "an object").items()) {
+        const std::string path = io::json_path_child("lessons", name);
+        if (!lesson.is_object()) throw io::InputError(path, "must be an object");
         LessonProgress p;
-        p.last_step = lesson.at("last_step").get<int>();
-        if (p.last_step < 0) throw std::runtime_error("lessons." + name + ".last_step: negative");
-        for (const auto& [id, a] : lesson.at("answers").items())
-            p.answers[id] = {a.at("answer").get<std::string>(), a.at("correct").get<bool>(), a.at("tries").get<int>()};
+        p.last_step = read_count(lesson, path, "last_step");
+        const std::string answers_path = io::json_path_child(path, "answers");
+        for (const auto& [id, a] : member(lesson, path, "answers", json::value_t::object, "an object").items()) {
+            const std::string where = io::json_path_child(answers_path, id);
+            if (!a.is_object()) throw io::InputError(where, "must be an object");
+            p.answers[id] = {member(a, where, "answer", json::value_t::string, "text").get<std::string>(),
+                             member(a, where, "correct", json::value_t::boolean, "true or false").get<bool>(),
+                             read_count(a, where, "tries")};
+        }
         progress.lessons[name] = std::move(p);
     }
     return progress;
 }
+
+namespace {
 
 std::string time_stamp() {
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
@@ -62,7 +97,7 @@ LoadedProgress load_progress(const std::filesystem::path& file) {
     text << in.rdbuf();
     try {
         if (!in) throw std::runtime_error("cannot be read");
-        return {read(io::parse_json_text(text.str())), {}};
+        return {read_progress_text(text.str()), {}};
     } catch (const std::exception& e) {
         // Kept aside, never deleted: the student (or a teacher) may want to look at it.
         const std::filesystem::path aside = file.string() + ".corrupt-" + time_stamp();

@@ -8,6 +8,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace impulse::lessons {
 
@@ -33,6 +34,10 @@ struct LoadedProgress {
     Progress progress;
     std::string note;  // one line when a corrupt file was moved aside ("... kept as progress.json.corrupt-...")
 };
+// Progress from a file's text, as save_progress writes it; throws io::InputError(JSON path, problem) for
+// anything else. Touches no file.
+Progress read_progress_text(std::string_view text);
+
 // A missing file is empty progress. A corrupt one is renamed beside itself with a time stamp and reported.
 LoadedProgress load_progress(const std::filesystem::path& file);
 

@@ -1,0 +1,99 @@
+#pragma once
+// The loaders the fuzz targets drive, each taking the whole input as text. Shared with the regression test
+// (tests/io/test_fuzz_regressions.cpp), which feeds every kept crasher to the same function. A loader given
+// bad input throws io::InputError; anything else (another exception, a crash, a sanitizer report, a hang,
+// a runaway allocation) is a bug. No loader writes a file or reads one.
+
+#include "coursework/diff_report.hpp"
+#include "coursework/filled_worksheet.hpp"
+#include "coursework/worksheet.hpp"
+#include "io/input_error.hpp"
+#include "io/json_text.hpp"
+#include "io/scene_file.hpp"
+#include "io/trace_json.hpp"
+#include "lessons/lesson.hpp"
+#include "lessons/progress.hpp"
+
+#include <string_view>
+
+namespace impulse::fuzz {
+
+// A case or scene file (docs/scenes.md), as `resolve`, `run` and `inspect` read it.
+inline void load_scene_text(std::string_view text) {
+    io::read_scene_text(text);
+}
+
+// A trace file (docs/trace-format.md), as `inspect` and `diff` read it.
+inline void load_trace_text(std::string_view text) {
+    io::read_trace_text(text);
+}
+
+// A lesson's Markdown with its JSON header (docs/lessons.md); the scene it names is not opened.
+inline void load_lesson_text(std::string_view text) {
+    lessons::read_lesson_text(text, "01-fuzz.md");
+}
+
+// A filled worksheet (docs/coursework.md) as `diff` reads a student's sheet, JSON or CSV.
+inline void load_worksheet_json(std::string_view text) {
+    coursework::read_worksheet_json(io::parse_json_text(text));
+}
+inline void load_worksheet_csv(std::string_view text) {
+    coursework::read_worksheet_csv(text);
+}
+
+// A worksheet as the reference of `diff`: its settings and scene are read and its trace re-run.
+inline void load_worksheet_reference(std::string_view text) {
+    coursework::rerun_reference(io::parse_json_text(text));
+}
+
+// A student's progress file's content (the file in the user's config folder is never opened).
+inline void load_progress_text(std::string_view text) {
+    lessons::read_progress_text(text);
+}
+
+// `diff` on two inputs, in memory: the reference trace, a NUL byte, then the other file: a trace or a JSON
+// worksheet when it starts with "{", else a CSV worksheet. The reference is read and written back as `diff`
+// does with a trace it is given, the other goes through the checks of diff_command.cpp, then the comparison
+// and its three reports. Without a NUL there is nothing to compare.
+inline void load_diff(std::string_view input) {
+    const std::size_t separator = input.find('\0');
+    if (separator == std::string_view::npos) return;
+    const io::json reference = io::trace_json(io::read_trace_text(input.substr(0, separator)));
+    const std::string_view other = input.substr(separator + 1);
+    const coursework::Tolerance tolerance;
+    const std::size_t first = other.find_first_not_of(" \t\r\n");
+    coursework::DiffReport report;
+    if (first == std::string_view::npos || other[first] != '{') {
+        report = coursework::diff_worksheet(reference, coursework::read_worksheet_csv(other), tolerance);
+    } else {
+        const io::json document = io::parse_json_text(other);
+        if (coursework::is_worksheet(document)) {
+            report = coursework::diff_worksheet(reference, coursework::read_worksheet_json(document), tolerance);
+        } else {
+            io::read_trace(document);
+            report = coursework::diff_traces(reference, document, tolerance);
+        }
+    }
+    const coursework::DiffSubject subject{"reference.json", "other", tolerance};
+    coursework::report_text(report, subject);
+    coursework::report_json(report, subject);
+    coursework::report_csv(report);
+}
+
+struct Loader {
+    std::string_view target;  // the fuzz target, and its folder under tests/fuzz_regressions
+    void (*load)(std::string_view text);
+};
+
+inline constexpr Loader loaders[] = {
+    {"fuzz_scene_text", load_scene_text},
+    {"fuzz_trace_text", load_trace_text},
+    {"fuzz_lesson_text", load_lesson_text},
+    {"fuzz_worksheet_json", load_worksheet_json},
+    {"fuzz_worksheet_csv", load_worksheet_csv},
+    {"fuzz_worksheet_reference", load_worksheet_reference},
+    {"fuzz_progress_text", load_progress_text},
+    {"fuzz_diff", load_diff},
+};
+
+}  // namespace impulse::fuzz

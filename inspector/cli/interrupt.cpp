@@ -8,7 +8,9 @@ namespace {
 
 volatile std::sig_atomic_t received_signal = 0;  // 0: none yet
 
-extern "C" void note_signal(int signal) { received_signal = signal; }
+extern "C" void note_signal(int signal) {
+    received_signal = signal;
+}
 
 }  // namespace
 

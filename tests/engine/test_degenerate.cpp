@@ -119,9 +119,9 @@ TEST_CASE("a body that can translate but not turn, hit off its centre, gets fini
 TEST_CASE("normals along and between the axes the tangent is seeded from give an orthonormal basis, every preset") {
     // basis() crosses a world axis with n; n parallel to that axis would give a zero tangent, so it picks the
     // axis n is least aligned with. Every axis, both signs, and the tie |n.x| = |n.y|.
-    const std::vector<Vec3> normals{Vec3::UnitX(),  -Vec3::UnitX(), Vec3::UnitY(),        -Vec3::UnitY(),
-                                    Vec3::UnitZ(),  -Vec3::UnitZ(), Vec3(1, 1, 0),        Vec3(-1, 1, 0),
-                                    Vec3(1, 1, 1),  Vec3(0, 1, 1),  Vec3(1e-300, 1, 0)};
+    const std::vector<Vec3> normals{Vec3::UnitX(), -Vec3::UnitX(), Vec3::UnitY(),     -Vec3::UnitY(),
+                                    Vec3::UnitZ(), -Vec3::UnitZ(), Vec3(1, 1, 0),     Vec3(-1, 1, 0),
+                                    Vec3(1, 1, 1), Vec3(0, 1, 1),  Vec3(1e-300, 1, 0)};
     for (std::string_view name : preset_names())
         for (const Vec3& n : normals) {
             CAPTURE(name);

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -73,7 +74,18 @@ void StagedFile::commit() {
     temporary_.clear();
 }
 
+DeferredSignals::DeferredSignals() {
+    sigset_t held;
+    sigemptyset(&held);
+    sigaddset(&held, SIGINT);
+    sigaddset(&held, SIGTERM);
+    pthread_sigmask(SIG_BLOCK, &held, &previous_);
+}
+
+DeferredSignals::~DeferredSignals() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view flag) {
+    const DeferredSignals held;
     StagedFile(path, contents, flag).commit();
 }
 

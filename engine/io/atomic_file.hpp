@@ -4,6 +4,7 @@
 // new one, never half of it. A command that writes several files stages them all first and renames them
 // only when every one was written, so a failure leaves none of them changed.
 
+#include <csignal>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -27,6 +28,21 @@ private:
     std::filesystem::path path_;
     std::string temporary_;
     std::string flag_;
+};
+
+// Holds SIGINT and SIGTERM back (in this thread) while it lives, so that staging a file and renaming a set of
+// files into place is never cut short: a signal that arrives meanwhile is delivered when it ends, once the
+// files are whole and no temporary is left. write_file_atomically holds them itself; a command that stages
+// several files holds them around all of its stages and commits.
+class DeferredSignals {
+public:
+    DeferredSignals();
+    ~DeferredSignals();
+    DeferredSignals(const DeferredSignals&) = delete;
+    DeferredSignals& operator=(const DeferredSignals&) = delete;
+
+private:
+    sigset_t previous_;
 };
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view flag);

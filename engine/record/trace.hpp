@@ -58,6 +58,13 @@ struct TraceFilter {
     bool operator==(const TraceFilter&) const = default;
 };
 
+// Ends `filter` before `frame`: last_frame = frame - 1, or, when that leaves nothing (frame 0), the empty
+// range first_frame = 1, last_frame = 0 (frame numbers are never negative in a trace).
+inline void end_recording_before(TraceFilter& filter, int frame) {
+    filter.last_frame = std::min(filter.last_frame, frame - 1);
+    if (filter.last_frame < 0) filter.first_frame = 1, filter.last_frame = 0;
+}
+
 struct Trace {
     int version = trace_format_version;
     Scene scene;  // the bodies and contacts as loaded, with the settings that ran

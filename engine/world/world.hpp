@@ -6,6 +6,8 @@
 #include "resolver/resolver.hpp"
 #include "scene/scene.hpp"
 
+#include <array>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -27,6 +29,19 @@ struct Detection {
 // shape take part in no test, and two immovable bodies are never tested against each other.
 Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times = nullptr);
 
+// A body whose state holds a NaN or an infinity once the step is over: the run cannot go on from it.
+struct NonFiniteBody {
+    int body = 0;
+    const char* quantity = "";       // "position", "orientation", "velocity" or "angular velocity"
+    std::optional<int> last_contact;  // the last contact in resolution order that moved it (none: no contact did)
+    std::array<int, 2> last_contact_bodies{0, world_body};  // that contact's bodies, as detected
+
+    bool operator==(const NonFiniteBody&) const = default;
+};
+
+// The first body (in body order) whose state is not finite, if any: the check every step ends with.
+std::optional<NonFiniteBody> first_non_finite(std::span<const RigidBody> bodies);
+
 struct StepReport {
     int frame = 0;
     int pairs_tested = 0;
@@ -35,6 +50,7 @@ struct StepReport {
     double kinetic_energy = 0.0;       // J, after the step
     ResolutionSummary resolution;
     StageTimes times;
+    std::optional<NonFiniteBody> non_finite;  // set when the step left a body with a NaN or infinity
 };
 
 // The body that starts highest against gravity (the top of a stack): whose drift measures a stack's hold.
@@ -43,7 +59,8 @@ std::size_t highest_body(const Scene& scene);
 // One frame of `scene.settings.duration` seconds: integrate -> detect -> resolve (soft step: detect -> soft step,
 // which integrates the bodies in its sub-steps). `bodies` is the state,
 // changed in place; the scene gives shapes, materials, the ground and the settings. `memory` keeps
-// warm-starting solvers' impulses between frames; pass the same one every frame of a run.
+// warm-starting solvers' impulses between frames; pass the same one every frame of a run. A body left with a
+// NaN or infinity is reported in `non_finite` with the contact that last touched it; the caller must stop.
 StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame,
                 ContactMemory* memory = nullptr);
 

@@ -2,12 +2,14 @@
 
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
+#include "cli/interrupt.hpp"
 #include "io/input_error.hpp"
 #include "record/trace.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <sstream>
 
 namespace impulse::cli {
 
@@ -18,6 +20,17 @@ constexpr const char* version_text = "impulse-lab " IMPULSE_LAB_VERSION;
 std::vector<std::string> preset_choices() {
     const auto names = preset_names();
     return {names.begin(), names.end()};
+}
+
+// --max-trace-mb, for every command that records a trace.
+void add_max_trace_mb(CLI::App& command, std::optional<double>& max_trace_mb) {
+    std::ostringstream default_mb;
+    default_mb << inspect::default_max_trace_mb;
+    command
+        .add_option("--max-trace-mb", max_trace_mb,
+                    "Stop recording when the trace would pass this size in MB (estimated; default " +
+                        default_mb.str() + "): it then ends with the last whole frame, and the run goes on")
+        ->check(CLI::Range(1e-6, 1e9));
 }
 
 void add_resolve(CLI::App& app, ResolveOptions& o) {
@@ -33,6 +46,7 @@ void add_resolve(CLI::App& app, ResolveOptions& o) {
     resolve->add_option("--trace", o.trace_file, "Write the trace (JSON) to this file, atomically");
     resolve->add_option("--record", o.record,
                         "Record only part of the run: frames=A..B or contacts=I,J,... (repeatable)");
+    add_max_trace_mb(*resolve, o.max_trace_mb);
     resolve->add_flag("--explain", o.explain,
                       "Print every derivation step as a table: quantity, value, formula, equation, meaning");
 }
@@ -53,6 +67,7 @@ void add_run(CLI::App& app, RunOptions& o) {
     run->add_option("--trace", o.trace_file, "Write the trace of the recorded frames (JSON), atomically");
     run->add_option("--record", o.record,
                     "Record only part of the run: frames=A..B or contacts=I,J,... (default: every frame)");
+    add_max_trace_mb(*run, o.max_trace_mb);
     run->add_option("--states", o.states_file, "Write every body's state per frame as CSV, atomically");
 }
 
@@ -63,6 +78,7 @@ void add_open_options(CLI::App& command, inspect::OpenOptions& o, const std::str
     command.add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of " + what);
     command.add_option("--frames", o.frames, "Frames to simulate for a scene (default: its own, at most 60)")
         ->check(CLI::Range(1, 100000));
+    add_max_trace_mb(command, o.max_trace_mb);
 }
 
 void add_inspect(CLI::App& app, InspectOptions& o) {
@@ -233,15 +249,19 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     }
 
     try {
-        if (app.got_subcommand("resolve")) return resolve_command(resolve, out);
+        if (app.got_subcommand("resolve")) return resolve_command(resolve, out, err);
         if (app.got_subcommand("run")) return run_command(run_options, out, err, err_is_terminal ? &err : nullptr);
         if (app.got_subcommand("inspect")) return inspect_command(inspect, out, err);
         if (app.got_subcommand("lesson")) return lesson_command(lesson, out, err);
-        if (app.got_subcommand("worksheet")) return worksheet_command(worksheet, out);
+        if (app.got_subcommand("worksheet")) return worksheet_command(worksheet, out, err);
         if (app.got_subcommand("diff")) return diff_command(diff, out, err);
         if (app.got_subcommand("bench"))
             return bench_command(bench, out, err, err_is_terminal ? &err : nullptr);
         return validate_command(validate_files, out, err);
+    } catch (const Interrupted& e) {
+        err << "impulse-lab: interrupted (" << (e.signal == SIGTERM ? "SIGTERM" : "SIGINT")
+            << "): no file written, those already there are unchanged\n";
+        return 128 + e.signal;
     } catch (const FileError& e) {
         err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
         return exit_bad_input;

@@ -19,10 +19,11 @@ struct ResolveOptions {
     std::vector<std::string> settings;  // --set name=value, in order
     std::optional<std::string> trace_file;
     std::vector<std::string> record;  // --record frames=A..B / contacts=I,J
+    std::optional<double> max_trace_mb;  // default inspect::default_max_trace_mb
     bool explain = false;
 };
 
-int resolve_command(const ResolveOptions& options, std::ostream& out);
+int resolve_command(const ResolveOptions& options, std::ostream& out, std::ostream& err);
 
 struct RunOptions {
     std::string scene_file;
@@ -32,6 +33,7 @@ struct RunOptions {
     std::vector<std::string> settings;  // --set name=value, in order
     std::optional<std::string> trace_file;
     std::vector<std::string> record;
+    std::optional<double> max_trace_mb;  // default inspect::default_max_trace_mb
     std::optional<std::string> states_file;
 };
 
@@ -81,7 +83,7 @@ struct WorksheetOptions {
     std::string out;                 // .json or .csv
     inspect::OpenOptions open;       // --preset, --set, --record, --frames for a case or scene
 };
-int worksheet_command(const WorksheetOptions& options, std::ostream& out);
+int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::ostream& err);
 
 struct DiffOptions {
     std::string reference;            // a trace, or a case or scene run as inspect runs it

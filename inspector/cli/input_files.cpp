@@ -1,6 +1,7 @@
 #include "cli/input_files.hpp"
 
 #include "io/input_error.hpp"
+#include "model/session.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -71,6 +72,14 @@ void apply_record_spec(std::string_view spec, TraceFilter& filter) {
         return;
     }
     throw io::InputError("--record", "expected frames=A..B or contacts=I,J,..., got \"" + std::string(spec) + "\"");
+}
+
+std::string trace_stopped_note(int frame, std::optional<double> max_trace_mb) {
+    std::ostringstream note;
+    note << "impulse-lab: note: the trace reached --max-trace-mb " << inspect::trace_budget_bytes(max_trace_mb) / 1e6
+         << " at frame " << frame << " and ends with frame " << frame - 1
+         << "; the frames after it ran unrecorded (raise --max-trace-mb or narrow --record)";
+    return note.str();
 }
 
 }  // namespace impulse::cli

@@ -4,6 +4,7 @@
 #include "record/trace.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -24,5 +25,9 @@ std::string read_input_file(const std::string& path);
 
 // Applies "frames=A..B" or "contacts=I,J,..." to `filter`; throws io::InputError("--record", ...).
 void apply_record_spec(std::string_view spec, TraceFilter& filter);
+
+// The one line a command prints when its recording reached --max-trace-mb at `frame`:
+// "impulse-lab: note: the trace reached --max-trace-mb 200 at frame 412 and ends with frame 411; ...".
+std::string trace_stopped_note(int frame, std::optional<double> max_trace_mb);
 
 }  // namespace impulse::cli

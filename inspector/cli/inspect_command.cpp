@@ -53,6 +53,8 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
 
     const auto start = std::chrono::steady_clock::now();
     inspect::Session session = inspect::Session::open(options.file, options.open);
+    if (session.recording_stopped_at())
+        err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
     run.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.go_to)
         session.move_to(

@@ -14,7 +14,7 @@
 
 namespace impulse::cli {
 
-int resolve_command(const ResolveOptions& options, std::ostream& out) {
+int resolve_command(const ResolveOptions& options, std::ostream& out, std::ostream& err) {
     Scene scene;
     try {
         scene = io::read_scene_text(read_input_file(options.case_file), options.preset);
@@ -24,7 +24,10 @@ int resolve_command(const ResolveOptions& options, std::ostream& out) {
     for (const std::string& assignment : options.settings) io::apply_setting(scene, assignment, "--set");
     TraceFilter recording;
     for (const std::string& spec : options.record) apply_record_spec(spec, recording);
-    const Trace trace = inspect::resolve_once(scene, recording);
+    std::optional<int> stopped_at;
+    const Trace trace = inspect::resolve_once(
+        scene, recording, {inspect::trace_budget_bytes(options.max_trace_mb), &stopped_at});
+    if (stopped_at) err << trace_stopped_note(*stopped_at, options.max_trace_mb) << '\n';
 
     // Everything the user asked for is checked before anything is written, and the trace is written
     // atomically, so a failed run leaves no file behind.

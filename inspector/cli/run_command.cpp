@@ -1,8 +1,10 @@
 // `impulse-lab run SCENE.json`: simulate a scene frame by frame (integrate -> detect -> resolve), record the
 // frames asked for, write a CSV of every body's state per frame, and summarise the run.
 
+#include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
+#include "cli/interrupt.hpp"
 #include "cli/progress.hpp"
 #include "explain/csv.hpp"
 #include "explain/format.hpp"
@@ -12,10 +14,12 @@
 #include "io/scene_file.hpp"
 #include "io/settings_json.hpp"
 #include "io/trace_json.hpp"
+#include "model/session.hpp"
 #include "record/trace_recorder.hpp"
 #include "world/world.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <sstream>
 
@@ -46,6 +50,25 @@ std::string fixed(double v, int decimals) {
     return text;
 }
 
+std::string contact_text(const Scene& scene, int contact, const std::array<int, 2>& bodies) {
+    const auto name = [&scene](int body) {
+        return body == world_body ? std::string(scene.ground ? "ground" : "world")
+                                  : scene.body_names[static_cast<std::size_t>(body)];
+    };
+    return "contact " + std::to_string(contact) + ": " + name(bodies[0]) + " / " + name(bodies[1]);
+}
+
+// `impulse-lab: frame 12: body "box3" has a non-finite velocity after resolution (last touched by contact 7: ...)`
+std::string non_finite_text(const Scene& scene, int frame, const NonFiniteBody& broken) {
+    std::string text = "impulse-lab: frame " + std::to_string(frame) + ": body \"" +
+                       scene.body_names[static_cast<std::size_t>(broken.body)] + "\" has a non-finite " +
+                       broken.quantity + " after resolution (";
+    text += broken.last_contact
+                ? "last touched by " + contact_text(scene, *broken.last_contact, broken.last_contact_bodies)
+                : std::string("no contact touched it this frame");
+    return text + ")";
+}
+
 }  // namespace
 
 int run_command(const RunOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress) {
@@ -70,7 +93,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     scene.contacts.clear();
 
     std::vector<RigidBody> bodies = scene.bodies;
-    TraceRecorder trace_recorder(trace);
+    TraceRecorder trace_recorder(trace, inspect::trace_budget_bytes(options.max_trace_mb));
     Recorder nobody;
     Recorder& recorder = options.trace_file ? static_cast<Recorder&>(trace_recorder) : nobody;
 
@@ -90,21 +113,48 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     reports.reserve(static_cast<std::size_t>(frames));
     ProgressBar bar(progress, frames);
     ContactMemory memory;
+    std::optional<int> broken_frame;  // the frame that left a body non-finite: the run stops there
+    // Ctrl-C stops the run between frames and writes nothing (cli/interrupt.hpp).
+    const InterruptHandler interrupt_handler;
     for (int frame = 0; frame < frames; ++frame) {
+        throw_if_interrupted();
         reports.push_back(step(scene, bodies, recorder, frame, &memory));
+        if (reports.back().non_finite) {
+            broken_frame = frame;
+            break;
+        }
         if (options.states_file) append_states(states, frame, (frame + 1) * dt, scene, bodies);
         const double drift = (bodies[top].position - top_start).norm();
         if (drift > top_drift_most) top_drift_most = drift, top_drift_frame = frame;
         bar.update(frame + 1);
     }
     bar.finish();
+    if (trace_recorder.stopped_at()) err << trace_stopped_note(*trace_recorder.stopped_at(), options.max_trace_mb) << '\n';
+    if (broken_frame && options.trace_file) {
+        // The broken frame is not kept (its bodies after would be NaN, which JSON cannot hold): the trace ends
+        // with the last complete frame and says so in its filter, so it stays valid.
+        if (!trace.frames.empty() && trace.frames.back().frame == *broken_frame) trace.frames.pop_back();
+        end_recording_before(trace.recording, *broken_frame);
+    }
 
-    // Both files are written to temporaries first and renamed only when both succeeded.
-    std::vector<io::StagedFile> outputs;
-    if (options.trace_file)
-        outputs.emplace_back(*options.trace_file, io::format_json(io::trace_json(trace)), "--trace");
-    if (options.states_file) outputs.emplace_back(*options.states_file, states, "--states");
-    for (io::StagedFile& file : outputs) file.commit();
+    // Formatting a long trace takes a while: a Ctrl-C meanwhile still writes nothing.
+    const std::string trace_text = options.trace_file ? io::format_json(io::trace_json(trace)) : std::string();
+    throw_if_interrupted();
+    {
+        // Both files are written to temporaries first and renamed only when both succeeded; a signal from here
+        // on waits until both are in place.
+        const io::DeferredSignals held;
+        std::vector<io::StagedFile> outputs;
+        if (options.trace_file) outputs.emplace_back(*options.trace_file, trace_text, "--trace");
+        if (options.states_file) outputs.emplace_back(*options.states_file, states, "--states");
+        for (io::StagedFile& file : outputs) file.commit();
+    }
+    if (broken_frame) {
+        err << non_finite_text(scene, *broken_frame, *reports.back().non_finite) << '\n';
+        if (options.trace_file) out << "trace of the frames before it written to " << *options.trace_file << '\n';
+        if (options.states_file) out << "states of the frames before it written to " << *options.states_file << '\n';
+        return exit_non_finite;
+    }
 
     // The summary: up to 20 frames evenly spread, and always the last.
     out << options.scene_file << ": " << bodies.size() << (bodies.size() == 1 ? " body" : " bodies")

@@ -25,7 +25,7 @@ bool ends_with_case_blind(std::string_view text, std::string_view end) {
 
 }  // namespace
 
-int worksheet_command(const WorksheetOptions& options, std::ostream& out) {
+int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::ostream& err) {
     const bool csv = ends_with_case_blind(options.out, ".csv");
     if (!csv && !ends_with_case_blind(options.out, ".json"))
         throw io::InputError("--out", "must end in .json or .csv, got \"" + options.out + "\"");
@@ -36,13 +36,15 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out) {
     std::optional<lessons::PreparedLesson> lesson;
     if (ends_with_case_blind(options.file, ".md")) {
         if (options.open.preset || !options.open.settings.empty() || !options.open.record.empty() ||
-            options.open.frames)
+            options.open.frames || options.open.max_trace_mb)
             throw io::InputError("worksheet",
                                  "a lesson runs with its own settings; give its scene file to change "
                                  "them");
         lesson.emplace(lessons::prepare_lesson(lessons::read_lesson(options.file)));
     }
     const inspect::Session session = lesson ? lesson->session : inspect::Session::open(options.file, options.open);
+    if (session.recording_stopped_at())
+        err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
     const Trace& trace = session.trace();
     std::vector<inspect::Cursor> places;
     if (!options.steps.empty())

@@ -7,7 +7,7 @@
 
 namespace impulse::inspect {
 
-Trace resolve_once(const Scene& scene, const TraceFilter& recording) {
+Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget budget) {
     Trace trace;
     trace.scene = scene;
     trace.recording = recording;
@@ -21,21 +21,23 @@ Trace resolve_once(const Scene& scene, const TraceFilter& recording) {
                                                      (contacts.size() == 1 ? " contact" : " contacts") +
                                                      ", numbered from 0)");
     std::vector<RigidBody> bodies = scene.bodies;
-    TraceRecorder recorder(trace);
+    TraceRecorder recorder(trace, budget.bytes);
     resolve_contacts(bodies, contacts, scene.settings, recorder);
+    if (budget.stopped_at) *budget.stopped_at = recorder.stopped_at();
     return trace;
 }
 
-Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames) {
+Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, TraceBudget budget) {
     Trace trace;
     trace.scene = scene;
     trace.scene.contacts.clear();  // a run detects its own
     trace.scene.world.frames = frames;
     trace.recording = recording;
     std::vector<RigidBody> bodies = scene.bodies;
-    TraceRecorder recorder(trace);
+    TraceRecorder recorder(trace, budget.bytes);
     ContactMemory memory;
     for (int frame = 0; frame < frames; ++frame) step(trace.scene, bodies, recorder, frame, &memory);
+    if (budget.stopped_at) *budget.stopped_at = recorder.stopped_at();
     return trace;
 }
 

@@ -51,6 +51,7 @@ Session Session::open(const std::string& path, const OpenOptions& options) {
         s.frames_ = s.trace_.frames.empty() ? 1 : s.trace_.frames.back().frame + 1;
     } else {
         for (const std::string& assignment : options.settings) io::apply_setting(s.scene_, assignment, "--set");
+        s.trace_budget_ = trace_budget_bytes(options.max_trace_mb);
         s.resolve_ = s.kind_ == SourceKind::case_file;
         if (options.frames && s.resolve_)
             throw io::InputError("--frames",
@@ -77,7 +78,8 @@ Session Session::from_trace(Trace trace, SourceKind kind, std::string path) {
 }
 
 void Session::rerun() {
-    trace_ = resolve_ ? resolve_once(scene_, recording_) : run_frames(scene_, recording_, frames_);
+    const TraceBudget budget{trace_budget_, &recording_stopped_at_};
+    trace_ = resolve_ ? resolve_once(scene_, recording_, budget) : run_frames(scene_, recording_, frames_, budget);
 }
 
 void Session::set(std::string_view assignment, std::string_view where) {

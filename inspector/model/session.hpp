@@ -5,6 +5,7 @@
 
 #include "model/navigator.hpp"
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -23,6 +24,7 @@ struct OpenOptions {
     std::vector<std::string> settings;  // --set name=value, in order
     std::vector<std::string> record;    // --record frames=A..B / contacts=I,J
     std::optional<int> frames;          // frames to simulate for a scene (default: up to 60, the first second)
+    std::optional<double> max_trace_mb;  // --max-trace-mb: the recording's budget (default: default_max_trace_mb)
 
     // The flag of the first option given ("--preset", "--set", "--frames", "--record"), or none: for the
     // sources that run as they were made (a trace, a worksheet, a lesson) and refuse all four.
@@ -31,11 +33,21 @@ struct OpenOptions {
         if (!settings.empty()) return "--set";
         if (frames) return "--frames";
         if (!record.empty()) return "--record";
+        if (max_trace_mb) return "--max-trace-mb";
         return std::nullopt;
     }
 };
 
 inline constexpr int default_inspect_frames = 60;
+
+// The default --max-trace-mb: a trace this size (the estimate is within about 25 %) can still be read back, under
+// the 256 MiB every command reads at most (cli::max_input_bytes).
+inline constexpr double default_max_trace_mb = 200.0;
+
+// --max-trace-mb in bytes (1 MB = 10^6 bytes).
+inline std::size_t trace_budget_bytes(std::optional<double> max_trace_mb) {
+    return static_cast<std::size_t>(max_trace_mb.value_or(default_max_trace_mb) * 1e6);
+}
 
 class Session {
 public:
@@ -59,6 +71,8 @@ public:
     int revision() const { return revision_; }
     // The settings as run (the trace's header).
     const ResolverSettings& settings() const { return trace_.scene.settings; }
+    // The frame at which the last run's recording reached --max-trace-mb and stopped, if it did.
+    std::optional<int> recording_stopped_at() const { return recording_stopped_at_; }
 
 private:
     void rerun();
@@ -69,6 +83,8 @@ private:
     TraceFilter recording_;
     int frames_ = 1;       // scene and trace files: how many frames a re-run simulates
     bool resolve_ = true;  // re-run by resolving the written contacts once, else by simulating frames
+    std::size_t trace_budget_ = trace_budget_bytes(std::nullopt);  // bytes a run may record
+    std::optional<int> recording_stopped_at_;
     Trace trace_;
     std::optional<Cursor> cursor_;
     int revision_ = 0;

@@ -185,3 +185,84 @@ TEST_CASE("run refuses bad flags and unwritable outputs before simulating, and w
     }
     CHECK(dir.entries() == 0);
 }
+
+namespace {
+
+// A ball on the ground and a bullet: with `bullet_velocity` huge enough the state overflows to infinity (no loader
+// check is bypassed: every number is finite and in range as written).
+std::string runaway_scene(const std::string& bullet_velocity, const std::string& bullet_position) {
+    return R"({"format": "impulse-lab-scene", "ground": {"material": "bouncy"},
+  "materials": {"bouncy": {"restitution": 1, "friction": 0}},
+  "bodies": [
+    {"name": "ball", "shape": {"type": "sphere", "radius": 0.5}, "position": [5, 0.5, 0]},
+    {"name": "bullet", "shape": {"type": "sphere", "radius": 0.5}, "position": )" +
+           bullet_position + R"(, "velocity": )" + bullet_velocity + R"(, "material": "bouncy"}
+  ]})";
+}
+
+}  // namespace
+
+TEST_CASE("run stops at the frame that leaves a body non-finite, names the body and the contact, keeps the trace") {
+    // Falling at 1e308 m/s onto a restitution-1 ground, the bullet asks for a change of -(1 + 1) v_s = 2e308 m/s:
+    // an infinite impulse from contact 0 (bullet / ground) in frame 0.
+    TempDir dir;
+    const auto scene = dir.write("runaway.json", runaway_scene("[0, -1e308, 0]", "[0, 3, 0]"));
+    const std::string trace = dir.file("runaway.trace.json").string();
+    const CliResult r = run_cli({"run", scene.string(), "--frames", "10", "--trace", trace});
+    CHECK(r.code == impulse::cli::exit_non_finite);
+    CHECK(r.err ==
+          "impulse-lab: frame 0: body \"bullet\" has a non-finite velocity after resolution (last touched by contact "
+          "1: bullet / ground)\n");
+    const CliResult v = run_cli({"validate", trace});
+    CHECK_MESSAGE(v.code == 0, (v.out + v.err));
+}
+
+TEST_CASE("a body that overflows with no contact stops the run with the frames before it written and valid") {
+    // 1e308 m/s sideways moves it 1.67e306 m per frame: its position passes the largest double near frame 106.
+    TempDir dir;
+    const auto scene = dir.write("runaway.json", runaway_scene("[1e308, 0, 0]", "[0, 30, 0]"));
+    const std::string trace = dir.file("runaway.trace.json").string();
+    const std::string states = dir.file("runaway.csv").string();
+    const CliResult r = run_cli({"run", scene.string(), "--frames", "500", "--trace", trace, "--states", states});
+    CHECK(r.code == impulse::cli::exit_non_finite);
+    CHECK(r.err.find("body \"bullet\" has a non-finite position after resolution (no contact touched it this "
+                     "frame)") != std::string::npos);
+    const std::size_t at = r.err.find("frame ") + 6;
+    const int frame = std::stoi(r.err.substr(at));
+    CHECK(frame > 100);
+    const CliResult v = run_cli({"validate", trace});
+    CHECK_MESSAGE(v.code == 0, (v.out + v.err));
+    CHECK(v.out.find(std::to_string(frame) + " frames") != std::string::npos);  // frames 0 .. frame - 1
+    std::ifstream csv(states);
+    std::string line;
+    std::size_t rows = 0;
+    while (std::getline(csv, line)) ++rows;
+    CHECK(rows == 1 + 2 * (static_cast<std::size_t>(frame) + 1));  // header, frame -1 and frames before it
+}
+
+TEST_CASE("a tiny --max-trace-mb stops the recording at a whole frame, says where, and the trace still validates") {
+    TempDir dir;
+    const std::string trace = dir.file("stack.trace.json").string();
+    const CliResult r = run_cli({"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "60", "--trace", trace,
+                                 "--max-trace-mb", "2"});
+    CHECK(r.code == 0);
+    const std::string note = "impulse-lab: note: the trace reached --max-trace-mb 2 at frame ";
+    REQUIRE(r.err.rfind(note, 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    const int stopped = std::stoi(r.err.substr(note.size()));
+    CHECK(stopped > 0);
+    CHECK(stopped < 60);
+    CHECK(r.out.find("60 frames") != std::string::npos);  // the run itself went on to the end
+    const CliResult v = run_cli({"validate", trace});
+    CHECK_MESSAGE(v.code == 0, (v.out + v.err));
+    CHECK(v.out.find(std::to_string(stopped) + " frames") != std::string::npos);
+    // The estimate keeps the file near the bound: never more than a third over it.
+    CHECK(std::filesystem::file_size(trace) < 2e6 * 4 / 3);
+}
+
+TEST_CASE("--max-trace-mb is refused when it is not a positive number") {
+    const CliResult r =
+        run_cli({"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--trace", "x.json", "--max-trace-mb", "0"});
+    CHECK(r.code == impulse::cli::exit_bad_input);
+    CHECK(r.err.find("--max-trace-mb") != std::string::npos);
+}

@@ -6,6 +6,7 @@
 
 #include <doctest/doctest.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -55,4 +56,30 @@ TEST_CASE("a new file gets the permissions a normally created file would have, n
     namespace fs = std::filesystem;
     CHECK(fs::status(dir.file("out.json")).permissions() ==
           (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read));
+}
+
+namespace {
+
+volatile std::sig_atomic_t terminate_seen = 0;
+extern "C" void see_terminate(int) { terminate_seen = 1; }
+
+}  // namespace
+
+TEST_CASE("a signal that arrives while files are being written is delivered only once they are in place") {
+    impulse::test::TempDir dir;
+    struct sigaction action {}, previous {};
+    action.sa_handler = see_terminate;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGTERM, &action, &previous);
+    terminate_seen = 0;
+    {
+        const impulse::io::DeferredSignals held;
+        impulse::io::StagedFile staged(dir.file("out.txt"), "whole", "--out");
+        std::raise(SIGTERM);  // held back: it would otherwise cut the write short
+        CHECK(terminate_seen == 0);
+        staged.commit();
+    }
+    CHECK(terminate_seen == 1);
+    CHECK(dir.entries() == 1);  // the file, no temporary
+    sigaction(SIGTERM, &previous, nullptr);
 }

@@ -33,7 +33,7 @@ public:
     void end_frame(std::span<const RigidBody> bodies) override;
 
     // The estimated size of the trace as written (JSON, formatted), in bytes, from per-record sizes fitted to
-    // real traces (docs/trace-format.md says how); its worst-case error has not been measured yet.
+    // real traces (trace_recorder.cpp says how); its worst-case error has not been measured yet.
     std::size_t estimated_bytes() const { return estimated_; }
     // The frame at which the budget ran out (not kept), if it did.
     std::optional<int> stopped_at() const { return stopped_at_; }

@@ -1,5 +1,7 @@
 #include "io/input_error.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 namespace impulse::io {
@@ -25,6 +27,8 @@ std::string json_path_index(std::string_view parent, std::size_t index) {
 }
 
 std::string number_text(double value) {
+    if (std::isnan(value)) return "nan";  // JSON has no word for these: its dump would say null
+    if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
     std::string text = nlohmann::json(value).dump();
     if (text.size() > 2 && text.compare(text.size() - 2, 2, ".0") == 0) text.resize(text.size() - 2);
     return text;

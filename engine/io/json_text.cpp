@@ -20,9 +20,10 @@ struct Level {
     std::set<std::string> keys;  // keys seen so far, for objects
 };
 
-std::string path_of(const std::vector<Level>& levels) {
+// The path of the innermost open level, or with `pending`, of the value being read inside it.
+std::string path_of(const std::vector<Level>& levels, bool pending = false) {
     std::string path;
-    for (std::size_t i = 0; i + 1 < levels.size(); ++i) {
+    for (std::size_t i = 0; i + (pending ? 0 : 1) < levels.size(); ++i) {
         const Level& level = levels[i];
         path = level.is_array ? json_path_index(path, level.index) : json_path_child(path, level.key);
     }
@@ -84,10 +85,12 @@ json parse_json_text(std::string_view text) {
         throw InputError("", "invalid JSON at line " + std::to_string(line) + ", column " + std::to_string(column) +
                                  ": " + (colon == std::string::npos ? what : what.substr(colon + 2)));
     } catch (const json::out_of_range& e) {
-        // A number too large for a double (1e999): nlohmann reports it as out_of_range, not as a parse error.
+        // A number too large for a double (1e999): nlohmann reports it as out_of_range, not as a parse error,
+        // while the value's key or index is the one the parser is at.
         const std::string what = e.what();
         const std::size_t bracket = what.find("] ");
-        throw InputError("", "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
+        throw InputError(path_of(levels, true),
+                         "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
     }
 }
 

@@ -2,6 +2,7 @@
 
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
+#include "io/physical_values.hpp"
 #include "io/schemas.hpp"
 #include "io/settings_json.hpp"
 #include "io/suggest.hpp"
@@ -15,54 +16,12 @@ namespace impulse::io {
 
 namespace {
 
-// A stored quaternion or normal is used as it is when it is unit to rounding, so a file written by us
-// reads back bit for bit; otherwise it is normalised (quaternions only within 1e-6 of unit length).
-constexpr double unit_rounding = 1e-12;
-constexpr double unit_quaternion_tolerance = 1e-6;
-
-std::string eigenvalues_text(const Eigen::Vector3d& values) {
-    std::ostringstream out;
-    out << number_text(values[0]) << ", " << number_text(values[1]) << ", " << number_text(values[2]);
-    return out.str();
-}
-
-void require_symmetric(const Mat3& m, const std::string& path) {
-    const double scale = std::max(1.0, m.cwiseAbs().maxCoeff());
-    if ((m - m.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale)
-        throw InputError(path, "must be symmetric (row i, column j equal to row j, column i)");
-}
-
-Mat3 inverse_of_inertia(const Mat3& inertia, const std::string& path) {
-    require_symmetric(inertia, path);
-    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(inertia);
-    if (eigen.eigenvalues().minCoeff() <= 0.0)
-        throw InputError(path,
-                         "must be positive definite, but its eigenvalues are " + eigenvalues_text(eigen.eigenvalues()));
-    return inertia.inverse();
-}
-
-void check_inverse_inertia(const Mat3& inverse_inertia, const std::string& path) {
-    require_symmetric(inverse_inertia, path);
-    const Eigen::SelfAdjointEigenSolver<Mat3> eigen(inverse_inertia);
-    const double scale = std::max(1.0, inverse_inertia.cwiseAbs().maxCoeff());
-    if (eigen.eigenvalues().minCoeff() < -1e-12 * scale)
-        throw InputError(path, "must be positive semi-definite (zero = cannot rotate), but its eigenvalues are " +
-                                   eigenvalues_text(eigen.eigenvalues()));
-}
-
 Quat read_orientation(const json& body, const std::string& path) {
     if (body.contains("orientation") && body.contains("orientation_deg"))
         throw InputError(json_path_child(path, "orientation_deg"), "give orientation or orientation_deg, not both");
     if (body.contains("orientation_deg")) return orientation_from_euler_xyz_degrees(read_vec3(body["orientation_deg"]));
     if (!body.contains("orientation")) return Quat::Identity();
-    Quat q = read_quat(body["orientation"]);
-    const double norm = q.norm();
-    if (std::abs(norm - 1.0) > unit_quaternion_tolerance)
-        throw InputError(
-            json_path_child(path, "orientation"),
-            "must be a unit quaternion [w, x, y, z] (length 1 within 1e-6), got length " + number_text(norm));
-    if (std::abs(norm - 1.0) > unit_rounding) q.normalize();
-    return q;
+    return unit_quaternion(read_quat(body["orientation"]), json_path_child(path, "orientation"));
 }
 
 std::optional<Shape> read_shape(const json& body, const std::string& path) {
@@ -158,10 +117,7 @@ Contact read_contact(const json& j, const std::vector<std::string>& names, const
         throw InputError(bodies_path, "a body cannot touch itself (both are \"" +
                                           names[static_cast<std::size_t>(c.bodies[0])] + "\")");
     c.point = read_vec3(j["point"]);
-    c.normal = read_vec3(j["normal"]);
-    const double length = c.normal.norm();
-    if (!(length > 1e-12)) throw InputError(json_path_child(path, "normal"), "must not be zero");
-    if (std::abs(length - 1.0) > unit_rounding) c.normal /= length;
+    c.normal = nonzero_direction(read_vec3(j["normal"]), json_path_child(path, "normal"));
     c.penetration = j.value("penetration", 0.0);
     c.restitution = j.value("restitution", 0.0);
     c.friction = j.value("friction", 0.0);
@@ -184,11 +140,7 @@ std::optional<Ground> read_ground(const json& document, const std::map<std::stri
     if (!document.contains("ground")) return std::nullopt;
     const json& j = document["ground"];
     Ground ground;
-    if (j.contains("normal")) {
-        const Vec3 n = read_vec3(j["normal"]);
-        if (!(n.norm() > 1e-12)) throw InputError("ground.normal", "must not be zero");
-        ground.plane.normal = std::abs(n.norm() - 1.0) > unit_rounding ? Vec3(n.normalized()) : n;
-    }
+    if (j.contains("normal")) ground.plane.normal = nonzero_direction(read_vec3(j["normal"]), "ground.normal");
     ground.plane.offset = j.value("offset", 0.0);
     ground.material = read_material_name(j, materials, "ground");
     return ground;

@@ -117,6 +117,12 @@ void check_schema(const json& root, const Documents& siblings, const json& schem
             if (!value.is_array() || !std::all_of(value.begin(), value.end(), std::mem_fn(&json::is_string))) {
                 schema_error(here, "must be an array of strings");
             }
+        } else if (key == "dependentRequired") {
+            const auto names = [](const json& list) {
+                return list.is_array() && std::all_of(list.begin(), list.end(), std::mem_fn(&json::is_string));
+            };
+            if (!value.is_object() || !std::all_of(value.begin(), value.end(), names))
+                schema_error(here, "must be an object of arrays of strings");
         } else if (is_in(key, {"minItems", "maxItems", "minLength", "maxLength", "minProperties"})) {
             if (!value.is_number_unsigned() && !(value.is_number_integer() && value.get<std::int64_t>() >= 0)) {
                 schema_error(here, "must be a non-negative integer");
@@ -323,6 +329,18 @@ private:
             const auto& key = name.get_ref<const std::string&>();
             if (object.contains(key)) continue;
             return Failure{json_path_child(node.path, key), "missing (required)", node.depth + 1};
+        }
+        // Fields that come together: with the first present, each of the others must be too.
+        if (const json* dependent = keyword(schema, "dependentRequired")) {
+            for (auto it = dependent->begin(); it != dependent->end(); ++it) {
+                if (!object.contains(it.key())) continue;
+                for (const json& name : *it) {
+                    const auto& key = name.get_ref<const std::string&>();
+                    if (object.contains(key)) continue;
+                    return Failure{json_path_child(node.path, key), "missing (given with " + it.key() + ")",
+                                   node.depth + 1};
+                }
+            }
         }
         if (properties) {
             for (auto it = properties->begin(); it != properties->end(); ++it) {

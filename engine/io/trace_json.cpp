@@ -3,6 +3,7 @@
 #include "io/scene_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
+#include "io/physical_values.hpp"
 #include "io/schemas.hpp"
 #include "io/settings_json.hpp"
 #include "resolver/settings_names.hpp"
@@ -489,6 +490,27 @@ void check_references(const json& frame, const std::string& path, std::size_t bo
         throw InputError(json_path_child(path, "phases"), "needs one position phase and one velocity phase");
 }
 
+// What the schema cannot say about a frame's values: the states and records describe real bodies and contacts,
+// so the replay and the scene view can trust them (a trace we write passes with room to spare).
+void check_frame_values(const FrameRecord& f, const std::string& path) {
+    const auto check_states = [&path](const std::vector<BodyState>& states, const char* key) {
+        for (std::size_t i = 0; i < states.size(); ++i)
+            unit_quaternion(states[i].orientation,
+                            json_path_child(json_path_index(json_path_child(path, key), i), "orientation"));
+    };
+    check_states(f.bodies_before, "bodies_before");
+    check_states(f.bodies_after, "bodies_after");
+    for (std::size_t i = 0; i < f.inverse_inertia_world.size(); ++i)
+        check_inverse_inertia(
+            f.inverse_inertia_world[i],
+            json_path_child(json_path_index(json_path_child(path, "bodies_before"), i), "inverse_inertia_world"));
+    for (std::size_t i = 0; i < f.contacts.size(); ++i) {
+        const std::string at = json_path_index(json_path_child(path, "contacts"), i);
+        require_unit_vector(f.contacts[i].normal, json_path_child(at, "normal"));
+        require_orthonormal(f.contacts[i].basis.contact_to_world, json_path_child(at, "basis"));
+    }
+}
+
 }  // namespace
 
 json trace_json(const Trace& trace) {
@@ -525,6 +547,7 @@ Trace read_trace(const json& document) {
     for (std::size_t i = 0; i < frames.size(); ++i) {
         check_references(frames[i], json_path_index("frames", i), trace.scene.bodies.size());
         trace.frames.push_back(read_frame(frames[i]));
+        check_frame_values(trace.frames.back(), json_path_index("frames", i));
     }
     return trace;
 }

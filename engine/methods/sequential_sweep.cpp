@@ -22,7 +22,6 @@ namespace impulse {
 
 PhaseOutcome sweep_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
                               const ResolverSettings& settings, Recorder& recorder) {
-    const auto desired_of = [](const PreparedContact& c) { return c.desired_delta_velocity.desired_delta_velocity; };
     PhaseOutcome outcome;
     outcome.iteration_limit = std::max(settings.sweeps, 0) * static_cast<int>(contacts.size());
     const ContactsByBody by_body(contacts, bodies.size());  // so a visit updates its neighbours, not every contact

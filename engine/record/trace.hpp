@@ -74,6 +74,13 @@ struct Trace {
     bool operator==(const Trace&) const = default;
 };
 
+// Ends a trace before `frame`, the one that broke a run: drops that frame's record if it was recorded (its bodies
+// after would be NaN, which JSON cannot hold) and ends the filter before it, so the trace stays valid.
+inline void end_trace_before(Trace& trace, int frame) {
+    if (!trace.frames.empty() && trace.frames.back().frame == frame) trace.frames.pop_back();
+    end_recording_before(trace.recording, frame);
+}
+
 BodyState state_of(const RigidBody& body);
 
 }  // namespace impulse

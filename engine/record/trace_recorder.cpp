@@ -14,7 +14,9 @@ constexpr std::size_t frame_body_bytes = 180;    // a body before and after, wit
 constexpr std::size_t contact_bytes = 2300;      // steps 1-5 of a contact
 constexpr std::size_t position_iteration_bytes = 600;
 constexpr std::size_t velocity_iteration_bytes = 1850;
-constexpr std::size_t iteration_line_bytes = 250;     // an iteration on a contact outside the recorded set
+constexpr std::size_t iteration_line_bytes = 250;     // an iteration on a contact outside the recorded set,
+constexpr std::size_t sweep_place_bytes = 130;        // plus, on such a line, where in the sweeps it is
+constexpr std::size_t accumulated_bytes = 300;        // and its accumulated impulse (counted from formatted traces)
 constexpr std::size_t position_update_bytes = 300;    // one update to a contact sharing a body
 constexpr std::size_t velocity_update_bytes = 570;
 
@@ -73,8 +75,10 @@ void TraceRecorder::velocity_iteration(const VelocityIteration& iteration) {
     VelocityIteration& kept = trace_.frames.back().velocity.iterations.emplace_back(iteration);
     if (!trace_.recording.records_contact(iteration.contact)) kept.resolution.reset();
     if (trace_.recording.contacts) kept.updates = kept_updates(iteration.updates);
-    count((kept.resolution ? velocity_iteration_bytes : iteration_line_bytes) +
-          velocity_update_bytes * kept.updates.size());
+    // A full record's size is an average over the methods; a line is mostly its sweep fields, when it has them.
+    const std::size_t line_bytes =
+        iteration_line_bytes + (kept.sweep ? sweep_place_bytes : 0) + (kept.accumulated ? accumulated_bytes : 0);
+    count((kept.resolution ? velocity_iteration_bytes : line_bytes) + velocity_update_bytes * kept.updates.size());
 }
 
 void TraceRecorder::end_phase(Phase phase, const PhaseOutcome& outcome) {

@@ -54,6 +54,11 @@ struct PreparedContact {
     bool operator==(const PreparedContact&) const = default;
 };
 
+// The Δv a velocity method compares with its epsilon and resolves: the bookkeeping's, bias included.
+inline double desired_of(const PreparedContact& c) {
+    return c.desired_delta_velocity.desired_delta_velocity;
+}
+
 // Each body's mass properties once per frame, with the world inverse inertia R I^-1 R^T.
 std::vector<MassProperties> mass_properties(std::span<const RigidBody> bodies);
 

@@ -8,14 +8,6 @@
 
 namespace impulse {
 
-namespace {
-
-double desired_of(const PreparedContact& c) {
-    return c.desired_delta_velocity.desired_delta_velocity;
-}
-
-}  // namespace
-
 bool any_desired_delta_velocity_above(const std::vector<PreparedContact>& contacts, double epsilon) {
     return std::any_of(contacts.begin(), contacts.end(), [epsilon](const PreparedContact& c) {
         return !c.derivation.inert && desired_of(c) > epsilon;

@@ -32,67 +32,7 @@ void stamp_material(std::vector<Contact>& contacts, std::size_t first, const Sce
     }
 }
 
-// Passes every report on to the caller's recorder and remembers, per body, the last contact an iteration
-// resolved (in resolution order, both phases): who to blame if the body ends the step non-finite. One store
-// per iteration, so the recorder-off path stays as fast.
-class LastTouch final : public Recorder {
-public:
-    LastTouch(Recorder& inner, std::span<const Contact> contacts, std::size_t body_count)
-        : inner_(inner), contacts_(contacts), last_(body_count, -1) {}
-
-    bool wants_updates() const override { return inner_.wants_updates(); }
-    void begin_frame(int frame, std::span<const RigidBody> bodies, std::span<const MassProperties> mass) override {
-        inner_.begin_frame(frame, bodies, mass);
-    }
-    void contacts_prepared(std::span<const PreparedContact> contacts) override { inner_.contacts_prepared(contacts); }
-    void position_iteration(const PositionIteration& iteration) override {
-        touched(iteration.contact);
-        inner_.position_iteration(iteration);
-    }
-    void velocity_iteration(const VelocityIteration& iteration) override {
-        touched(iteration.contact);
-        inner_.velocity_iteration(iteration);
-    }
-    void end_phase(Phase phase, const PhaseOutcome& outcome) override { inner_.end_phase(phase, outcome); }
-    void end_frame(std::span<const RigidBody> bodies) override { inner_.end_frame(bodies); }
-
-    // The last contact that touched `body`, if any did.
-    std::optional<int> last_contact(int body) const {
-        const int c = last_[static_cast<std::size_t>(body)];
-        return c < 0 ? std::nullopt : std::optional<int>(c);
-    }
-
-private:
-    void touched(int contact) {
-        if (contact < 0 || contact >= static_cast<int>(contacts_.size())) return;
-        for (int b : contacts_[static_cast<std::size_t>(contact)].bodies)
-            if (b != world_body) last_[static_cast<std::size_t>(b)] = contact;
-    }
-
-    Recorder& inner_;
-    std::span<const Contact> contacts_;
-    std::vector<int> last_;
-};
-
-const char* non_finite_quantity(const RigidBody& body) {
-    if (!body.position.allFinite()) return "position";
-    if (!body.orientation.coeffs().allFinite()) return "orientation";
-    if (!body.velocity.allFinite()) return "velocity";
-    if (!body.angular_velocity.allFinite()) return "angular velocity";
-    return nullptr;
-}
-
 }  // namespace
-
-std::optional<NonFiniteBody> first_non_finite(std::span<const RigidBody> bodies) {
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-        if (const char* quantity = non_finite_quantity(bodies[i]))
-            return NonFiniteBody{.body = static_cast<int>(i),
-                                 .quantity = quantity,
-                                 .last_contact = std::nullopt,
-                                 .last_contact_bodies = {0, world_body}};
-    return std::nullopt;
-}
 
 Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times) {
     Detection detection;
@@ -174,13 +114,7 @@ StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& re
                                   : resolve_contacts(bodies, detection.contacts, scene.settings, touch, frame, memory);
     report.times.resolve = seconds_since(start);
 
-    report.non_finite = first_non_finite(bodies);
-    if (report.non_finite) {
-        report.non_finite->last_contact = touch.last_contact(report.non_finite->body);
-        if (report.non_finite->last_contact)
-            report.non_finite->last_contact_bodies =
-                detection.contacts[static_cast<std::size_t>(*report.non_finite->last_contact)].bodies;
-    }
+    report.non_finite = first_non_finite(bodies, touch);
 
     for (const RigidBody& body : bodies) report.kinetic_energy += kinetic_energy(body);
     return report;

@@ -2,6 +2,7 @@
 // The world step, in the reference engine's demo order: integrate every body, detect contacts, resolve them.
 // Each stage is timed for the profile (never for traces, which must be byte-identical run to run).
 
+#include "world/non_finite_check.hpp"
 #include "record/recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "scene/scene.hpp"
@@ -28,19 +29,6 @@ struct Detection {
 // Every contact between shaped bodies and with the ground, with the materials combined. Bodies without a
 // shape take part in no test, and two immovable bodies are never tested against each other.
 Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times = nullptr);
-
-// A body whose state holds a NaN or an infinity once the step is over: the run cannot go on from it.
-struct NonFiniteBody {
-    int body = 0;
-    const char* quantity = "";       // "position", "orientation", "velocity" or "angular velocity"
-    std::optional<int> last_contact;  // the last contact in resolution order that moved it (none: no contact did)
-    std::array<int, 2> last_contact_bodies{0, world_body};  // that contact's bodies, as detected
-
-    bool operator==(const NonFiniteBody&) const = default;
-};
-
-// The first body (in body order) whose state is not finite, if any: the check every step ends with.
-std::optional<NonFiniteBody> first_non_finite(std::span<const RigidBody> bodies);
 
 struct StepReport {
     int frame = 0;

@@ -9,6 +9,8 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <charconv>
+#include <cstdlib>
 #include <sstream>
 
 namespace impulse::cli {
@@ -22,15 +24,46 @@ std::vector<std::string> preset_choices() {
     return {names.begin(), names.end()};
 }
 
+// CLI11's Range lets NaN through (every comparison with it is false) and calls "1x" out of range; these say
+// what is wrong with the text itself. CLI11 prints the message after the flag's name.
+CLI::Validator whole_number(long long lowest, long long highest) {
+    const std::string range = std::to_string(lowest) + " to " + std::to_string(highest);
+    return CLI::Validator(
+        [lowest, highest, range](std::string& text) -> std::string {
+            long long value = 0;
+            const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+            if (text.empty() || error == std::errc::invalid_argument || end != text.data() + text.size())
+                return "expected a whole number from " + range + ", got \"" + text + "\"";
+            if (error == std::errc::result_out_of_range || value < lowest || value > highest)
+                return "must be from " + range + ", got " + text;
+            return {};
+        },
+        "INT in " + range);
+}
+
+CLI::Validator finite_number(double lowest, double highest) {
+    const std::string range = io::number_text(lowest) + " to " + io::number_text(highest);
+    return CLI::Validator(
+        [lowest, highest, range](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            if (text.empty() || end != text.c_str() + text.size())
+                return "expected a number from " + range + ", got \"" + text + "\"";
+            if (!(value >= lowest && value <= highest)) return "must be from " + range + ", got " + text;
+            return {};
+        },
+        "NUMBER in " + range);
+}
+
 // --max-trace-mb, for every command that records a trace.
 void add_max_trace_mb(CLI::App& command, std::optional<double>& max_trace_mb) {
     std::ostringstream default_mb;
     default_mb << inspect::default_max_trace_mb;
     command
         .add_option("--max-trace-mb", max_trace_mb,
-                    "Stop recording when the trace would pass this size in MB (estimated; default " +
-                        default_mb.str() + "): it then ends with the last whole frame, and the run goes on")
-        ->check(CLI::Range(1e-6, 1e9));
+                    "Stop recording when the trace would pass this size in MB (estimated; default " + default_mb.str() +
+                        "): it then ends with the last whole frame, and the run goes on")
+        ->check(finite_number(1e-6, 1e9));
 }
 
 void add_resolve(CLI::App& app, ResolveOptions& o) {
@@ -58,9 +91,9 @@ void add_run(CLI::App& app, RunOptions& o) {
         "Example: impulse-lab run scenes/stack_3.json --trace stack.json --record frames=0..9");
     run->add_option("SCENE", o.scene_file, "Scene file (JSON)")->required();
     run->add_option("--frames", o.frames, "Frames to simulate (default: the scene's settings.frames, 600)")
-        ->check(CLI::Range(1, 10000000));
+        ->check(whole_number(1, 10000000));
     run->add_option("--dt", o.dt, "Frame duration in seconds (default: the scene's settings.duration, 1/60)")
-        ->check(CLI::Range(1e-6, 10.0));
+        ->check(finite_number(1e-6, 10.0));
     run->add_option("--preset", o.preset, "Settings preset the scene's own settings apply on top of")
         ->check(CLI::IsMember(preset_choices()));
     run->add_option("--set", o.settings, "Change one setting, e.g. --set position_epsilon=0.001 (repeatable)");
@@ -77,7 +110,7 @@ void add_open_options(CLI::App& command, inspect::OpenOptions& o, const std::str
     command.add_option("--set", o.settings, "Change one setting of " + what + " (repeatable)");
     command.add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of " + what);
     command.add_option("--frames", o.frames, "Frames to simulate for a scene (default: its own, at most 60)")
-        ->check(CLI::Range(1, 100000));
+        ->check(whole_number(1, 100000));
     add_max_trace_mb(command, o.max_trace_mb);
 }
 
@@ -105,7 +138,7 @@ void add_inspect(CLI::App& app, InspectOptions& o) {
     inspect
         ->add_option("--bench-frames", o.bench_frames,
                      "Render N frames stepping one derivation step per frame; print frame-time percentiles")
-        ->check(CLI::Range(1, 1000000));
+        ->check(whole_number(1, 1000000));
     add_open_options(*inspect, o.open, "a case or scene");
 }
 
@@ -115,7 +148,7 @@ void add_lesson(CLI::App& app, LessonOptions& o) {
         "The course on chapter 14: without N, the lessons and your progress; with N, that lesson in the\n"
         "inspector (a window; with --headless or without a display, annotated text and PNGs in a folder).\n"
         "Example: impulse-lab lesson 1");
-    lesson->add_option("N", o.number, "Lesson number")->check(CLI::Range(1, 99));
+    lesson->add_option("N", o.number, "Lesson number")->check(whole_number(1, 99));
     lesson->add_flag("--headless", o.headless, "Print the lesson as text; write its trace and a PNG per step");
     lesson->add_option("--out", o.out, "Folder for the headless lesson's files (default lesson-NN)");
     lesson->add_option("--lessons", o.lessons_folder, "Folder of lesson files (default: the repository's lessons/)");
@@ -177,10 +210,13 @@ void add_bench(CLI::App& app, BenchOptions& o) {
     bench->add_option("--iterations", o.iterations,
                       "Iteration counts N, comma-separated (default 1,2,4,8,16,32): iterations_per_contact for "
                       "worst-first, sweeps for sweep/pgs/pgs_split, substeps for soft_step");
-    bench->add_option("--repeats", o.repeats, "Timed windows per configuration; the median step time is kept (default 3)");
+    bench
+        ->add_option("--repeats", o.repeats,
+                     "Timed windows per configuration; the median step time is kept (default 3)")
+        ->check(whole_number(1, 1000));
     bench->add_option("--out", o.out, "Folder for the five result files (default bench-results/), written atomically");
     bench->add_option("--frames", o.frames, "Simulate this many frames of every scene instead of its own duration")
-        ->check(CLI::Range(1, 100000));
+        ->check(whole_number(1, 100000));
     bench->add_option("--scene-dir", o.scene_dir, "Folder of the scene files (default: the repository's scenes/)");
     bench->add_flag("--scaling", o.scaling,
                     "Instead: time per resolved contact of the book preset on grid_10, grid_100, grid_1000 with "

@@ -4,6 +4,7 @@
 #include "model/session.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <charconv>
 #include <cstring>
@@ -13,20 +14,33 @@
 
 namespace impulse::cli {
 
-std::string read_input_file(const std::string& path) {
+namespace {
+
+std::string size_limit_text(std::size_t limit) {
+    return "the limit of " + std::to_string(limit >> 20) + " MiB (" + std::to_string(limit) + " bytes)";
+}
+
+}  // namespace
+
+std::string read_input_file(const std::string& path, std::size_t limit) {
     struct stat info {};
     if (::stat(path.c_str(), &info) != 0)
         throw FileError{path, "", std::string("cannot read: ") + std::strerror(errno)};
     if (S_ISDIR(info.st_mode)) throw FileError{path, "", "is a directory, not a file"};
-    if (static_cast<std::size_t>(info.st_size) > max_input_bytes)
-        throw FileError{path, "",
-                        "is " + std::to_string(info.st_size >> 20) + " MiB; the limit is " +
-                            std::to_string(max_input_bytes >> 20) + " MiB"};
+    if (static_cast<std::size_t>(info.st_size) > limit)
+        throw FileError{path, "", "is " + std::to_string(info.st_size) + " bytes, over " + size_limit_text(limit)};
     std::ifstream in(path, std::ios::binary);
     if (!in) throw FileError{path, "", std::string("cannot read: ") + std::strerror(errno)};
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
+    // Read in chunks up to one byte past the limit: the size stat gave is 0 for pipes and devices.
+    std::string text;
+    std::array<char, 1 << 16> chunk{};
+    while (in && text.size() <= limit) {
+        in.read(chunk.data(), static_cast<std::streamsize>(std::min(chunk.size(), limit + 1 - text.size())));
+        text.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    }
+    if (text.size() > limit) throw FileError{path, "", "goes on past " + size_limit_text(limit)};
+    if (in.bad()) throw FileError{path, "", std::string("cannot read: ") + std::strerror(errno)};
+    return text;
 }
 
 namespace {

@@ -10,7 +10,11 @@
 
 namespace impulse::cli {
 
+// The most a command reads from one file, stated in docs/fuzzing.md. JSON documents (traces, scenes, worksheets)
+// may be as large as the largest trace --max-trace-mb lets us write; text a person writes (lessons, inspect
+// scripts, the progress file) is far smaller, so a wrong file named there is refused early.
 inline constexpr std::size_t max_input_bytes = 256u << 20;  // 256 MiB: larger than any trace we write
+inline constexpr std::size_t max_text_input_bytes = 4u << 20;  // 4 MiB: lessons, scripts, progress
 
 // An error about a named file: its `where` is the file, then the JSON path. Thrown on by the commands and
 // printed by cli.cpp as "impulse-lab: file: path: problem".
@@ -20,8 +24,9 @@ struct FileError {
     std::string problem;
 };
 
-// The whole file; throws FileError if it cannot be read or is larger than the limit.
-std::string read_input_file(const std::string& path);
+// The whole file; throws FileError if it cannot be read or is larger than `limit`. The limit holds while
+// reading too, so a device or a pipe that never ends (/dev/zero) is refused after `limit` bytes.
+std::string read_input_file(const std::string& path, std::size_t limit = max_input_bytes);
 
 // Applies "frames=A..B" or "contacts=I,J,..." to `filter`; throws io::InputError("--record", ...).
 void apply_record_spec(std::string_view spec, TraceFilter& filter);

@@ -14,7 +14,7 @@ namespace impulse::cli {
 
 std::vector<inspect::Action> read_script_file(const std::string& path) {
     try {
-        return inspect::parse_script(read_input_file(path));
+        return inspect::parse_script(read_input_file(path, max_text_input_bytes));
     } catch (const io::InputError& e) {
         throw FileError{path, e.where(), e.problem()};
     }
@@ -55,6 +55,11 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
     inspect::Session session = inspect::Session::open(options.file, options.open);
     if (session.recording_stopped_at())
         err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
+    // Shown up to the frame before it: the frames that led there are what there is to debug.
+    if (session.broken_run())
+        err << "impulse-lab: note: the run stopped at "
+            << inspect::broken_run_text(session.trace().scene, *session.broken_run())
+            << "; the frames before it are shown\n";
     run.load_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (options.go_to)
         session.move_to(

@@ -1,6 +1,7 @@
 // `impulse-lab resolve CASE.json`: resolve the case's contacts once (one frame), write the trace, and
 // explain or summarise what happened.
 
+#include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
 #include "explain/explain.hpp"
@@ -25,9 +26,15 @@ int resolve_command(const ResolveOptions& options, std::ostream& out, std::ostre
     TraceFilter recording;
     for (const std::string& spec : options.record) apply_record_spec(spec, recording);
     std::optional<int> stopped_at;
+    std::optional<inspect::BrokenRun> broken;
     const Trace trace = inspect::resolve_once(
-        scene, recording, {inspect::trace_budget_bytes(options.max_trace_mb), &stopped_at});
+        scene, recording, {inspect::trace_budget_bytes(options.max_trace_mb), &stopped_at}, &broken);
     if (stopped_at) err << trace_stopped_note(*stopped_at, options.max_trace_mb) << '\n';
+    // One frame, and it broke: there is nothing before it to write.
+    if (broken) {
+        err << "impulse-lab: " << inspect::broken_run_text(scene, *broken) << "; nothing written\n";
+        return exit_non_finite;
+    }
 
     // Everything the user asked for is checked before anything is written, and the trace is written
     // atomically, so a failed run leaves no file behind.

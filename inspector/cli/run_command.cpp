@@ -50,25 +50,6 @@ std::string fixed(double v, int decimals) {
     return text;
 }
 
-std::string contact_text(const Scene& scene, int contact, const std::array<int, 2>& bodies) {
-    const auto name = [&scene](int body) {
-        return body == world_body ? std::string(scene.ground ? "ground" : "world")
-                                  : scene.body_names[static_cast<std::size_t>(body)];
-    };
-    return "contact " + std::to_string(contact) + ": " + name(bodies[0]) + " / " + name(bodies[1]);
-}
-
-// `impulse-lab: frame 12: body "box3" has a non-finite velocity after resolution (last touched by contact 7: ...)`
-std::string non_finite_text(const Scene& scene, int frame, const NonFiniteBody& broken) {
-    std::string text = "impulse-lab: frame " + std::to_string(frame) + ": body \"" +
-                       scene.body_names[static_cast<std::size_t>(broken.body)] + "\" has a non-finite " +
-                       broken.quantity + " after resolution (";
-    text += broken.last_contact
-                ? "last touched by " + contact_text(scene, *broken.last_contact, broken.last_contact_bodies)
-                : std::string("no contact touched it this frame");
-    return text + ")";
-}
-
 }  // namespace
 
 int run_command(const RunOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress) {
@@ -130,12 +111,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     }
     bar.finish();
     if (trace_recorder.stopped_at()) err << trace_stopped_note(*trace_recorder.stopped_at(), options.max_trace_mb) << '\n';
-    if (broken_frame && options.trace_file) {
-        // The broken frame is not kept (its bodies after would be NaN, which JSON cannot hold): the trace ends
-        // with the last complete frame and says so in its filter, so it stays valid.
-        if (!trace.frames.empty() && trace.frames.back().frame == *broken_frame) trace.frames.pop_back();
-        end_recording_before(trace.recording, *broken_frame);
-    }
+    if (broken_frame && options.trace_file) end_trace_before(trace, *broken_frame);
 
     // Formatting a long trace takes a while: a Ctrl-C meanwhile still writes nothing.
     const std::string trace_text = options.trace_file ? io::format_json(io::trace_json(trace)) : std::string();
@@ -150,7 +126,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
         for (io::StagedFile& file : outputs) file.commit();
     }
     if (broken_frame) {
-        err << non_finite_text(scene, *broken_frame, *reports.back().non_finite) << '\n';
+        err << "impulse-lab: " << inspect::broken_run_text(scene, {*broken_frame, *reports.back().non_finite}) << '\n';
         if (options.trace_file) out << "trace of the frames before it written to " << *options.trace_file << '\n';
         if (options.states_file) out << "states of the frames before it written to " << *options.states_file << '\n';
         return exit_non_finite;

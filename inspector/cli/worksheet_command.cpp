@@ -1,6 +1,7 @@
 // `impulse-lab worksheet FILE --out sheet.json|.csv`: the inputs and blank cells of chosen derivation steps
 // of a lesson, case, scene or trace, for students to fill in by hand or with their own engine (docs/coursework.md).
 
+#include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
 #include "coursework/worksheet.hpp"
@@ -45,6 +46,12 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
     const inspect::Session session = lesson ? lesson->session : inspect::Session::open(options.file, options.open);
     if (session.recording_stopped_at())
         err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
+    // A worksheet's numbers must be re-made exactly by diff; a run that broke is not coursework.
+    if (session.broken_run()) {
+        err << "impulse-lab: " << inspect::broken_run_text(session.trace().scene, *session.broken_run())
+            << "; no worksheet written\n";
+        return exit_non_finite;
+    }
     const Trace& trace = session.trace();
     std::vector<inspect::Cursor> places;
     if (!options.steps.empty())

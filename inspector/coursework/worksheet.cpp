@@ -306,10 +306,19 @@ Trace rerun_reference(const io::json& document) {
     recording.last_frame = r["last_frame"].is_null() ? INT_MAX : r["last_frame"].get<int>();
     if (!r["contacts"].is_null()) recording.contacts = r["contacts"].get<std::vector<int>>();
     const io::json& run = reference["run"];
-    if (run["mode"] == "resolve") return inspect::resolve_once(scene, recording);
-    if (!run.contains("frames"))
-        throw io::InputError("reference.run.frames", "missing: a simulated reference needs its number of frames");
-    return inspect::run_frames(scene, recording, run["frames"].get<int>());
+    std::optional<inspect::BrokenRun> broken;
+    Trace trace;
+    if (run["mode"] == "resolve") {
+        trace = inspect::resolve_once(scene, recording, {}, &broken);
+    } else {
+        if (!run.contains("frames"))
+            throw io::InputError("reference.run.frames", "missing: a simulated reference needs its number of frames");
+        trace = inspect::run_frames(scene, recording, run["frames"].get<int>(), {}, &broken);
+    }
+    // `worksheet` never writes one from a broken run, so this reference was not made by it.
+    if (broken)
+        throw io::InputError("reference.run", "re-running it stops at " + inspect::broken_run_text(scene, *broken));
+    return trace;
 }
 
 io::json worksheet_json(const Worksheet& sheet) {

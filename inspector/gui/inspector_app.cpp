@@ -125,6 +125,11 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
     const bool close_when_done = run.headless || run.screenshot.has_value();
 
     UiState state;
+    // The run stopped early: say where in the status line, not only on the terminal.
+    if (session.broken_run()) {
+        state.message = "the run stopped at " + inspect::broken_run_text(session.trace().scene, *session.broken_run());
+        state.message_is_error = true;
+    }
     if (run.lesson) {
         state.lesson = LessonState{run.lesson, 0, {}, {}, run.progress, run.progress_file};
         state.lesson->verdicts.resize(run.lesson->places.size());

@@ -228,7 +228,7 @@ int question_count(const Lesson& lesson) {
 
 Lesson read_lesson(const std::filesystem::path& file) {
     try {
-        return read_lesson_text(cli::read_input_file(file.string()), file);
+        return read_lesson_text(cli::read_input_file(file.string(), cli::max_text_input_bytes), file);
     } catch (const io::InputError& e) {
         throw cli::FileError{file.string(), e.where(), e.problem()};
     }

@@ -1,5 +1,6 @@
 #include "lessons/progress.hpp"
 
+#include "cli/input_files.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
@@ -11,8 +12,6 @@
 #include <limits>
 #include <cstdlib>
 #include <ctime>
-#include <fstream>
-#include <sstream>
 
 namespace impulse::lessons {
 
@@ -92,22 +91,21 @@ std::optional<std::filesystem::path> progress_file() {
 LoadedProgress load_progress(const std::filesystem::path& file) {
     std::error_code error;
     if (!std::filesystem::exists(file, error)) return {};
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
+    std::string why;
     try {
-        if (!in) throw std::runtime_error("cannot be read");
-        return {read_progress_text(text.str()), {}};
+        return {read_progress_text(cli::read_input_file(file.string(), cli::max_text_input_bytes)), {}};
+    } catch (const cli::FileError& e) {
+        why = e.problem;  // unreadable, or larger than any progress file we write
     } catch (const std::exception& e) {
-        // Kept aside, never deleted: the student (or a teacher) may want to look at it.
-        const std::filesystem::path aside = file.string() + ".corrupt-" + time_stamp();
-        std::filesystem::rename(file, aside, error);
-        const std::string why = dynamic_cast<const io::InputError*>(&e) ? std::string(e.what()) : e.what();
-        return {{},
-                "progress file " + file.string() + " is unreadable (" + why + "); " +
-                    (error ? "it is left where it is and progress starts afresh"
-                           : "kept as " + aside.filename().string() + ", progress starts afresh")};
+        why = e.what();
     }
+    // Kept aside, never deleted: the student (or a teacher) may want to look at it.
+    const std::filesystem::path aside = file.string() + ".corrupt-" + time_stamp();
+    std::filesystem::rename(file, aside, error);
+    return {{},
+            "progress file " + file.string() + " is unreadable (" + why + "); " +
+                (error ? "it is left where it is and progress starts afresh"
+                       : "kept as " + aside.filename().string() + ", progress starts afresh")};
 }
 
 void save_progress(const std::filesystem::path& file, const Progress& progress) {

@@ -7,7 +7,29 @@
 
 namespace impulse::inspect {
 
-Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget budget) {
+namespace {
+
+std::string contact_text(const Scene& scene, int contact, const std::array<int, 2>& bodies) {
+    const auto name = [&scene](int body) {
+        return body == world_body ? std::string(scene.ground ? "ground" : "world")
+                                  : scene.body_names[static_cast<std::size_t>(body)];
+    };
+    return "contact " + std::to_string(contact) + ": " + name(bodies[0]) + " / " + name(bodies[1]);
+}
+
+}  // namespace
+
+std::string broken_run_text(const Scene& scene, const BrokenRun& broken) {
+    const NonFiniteBody& b = broken.body;
+    return "frame " + std::to_string(broken.frame) + ": body \"" + scene.body_names[static_cast<std::size_t>(b.body)] +
+           "\" has a non-finite " + b.quantity + " after resolution (" +
+           (b.last_contact ? "last touched by " + contact_text(scene, *b.last_contact, b.last_contact_bodies)
+                           : std::string("no contact touched it this frame")) +
+           ")";
+}
+
+Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget budget,
+                   std::optional<BrokenRun>* broken) {
     Trace trace;
     trace.scene = scene;
     trace.recording = recording;
@@ -22,12 +44,18 @@ Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget
                                                      ", numbered from 0)");
     std::vector<RigidBody> bodies = scene.bodies;
     TraceRecorder recorder(trace, budget.bytes);
-    resolve_contacts(bodies, contacts, scene.settings, recorder);
+    LastTouch touch(recorder, contacts, bodies.size());
+    resolve_contacts(bodies, contacts, scene.settings, touch);
     if (budget.stopped_at) *budget.stopped_at = recorder.stopped_at();
+    if (auto non_finite = first_non_finite(bodies, touch)) {
+        end_trace_before(trace, 0);
+        if (broken) *broken = BrokenRun{0, *non_finite};
+    }
     return trace;
 }
 
-Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, TraceBudget budget) {
+Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, TraceBudget budget,
+                 std::optional<BrokenRun>* broken) {
     Trace trace;
     trace.scene = scene;
     trace.scene.contacts.clear();  // a run detects its own
@@ -36,7 +64,14 @@ Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, T
     std::vector<RigidBody> bodies = scene.bodies;
     TraceRecorder recorder(trace, budget.bytes);
     ContactMemory memory;
-    for (int frame = 0; frame < frames; ++frame) step(trace.scene, bodies, recorder, frame, &memory);
+    for (int frame = 0; frame < frames; ++frame) {
+        const StepReport report = step(trace.scene, bodies, recorder, frame, &memory);
+        if (report.non_finite) {
+            end_trace_before(trace, frame);
+            if (broken) *broken = BrokenRun{frame, *report.non_finite};
+            break;
+        }
+    }
     if (budget.stopped_at) *budget.stopped_at = recorder.stopped_at();
     return trace;
 }

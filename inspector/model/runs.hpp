@@ -3,10 +3,12 @@
 // which re-runs a scene whenever a setting changes.
 
 #include "record/trace.hpp"
+#include "world/non_finite_check.hpp"
 
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 
 namespace impulse::inspect {
 
@@ -17,11 +19,25 @@ struct TraceBudget {
     std::optional<int>* stopped_at = nullptr;
 };
 
+// A run that stopped because a frame left a body's state non-finite. The trace ends with the frame before it
+// (a NaN has no JSON), and its recording filter says so, so it stays valid.
+struct BrokenRun {
+    int frame = 0;
+    NonFiniteBody body;
+};
+
+// `frame 12: body "box3" has a non-finite velocity after resolution (last touched by contact 7: box3 / box4)`
+std::string broken_run_text(const Scene& scene, const BrokenRun& broken);
+
 // One resolution of the scene's contacts: those written in it, else those its shapes make where they
 // stand. Throws io::InputError("--record", ...) when the filter names a contact the frame does not have.
-Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget budget = {});
+// If it leaves a body non-finite, `broken` (if given) receives it and the trace holds no frame.
+Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget budget = {},
+                   std::optional<BrokenRun>* broken = nullptr);
 
-// `frames` frames of the world step (integrate, detect, resolve), recording those the filter names.
-Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, TraceBudget budget = {});
+// `frames` frames of the world step (integrate, detect, resolve), recording those the filter names. A frame
+// that leaves a body non-finite ends the run: `broken` (if given) receives it, and the trace ends before it.
+Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, TraceBudget budget = {},
+                 std::optional<BrokenRun>* broken = nullptr);
 
 }  // namespace impulse::inspect

@@ -79,7 +79,9 @@ Session Session::from_trace(Trace trace, SourceKind kind, std::string path) {
 
 void Session::rerun() {
     const TraceBudget budget{trace_budget_, &recording_stopped_at_};
-    trace_ = resolve_ ? resolve_once(scene_, recording_, budget) : run_frames(scene_, recording_, frames_, budget);
+    broken_run_.reset();
+    trace_ = resolve_ ? resolve_once(scene_, recording_, budget, &broken_run_)
+                      : run_frames(scene_, recording_, frames_, budget, &broken_run_);
 }
 
 void Session::set(std::string_view assignment, std::string_view where) {

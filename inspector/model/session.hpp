@@ -4,6 +4,7 @@
 // place where that still exists. No rendering here, so the tests drive it exactly as the window does.
 
 #include "model/navigator.hpp"
+#include "model/runs.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -40,8 +41,9 @@ struct OpenOptions {
 
 inline constexpr int default_inspect_frames = 60;
 
-// The default --max-trace-mb: a trace this size (the estimate is within about 25 %) can still be read back, under
-// the 256 MiB every command reads at most (cli::max_input_bytes).
+// The default --max-trace-mb: the estimate has come to at least 0.91 of the size written (tests/io/
+// test_trace_file.cpp), so a trace stopped at 200 MB is at most about 220 MB and can still be read back under the
+// 256 MiB every command reads at most (cli::max_input_bytes).
 inline constexpr double default_max_trace_mb = 200.0;
 
 // --max-trace-mb in bytes (1 MB = 10^6 bytes).
@@ -73,6 +75,9 @@ public:
     const ResolverSettings& settings() const { return trace_.scene.settings; }
     // The frame at which the last run's recording reached --max-trace-mb and stopped, if it did.
     std::optional<int> recording_stopped_at() const { return recording_stopped_at_; }
+    // Where the last run stopped because a body's state became NaN or infinite, if it did: the trace ends
+    // before that frame.
+    const std::optional<BrokenRun>& broken_run() const { return broken_run_; }
 
 private:
     void rerun();
@@ -85,6 +90,7 @@ private:
     bool resolve_ = true;  // re-run by resolving the written contacts once, else by simulating frames
     std::size_t trace_budget_ = trace_budget_bytes(std::nullopt);  // bytes a run may record
     std::optional<int> recording_stopped_at_;
+    std::optional<BrokenRun> broken_run_;
     Trace trace_;
     std::optional<Cursor> cursor_;
     int revision_ = 0;

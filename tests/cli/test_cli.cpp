@@ -169,14 +169,25 @@ TEST_CASE("run refuses bad flags and unwritable outputs before simulating, and w
     const std::string scene = IMPULSE_SOURCE_DIR "/scenes/stack_3.json";
     const std::string trace = dir.file("t.json").string();
     const std::vector<std::pair<std::vector<std::string>, std::string>> table{
-        {{"run", scene, "--frames", "0"}, "impulse-lab: --frames: Value 0 not in range 1 to 10000000"},
-        {{"run", scene, "--dt", "-1"}, "impulse-lab: --dt: Value -1 not in range"},
+        {{"run", scene, "--frames", "0"}, "impulse-lab: --frames: must be from 1 to 10000000, got 0"},
+        {{"run", scene, "--frames", "1e3"},
+         "impulse-lab: --frames: expected a whole number from 1 to 10000000, got \"1e3\""},
+        {{"run", scene, "--frames", "99999999999999999999"},
+         "impulse-lab: --frames: must be from 1 to 10000000, got 99999999999999999999"},
+        {{"run", scene, "--dt", "-1"}, "impulse-lab: --dt: must be from 1e-06 to 10, got -1"},
+        {{"run", scene, "--dt", "nan"}, "impulse-lab: --dt: must be from 1e-06 to 10, got nan"},
+        {{"run", scene, "--dt", "1/60"}, "impulse-lab: --dt: expected a number from 1e-06 to 10, got \"1/60\""},
+        {{"run", scene, "--trace", trace, "--max-trace-mb", "nan"},
+         "impulse-lab: --max-trace-mb: must be from 1e-06 to 1000000000, got nan"},
+        {{"run", scene, "--trace", trace, "--max-trace-mb", "inf"},
+         "impulse-lab: --max-trace-mb: must be from 1e-06 to 1000000000, got inf"},
         {{"run", scene, "--trace", trace, "--states", dir.file("no/dir/s.csv").string()},
          "impulse-lab: --states: cannot write '" + dir.file("no/dir/s.csv").string() + "': No such file or directory"},
         {{"run", scene, "--trace", trace, "--set", "frames=0"}, "impulse-lab: --set frames: must be >= 1, got 0"},
     };
     for (const auto& [args, starts] : table) {
-        CAPTURE(starts);
+        const auto& expected = starts;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+        CAPTURE(expected);
         const CliResult r = run_cli(args);
         CHECK(r.code == 2);
         CHECK(r.err.rfind(starts, 0) == 0);
@@ -240,6 +251,26 @@ TEST_CASE("a body that overflows with no contact stops the run with the frames b
     CHECK(rows == 1 + 2 * (static_cast<std::size_t>(frame) + 1));  // header, frame -1 and frames before it
 }
 
+TEST_CASE("resolve and worksheet stop where run stops on a non-finite body, say so and write nothing") {
+    TempDir dir;
+    // resolve: the one frame breaks, so nothing is written.
+    const auto falling = dir.write("falling.json", runaway_scene("[0, -1e308, 0]", "[0, 0.4, 0]"));
+    const CliResult resolved = run_cli({"resolve", falling.string(), "--trace", dir.file("r.json").string()});
+    CHECK(resolved.code == impulse::cli::exit_non_finite);
+    CHECK(resolved.err ==
+          "impulse-lab: frame 0: body \"bullet\" has a non-finite velocity after resolution (last touched by contact "
+          "1: bullet / ground); nothing written\n");
+    CHECK_FALSE(std::filesystem::exists(dir.file("r.json")));
+
+    // worksheet refuses: diff could not re-make it. (inspect shows the frames before it: impulse_gui_tests.)
+    const auto sideways = dir.write("sideways.json", runaway_scene("[1e308, 0, 0]", "[0, 30, 0]"));
+    const std::string sheet = dir.file("sheet.json").string();
+    const CliResult worksheet = run_cli({"worksheet", sideways.string(), "--frames", "200", "--out", sheet});
+    CHECK(worksheet.code == impulse::cli::exit_non_finite);
+    CHECK(worksheet.err.find("; no worksheet written\n") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(sheet));
+}
+
 TEST_CASE("a tiny --max-trace-mb stops the recording at a whole frame, says where, and the trace still validates") {
     TempDir dir;
     const std::string trace = dir.file("stack.trace.json").string();
@@ -265,4 +296,19 @@ TEST_CASE("--max-trace-mb is refused when it is not a positive number") {
         run_cli({"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--trace", "x.json", "--max-trace-mb", "0"});
     CHECK(r.code == impulse::cli::exit_bad_input);
     CHECK(r.err.find("--max-trace-mb") != std::string::npos);
+}
+
+TEST_CASE("a file over its stated size limit is refused before it is parsed, and so is one that never ends") {
+    TempDir dir;
+    // A lesson is text a person writes: 4 MiB at most (cli::max_text_input_bytes).
+    const std::string lesson = dir.write("01-huge.md", std::string((4u << 20) + 1, '#')).string();
+    const CliResult big = run_cli({"validate", lesson});
+    CHECK(big.code == impulse::cli::exit_bad_input);
+    CHECK(big.err == "impulse-lab: " + lesson + ": is 4194305 bytes, over the limit of 4 MiB (4194304 bytes)\n");
+    // stat says 0 bytes for a device: the limit holds while reading.
+    const CliResult endless = run_cli({"inspect", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--headless", "--script",
+                                       "/dev/zero", "--screenshot", dir.file("shot.png").string()});
+    CHECK(endless.code == impulse::cli::exit_bad_input);
+    CHECK(endless.err == "impulse-lab: /dev/zero: goes on past the limit of 4 MiB (4194304 bytes)\n");
+    CHECK(dir.entries() == 1);  // the lesson only: no screenshot
 }

@@ -306,7 +306,8 @@ TEST_CASE("worksheet refuses a bad --out or --steps in one line, exit code 2 and
         {{"worksheet", ruler}, "impulse-lab: --out is required"},
     };
     for (const auto& [args, starts] : table) {
-        CAPTURE(starts);
+        const auto& expected = starts;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+        CAPTURE(expected);
         const test::CliResult r = test::run_cli(args);
         CHECK(r.code == 2);
         CHECK(r.err.rfind(starts, 0) == 0);

@@ -299,4 +299,18 @@ TEST_CASE("a tiny bench run writes all five files, and its charts are legible pi
     CHECK(distinct_colours(matrix) > 20);
 }
 
+TEST_CASE("inspect shows a run up to the frame that left a body non-finite, with a note naming it") {
+    // Moving sideways at 1e308 m/s, the bullet's position passes the largest double a little after frame 100.
+    TempDir dir;
+    const auto scene = dir.write("sideways.json", R"({"bodies": [{"name": "bullet", "shape": {"type": "sphere",
+        "radius": 0.5}, "position": [0, 30, 0], "velocity": [1e308, 0, 0]}]})");
+    const std::string shot = dir.file("shot.png").string();
+    const CliResult r = run_cli({"inspect", scene.string(), "--frames", "200", "--headless", "--screenshot", shot});
+    CHECK(r.code == 0);
+    CHECK(r.err.find("impulse-lab: note: the run stopped at frame ") == 0);
+    CHECK(r.err.find("body \"bullet\" has a non-finite position after resolution (no contact touched it this "
+                     "frame); the frames before it are shown\n") != std::string::npos);
+    CHECK(std::filesystem::exists(shot));
+}
+
 }  // namespace impulse::test

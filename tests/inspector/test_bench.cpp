@@ -157,7 +157,8 @@ TEST_CASE("bad bench flags print one line naming the flag, exit with code 2 and 
         {{"--iterations", "1,x"}, "--iterations: expected counts"},
         {{"--iterations", "0"}, "--iterations: expected counts"},
         {{"--iterations", "2,2"}, "--iterations: 2 is given twice"},
-        {{"--repeats", "0"}, "--repeats: must be >= 1, got 0"},
+        {{"--repeats", "0"}, "--repeats: must be from 1 to 1000, got 0"},
+        {{"--repeats", "three"}, "--repeats: expected a whole number from 1 to 1000, got \"three\""},
         {{"--out", dir.file("missing/deeper").string()}, "--out"},
     };
     for (const auto& [flags, message] : cases) {

@@ -338,7 +338,8 @@ TEST_CASE("a line that is not an action is an input error at its line number") {
         {"view", "line 1"},                  // missing plane
     };
     for (const auto& [text, where] : bad) {
-        CAPTURE(text);
+        const auto& script = text;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
+        CAPTURE(script);
         const io::InputError e = script_error(text);
         CHECK(e.where() == where);
         CHECK_FALSE(e.problem().empty());

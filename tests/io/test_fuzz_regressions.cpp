@@ -102,3 +102,10 @@ TEST_CASE("a progress file's counts must be whole numbers that fit, named by the
           "lessons.01-x.answers.q.tries: must be a whole number from 0 to 2147483647, got 1e+300");
     CHECK(rejection("fuzz_progress_text", "last-step-text.json").starts_with("lessons.01-x.last_step: must be"));
 }
+
+TEST_CASE("a trace iteration with part of its derivation is rejected at the missing key, not read past it") {
+    // libFuzzer (fuzz_trace_text, 194375 executions in): impulse_world dropped from a velocity iteration that keeps
+    // impulse_model; the reader then indexed a key that was not there (a nlohmann assertion, undefined behaviour).
+    CHECK(rejection("fuzz_trace_text", "velocity-derivation-without-impulse-world.json") ==
+          "frames[0].phases[1].iterations[1].impulse_world: missing (given with impulse_model)");
+}

@@ -143,7 +143,8 @@ TEST_CASE("malformed cases are rejected with one line naming the path, exit code
                    R"([{"bodies": ["ruler", null], "point": [0, 0, 0], "normal": [0, 1, 0], "restitution": 1.5}])"),
          "contacts[0].restitution: must be <= 1, got 1.5"},
         {"unknown preset", case_with("[" + ruler + "]", "[]", R"(, "settings": {"preset": "fast"})"),
-         "settings.preset: must be one of \"book\", \"chapter\", \"sweep\", \"pgs\", \"pgs_split\", \"soft_step\"; got \"fast\""},
+         "settings.preset: must be one of \"book\", \"chapter\", \"sweep\", \"pgs\", \"pgs_split\", \"soft_step\"; got "
+         "\"fast\""},
         {"no bodies list", R"({"contacts": []})", "bodies: missing (required)"},
         {"no bodies", case_with("[]", "[]"), "bodies: must have at least 1 item, got 0"},
         {"a string for a number", case_with(R"([{"inverse_mass": 0, "position": [0, "x", 0]}])", "[]"),
@@ -172,7 +173,9 @@ TEST_CASE("malformed cases are rejected with one line naming the path, exit code
          case_with("[" + ruler + "]", "[]", R"(, "materials": {"ice": {"friction": -0.1}})"),
          "materials.ice.friction: must be >= 0, got -0.1"},
         {"a number too large for a double", case_with(R"([{"inverse_mass": 1e999}])", "[]"),
-         "invalid JSON: number overflow parsing '1e999'"},
+         "bodies[0].inverse_mass: invalid JSON: number overflow parsing '1e999'"},
+        {"a number too large for a double in a vector", case_with(R"([{"position": [0, -1e400, 0]}])", "[]"),
+         "bodies[0].position[1]: invalid JSON: number overflow parsing '-1e400'"},
         {"broken JSON", "{\n  \"bodies\": [,]\n}",
          "invalid JSON at line 2, column 14: syntax error while parsing value - unexpected ','; expected '[', '{', or "
          "a literal"},

@@ -162,6 +162,20 @@ TEST_CASE("an unknown key with no close match lists the expected fields") {
           "unknown field; no fields are allowed here");
 }
 
+TEST_CASE("fields that come together are all required once one of them is given") {
+    const json schema = R"({"dependentRequired": {"model": ["impulse", "change"], "impulse": ["model"]}})"_oj;
+    CHECK(passes(schema, R"({})"_oj));
+    CHECK(passes(schema, R"({"model": 1, "impulse": 2, "change": 3})"_oj));
+    CHECK(passes(schema, R"({"change": 3})"_oj));  // change alone asks for nothing
+    auto r = report(schema, R"({"model": 1, "impulse": 2})"_oj);
+    CHECK(r.where == "change");
+    CHECK(r.problem == "missing (given with model)");
+    r = report(schema, R"({"impulse": 2})"_oj);
+    CHECK(r.where == "model");
+    CHECK(r.problem == "missing (given with impulse)");
+    CHECK_THROWS_AS(SchemaValidator(R"({"dependentRequired": {"a": "b"}})"_oj), std::logic_error);
+}
+
 TEST_CASE("unknown keys are reported before missing required keys") {
     const auto r = report(body_schema, R"({"nmae": "x"})"_oj);
     CHECK(r.where == "nmae");

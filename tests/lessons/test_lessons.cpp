@@ -193,6 +193,16 @@ TEST_CASE("progress survives a round trip and a corrupt file is kept aside and r
     CHECK(kept == 1);
 }
 
+TEST_CASE("a progress file larger than any we write is kept aside unread, and progress starts afresh") {
+    TempDir dir;
+    const auto file = dir.write("progress.json", std::string((4u << 20) + 1, ' '));
+    const lessons::LoadedProgress loaded = lessons::load_progress(file);
+    CHECK(loaded.progress.lessons.empty());
+    CHECK(loaded.note.find("is unreadable (is 4194305 bytes, over the limit of 4 MiB") != std::string::npos);
+    CHECK(loaded.note.find("kept as progress.json.corrupt-") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(file));
+}
+
 TEST_CASE("impulse-lab lesson lists the lessons with the progress kept in the config folder") {
     TempDir dir;
     const auto lessons_dir = dir.file("course");

@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -14,6 +16,13 @@ inline constexpr int max_json_depth = 64;
 
 // Throws InputError: "invalid JSON at line 3, column 7: ..." (no path), or "<path>: key given twice".
 nlohmann::ordered_json parse_json_text(std::string_view text);
+
+// Where `text` stops being UTF-8: the offset of the first byte that does not belong (none: it is all UTF-8).
+// For text read outside JSON (CSV, Markdown), which nlohmann would otherwise refuse only when writing it.
+std::optional<std::size_t> first_non_utf8_byte(std::string_view text);
+
+// Throws InputError("line 3", "not UTF-8 text: byte 0x98 at column 41") unless `text` is all UTF-8.
+void require_utf8(std::string_view text);
 
 // Indented two spaces; arrays of numbers (and arrays of such arrays) on one line. Doubles keep 17
 // significant digits, so a value read back is the same to the last bit.

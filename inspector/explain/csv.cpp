@@ -1,6 +1,7 @@
 #include "explain/csv.hpp"
 
 #include "io/input_error.hpp"
+#include "io/json_text.hpp"
 
 namespace impulse::explain {
 
@@ -22,6 +23,7 @@ std::string csv_row(const std::vector<std::string>& fields) {
 
 std::vector<CsvRow> parse_csv(std::string_view text) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
+    io::require_utf8(text);  // its cells end up in JSON reports, which hold only UTF-8
     std::vector<CsvRow> rows;
     std::size_t line = 1, at = 0;
     while (at < text.size()) {

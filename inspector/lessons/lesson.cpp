@@ -135,6 +135,7 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
     Lesson lesson;
     lesson.file = file;
     lesson.name = file.stem().string();
+    io::require_utf8(text);  // shown in the window and written to the headless text and worksheets
     {
         int number = 0;
         const auto [end, error] = std::from_chars(lesson.name.data(), lesson.name.data() + lesson.name.size(), number);

@@ -31,57 +31,41 @@ const std::array<BenchScene, 12> scenes{{
 
 }  // namespace
 
+namespace {
+
+// Every metric's name (in results files), unit ("" for a ratio) and meaning (in charts and the summary), in one row.
+struct MetricWords {
+    Metric metric;
+    std::string_view name, unit, meaning;
+};
+constexpr std::array<MetricWords, 7> metric_words{{
+    {Metric::top_drift, "top_drift", "m", "top-body drift"},
+    {Metric::any_drift, "any_drift", "m", "largest drift of any body"},
+    {Metric::end_penetration, "end_penetration", "m", "deepest penetration at the end"},
+    {Metric::jitter, "jitter", "m/s", "RMS speed over the last second"},
+    {Metric::energy_gain, "energy_gain", "", "energy gained after the first contact"},
+    {Metric::restitution_error, "restitution_error", "", "restitution error"},
+    {Metric::momentum_error, "momentum_error", "", "momentum error"},
+}};
+
+const MetricWords& words_of(Metric metric) {
+    for (const MetricWords& w : metric_words)
+        if (w.metric == metric) return w;
+    return metric_words.front();  // unreachable: every Metric has a row
+}
+
+}  // namespace
+
 std::string_view metric_name(Metric metric) {
-    switch (metric) {
-        case Metric::top_drift:
-            return "top_drift";
-        case Metric::any_drift:
-            return "any_drift";
-        case Metric::end_penetration:
-            return "end_penetration";
-        case Metric::jitter:
-            return "jitter";
-        case Metric::energy_gain:
-            return "energy_gain";
-        case Metric::restitution_error:
-            return "restitution_error";
-        case Metric::momentum_error:
-            return "momentum_error";
-    }
-    return "";
+    return words_of(metric).name;
 }
 
 std::string_view metric_unit(Metric metric) {
-    switch (metric) {
-        case Metric::top_drift:
-        case Metric::any_drift:
-        case Metric::end_penetration:
-            return "m";
-        case Metric::jitter:
-            return "m/s";
-        default:
-            return "";
-    }
+    return words_of(metric).unit;
 }
 
 std::string_view metric_meaning(Metric metric) {
-    switch (metric) {
-        case Metric::top_drift:
-            return "top-body drift";
-        case Metric::any_drift:
-            return "largest drift of any body";
-        case Metric::end_penetration:
-            return "deepest penetration at the end";
-        case Metric::jitter:
-            return "RMS speed over the last second";
-        case Metric::energy_gain:
-            return "energy gained after the first contact";
-        case Metric::restitution_error:
-            return "restitution error";
-        case Metric::momentum_error:
-            return "momentum error";
-    }
-    return "";
+    return words_of(metric).meaning;
 }
 
 std::span<const BenchScene> bench_scenes() {

@@ -4,67 +4,126 @@
 #include "explain/format.hpp"
 #include "resolver/settings_names.hpp"
 
+#include <algorithm>
+#include <map>
+#include <variant>
+
 namespace impulse::explain {
 
 namespace {
 
-// Collects the rows of one step, filling formula, equation, unit and meaning from the annotations.
+// Collects the rows of one step with their raw values, and formats them once all are known: a value is
+// rounding noise (and shown as 0) when it is below noise_fraction of the largest value of the same unit in
+// the table. Formula, equation, unit and meaning come from the vocabulary unless a row says otherwise.
 class Table {
 public:
     // `contact_to_world` is the contact's basis when known: vectors are then also shown in the other frame.
     Table(std::string step, std::string title, const Mat3* contact_to_world = nullptr)
-        : table_{std::move(step), std::move(title), {}}, basis_(contact_to_world) {}
+        : step_(std::move(step)), title_(std::move(title)), basis_(contact_to_world) {}
 
-    // `note` follows the unit: "0.25 m/s (not applied)".
-    Table& row(std::string_view key, const std::string& value, std::optional<int> body = std::nullopt,
-               std::string_view formula = {}, std::string_view note = {}) {
+    using Value = std::variant<std::string, double, Vec3, Mat3>;
+
+    // `note` follows the unit: "0.25 m/s (not applied)"; `formula` replaces the vocabulary's.
+    Table& row(std::string_view key, Value value, std::optional<int> body = std::nullopt, std::string_view formula = {},
+               std::string_view note = {}) {
         const Annotation& a = annotation(key);
         std::string quantity(key);
         if (body) quantity += "[" + std::to_string(*body) + "]";
-        std::string shown = with_unit(value, a.unit);
-        if (!note.empty()) shown += " (" + std::string(note) + ")";
-        table_.rows.push_back({quantity, shown, std::string(formula.empty() ? a.formula : formula),
-                               std::string(a.equation), std::string(a.meaning)});
+        pending_.push_back({std::move(quantity),
+                            std::string(key),
+                            std::move(value),
+                            std::string(a.unit),
+                            std::string(formula.empty() ? a.formula : formula),
+                            std::string(a.equation),
+                            std::string(a.meaning),
+                            std::string(note),
+                            std::nullopt,
+                            {}});
         return *this;
     }
 
     // One row per body present (body 1 is absent when it is the world).
-    template <typename T, typename Format>
-    Table& per_body(std::string_view key, const PerBody<T>& values, Format format) {
+    template <typename T>
+    Table& per_body(std::string_view key, const PerBody<T>& values, std::string_view formula = {}) {
         for (int i = 0; i < 2; ++i)
-            if (values[i]) row(key, format(*values[i]), i);
+            if (values[i]) row(key, *values[i], i, formula);
         return *this;
     }
 
     // A world vector, shown in contact coordinates too (C^T v): e.g. q_rel along the normal and tangents.
-    Table& world_vector(std::string_view key, const Vec3& v, std::optional<int> body = std::nullopt) {
-        row(key, vector(v), body);
-        if (basis_) table_.rows.back().other_frame = "contact " + vector(basis_->transpose() * v);
+    Table& world_vector(std::string_view key, const Vec3& v, std::optional<int> body = std::nullopt,
+                        std::string_view formula = {}) {
+        row(key, v, body, formula);
+        if (basis_) pending_.back().other = basis_->transpose() * v, pending_.back().other_prefix = "contact ";
         return *this;
     }
-    Table& world_vectors(std::string_view key, const PerBody<Vec3>& values) {
+    Table& world_vectors(std::string_view key, const PerBody<Vec3>& values, std::string_view formula = {}) {
         for (int i = 0; i < 2; ++i)
-            if (values[i]) world_vector(key, *values[i], i);
+            if (values[i]) world_vector(key, *values[i], i, formula);
         return *this;
     }
     // A vector in contact coordinates, shown in world coordinates too (C v).
     Table& contact_vector(std::string_view key, const Vec3& v, std::string_view formula = {}) {
-        row(key, vector(v), std::nullopt, formula);
-        if (basis_) table_.rows.back().other_frame = "world " + vector(*basis_ * v);
+        row(key, v, std::nullopt, formula);
+        if (basis_) pending_.back().other = *basis_ * v, pending_.back().other_prefix = "world ";
         return *this;
     }
 
     // Replaces the equation of the row just added (the same quantity can come from another equation).
     Table& equation(std::string_view text) {
-        table_.rows.back().equation = std::string(text);
+        pending_.back().equation = std::string(text);
+        return *this;
+    }
+    // Replaces the unit of the row just added (a method that records another kind of value under the key).
+    Table& unit(std::string_view text) {
+        pending_.back().unit = std::string(text);
         return *this;
     }
 
-    StepTable done() { return std::move(table_); }
+    StepTable done() {
+        std::map<std::string, double> scale;
+        const auto grow = [&scale](const std::string& unit, double size) {
+            double& s = scale[unit];
+            s = std::max(s, size);
+        };
+        for (const Pending& p : pending_) {
+            if (const double* x = std::get_if<double>(&p.value)) grow(p.unit, std::abs(*x));
+            if (const Vec3* v = std::get_if<Vec3>(&p.value)) grow(p.unit, v->cwiseAbs().maxCoeff());
+            if (const Mat3* m = std::get_if<Mat3>(&p.value)) grow(p.unit, m->cwiseAbs().maxCoeff());
+            if (p.other) grow(p.unit, p.other->cwiseAbs().maxCoeff());
+        }
+        StepTable table{step_, title_, {}};
+        for (const Pending& p : pending_) {
+            const double s = scale[p.unit];
+            std::string shown, exact_text;
+            if (const std::string* t = std::get_if<std::string>(&p.value))
+                shown = *t, exact_text = *t;
+            else if (const double* x = std::get_if<double>(&p.value))
+                shown = with_unit(number(*x, s), p.unit), exact_text = with_unit(exact(*x), p.unit);
+            else if (const Vec3* v = std::get_if<Vec3>(&p.value))
+                shown = with_unit(vector(*v, s), p.unit), exact_text = with_unit(exact(*v), p.unit);
+            else if (const Mat3* m = std::get_if<Mat3>(&p.value))
+                shown = with_unit(matrix_rows(*m, s), p.unit), exact_text = with_unit(exact(*m), p.unit);
+            if (!p.note.empty()) shown += " (" + p.note + ")";
+            std::string other;
+            if (p.other) other = p.other_prefix + vector(*p.other, s);
+            table.rows.push_back(
+                {p.quantity, shown, p.formula, p.equation, p.meaning, std::move(other), p.key, std::move(exact_text)});
+        }
+        return table;
+    }
 
 private:
-    StepTable table_;
+    struct Pending {
+        std::string quantity, key;
+        Value value;
+        std::string unit, formula, equation, meaning, note;
+        std::optional<Vec3> other;
+        std::string other_prefix;
+    };
+    std::string step_, title_;
     const Mat3* basis_;
+    std::vector<Pending> pending_;
 };
 
 template <typename Member>
@@ -75,25 +134,64 @@ auto unit_response_field(const VelocityPerUnitImpulse& chain, Member member) {
     return values;
 }
 
-StepTable desired_table(const DesiredDeltaVelocity& d) {
-    Table t("desired_delta_velocity", "Step 5 · desired_delta_velocity — the velocity change the impulse must make");
-    t.row("separating_velocity", number(d.separating_velocity));
-    t.row("restitution", number(d.restitution));
-    if (d.restitution_cutoff > 0.0)
-        t.row("restitution_cutoff", number(d.restitution_cutoff), std::nullopt, {},
-              d.restitution_cutoff_applied ? "applied: c = 0" : "not applied");
-    t.row("restitution_used", number(d.restitution_used));
-    if (d.velocity_from_acceleration_applied) t.row("velocity_from_acceleration", number(d.velocity_from_acceleration));
-    // Without the chapter-15 refinements the formula is the chapter's own.
+std::string yes_no(bool value, std::string_view yes, std::string_view no) {
+    return std::string(value ? yes : no);
+}
+
+// How a velocity iteration's desired Δv was made. `accumulating`: projected Gauss-Seidel or soft step, whose
+// Δv is the rest of the way to the visit's target; `bias`: the Baumgarte bias is in it (worst-first, sweeps).
+std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bool bias) {
+    if (accumulating) return "Δv = target − v_s (target: the bounce judged at preparation, + position_bias)";
     const bool plain = !d.velocity_from_acceleration_applied && !d.restitution_cutoff_applied;
-    t.row("desired_delta_velocity", number(d.desired_delta_velocity), std::nullopt,
-          plain ? "Δv = −(1 + c) v_s" : std::string_view{});
+    std::string formula = plain ? "Δv = −(1 + c) v_s" : "Δv = −v_s − c (v_s − v_acc)";
+    if (bias) formula += " + position_bias";
+    return formula;
+}
+
+StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false, bool bias = false) {
+    Table t("desired_delta_velocity", "desired_delta_velocity — the velocity change the impulse must make");
+    t.row("separating_velocity", d.separating_velocity);
+    t.row("restitution", d.restitution);
+    if (d.restitution_cutoff > 0.0) {
+        t.row("restitution_cutoff", d.restitution_cutoff);
+        t.row("restitution_cutoff_applied",
+              yes_no(d.restitution_cutoff_applied, "yes: |v_s| is below the cut-off, c = 0", "no"));
+    }
+    t.row("restitution_used", d.restitution_used);
+    if (d.velocity_from_acceleration_applied) t.row("velocity_from_acceleration", d.velocity_from_acceleration);
+    t.row("desired_delta_velocity", d.desired_delta_velocity, std::nullopt, desired_formula(d, accumulating, bias));
     return t.done();
 }
 
 std::vector<StepTable> updates_tables(const std::string& what, std::vector<Row> rows) {
     if (rows.empty()) return {};
-    return {StepTable{"updates", "Updates — " + what, std::move(rows)}};
+    return {StepTable{"updates", "updates — " + what, std::move(rows)}};
+}
+
+// A row of the updates table: contact `contact`'s values before → after, each at the scale of the pair.
+Row update_row(std::string_view key, int contact, std::string value, std::string exact_text, std::string meaning) {
+    const Annotation& a = annotation(key);
+    return {"contact " + std::to_string(contact),
+            std::move(value),
+            std::string(a.formula),
+            std::string(a.equation),
+            std::move(meaning),
+            {},
+            std::string(key),
+            std::move(exact_text)};
+}
+
+std::string change_text(double before, double after, std::string_view unit) {
+    const double scale = std::max(std::abs(before), std::abs(after));
+    return number(before, scale) + " → " + number(after, scale) + " " + std::string(unit);
+}
+
+std::string amount_formula(const PositionResolution& r) {
+    if (r.method == PositionMethod::split_impulse) return "the push impulse this visit, λ_after − λ_before";
+    if (r.rewind) return "penetration − removed_penetration";
+    if (r.penetration > 0.0 && r.amount != r.penetration)
+        return "relaxation.fraction × penetration (" + number(r.amount / r.penetration) + " here)";
+    return "penetration";
 }
 
 }  // namespace
@@ -102,34 +200,35 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
     std::vector<StepTable> tables;
     const Mat3* basis = &d.basis.contact_to_world;
 
-    Table basis_step("basis", "Step 1 · basis — contact coordinates from the normal");
-    basis_step.row("normal", vector(d.basis.normal))
-        .row("tangent_seed", d.basis.seed == TangentSeed::world_x ? "world X" : "world Y")
-        .row("tangent1", vector(d.basis.tangent1))
-        .row("tangent2", vector(d.basis.tangent2))
-        .row("basis", matrix_rows(d.basis.contact_to_world));
+    Table basis_step("basis", "basis — contact coordinates from the normal");
+    basis_step.row("swapped", yes_no(d.swapped, "yes: given with the world as body 0, exchanged and n reversed", "no"))
+        .row("normal", d.basis.normal)
+        .row("tangent_seed", std::string(d.basis.seed == TangentSeed::world_x ? "world X" : "world Y"))
+        .row("tangent1", d.basis.tangent1)
+        .row("tangent2", d.basis.tangent2)
+        .row("basis", d.basis.contact_to_world);
     tables.push_back(basis_step.done());
 
-    Table relative("relative_position", "Step 2 · relative_position — where the contact is on each body", basis);
+    Table relative("relative_position", "relative_position — where the contact is on each body", basis);
     relative.world_vectors("relative_position", d.relative_position);
     tables.push_back(relative.done());
 
     const VelocityPerUnitImpulse& chain = d.velocity_per_unit_impulse;
-    Table unit("velocity_per_unit_impulse", "Step 3 · velocity per unit impulse — linear and angular parts", basis);
+    Table unit("velocity_per_unit_impulse", "velocity_per_unit_impulse — linear and angular parts", basis);
     unit.world_vectors("torque_per_unit_impulse",
                        unit_response_field(chain, &UnitImpulseResponse::torque_per_unit_impulse))
         .world_vectors("rotation_per_unit_impulse",
                        unit_response_field(chain, &UnitImpulseResponse::rotation_per_unit_impulse))
         .world_vectors("velocity_per_unit_impulse",
                        unit_response_field(chain, &UnitImpulseResponse::velocity_per_unit_impulse))
-        .per_body("angular_component", unit_response_field(chain, &UnitImpulseResponse::angular_component), number)
-        .per_body("linear_component", unit_response_field(chain, &UnitImpulseResponse::linear_component), number)
-        .row("delta_velocity_per_unit_impulse", number(chain.delta_velocity_per_unit_impulse));
+        .per_body("angular_component", unit_response_field(chain, &UnitImpulseResponse::angular_component))
+        .per_body("linear_component", unit_response_field(chain, &UnitImpulseResponse::linear_component))
+        .row("delta_velocity_per_unit_impulse", chain.delta_velocity_per_unit_impulse);
     tables.push_back(unit.done());
 
-    Table velocity("contact_velocity", "Step 4 · contact_velocity — how the contact points move", basis);
+    Table velocity("contact_velocity", "contact_velocity — how the contact points move", basis);
     velocity.world_vectors("point_velocity", d.contact_velocity.point_velocity)
-        .per_body("tangential_acceleration_velocity", d.contact_velocity.tangential_acceleration_velocity, vector)
+        .per_body("tangential_acceleration_velocity", d.contact_velocity.tangential_acceleration_velocity)
         .contact_vector("contact_velocity", d.contact_velocity.contact_velocity);
     tables.push_back(velocity.done());
 
@@ -141,13 +240,16 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
         const std::string method(name_of(position_method_names, r->method));
+        const bool linear_only = r->method == PositionMethod::linear_projection;
+        // The split impulse records its pushes in this vocabulary: an impulse, and the moves it made.
+        const bool split = r->method == PositionMethod::split_impulse;
         if (r->rewind) {
             const Rewind& w = *r->rewind;
-            Table rewind("rewind", "Velocity-based · move the bodies back along their paths", basis);
-            rewind.row("closing_velocity", number(w.closing_velocity))
-                .row("rewind_time", number(w.time), std::nullopt, {},
+            Table rewind("rewind", "rewind — move the bodies back along their paths (velocity_based)", basis);
+            rewind.row("closing_velocity", w.closing_velocity)
+                .row("rewind_time", w.time, std::nullopt, {},
                      w.time == w.time_limit && w.time > 0 ? "the whole frame" : "")
-                .row("removed_penetration", number(w.removed_penetration))
+                .row("removed_penetration", w.removed_penetration)
                 .world_vectors("rewind_linear_change", w.linear_change)
                 .world_vectors("rewind_angular_change", w.angular_change);
             tables.push_back(rewind.done());
@@ -155,44 +257,73 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
         // When moving back along the paths removed everything, there is nothing left to project.
         const bool projected = !(r->rewind && r->amount <= 1e-12 * r->penetration);
         if (projected) {
-            Table inertia("penetration_inertia", "Step 8 · inertia along the normal (" + method + ")");
-            inertia.row("penetration", number(r->penetration))
-                .row("amount", number(r->amount))
-                .per_body("linear_inertia", r->inertia.linear_inertia, number)
-                .per_body("angular_inertia", r->inertia.angular_inertia, number)
-                .row("total_inertia", number(r->inertia.total_inertia));
+            Table inertia("penetration_inertia",
+                          "penetration_inertia — how readily each body gives way (" + method + ")");
+            inertia.row("penetration", r->penetration).row("amount", r->amount, std::nullopt, amount_formula(*r));
+            if (split) inertia.unit("N·s");
+            inertia.per_body("linear_inertia", r->inertia.linear_inertia)
+                .per_body("angular_inertia", r->inertia.angular_inertia,
+                          linear_only ? "0: linear projection never turns" : "")
+                .row("total_inertia", r->inertia.total_inertia, std::nullopt, linear_only ? "Σ linear" : "");
             tables.push_back(inertia.done());
 
-            Table moves("move_split", "Step 8 · linear_move and angular_move — the split of the move");
+            Table moves("move_split", "move_split — how much of the move is linear, how much angular");
+            bool limited = false;
             if (const auto& limit = r->angular_limit) {
-                moves.per_body("linear_move_before", limit->before.linear_move, number)
-                    .per_body("angular_move_before", limit->before.angular_move, number);
+                moves.per_body("linear_move_before", limit->before.linear_move)
+                    .per_body("angular_move_before", limit->before.angular_move);
                 const std::string policy(name_of(angular_limit_policy_names, limit->policy));
-                if (limit->policy == AngularLimitPolicy::none) moves.row("angular_limit", "no limit (policy none)");
+                const std::string maximum_formula =
+                    limit->policy == AngularLimitPolicy::fixed       ? "angular_limit.factor"
+                    : limit->policy == AngularLimitPolicy::lever_arm ? "factor × |q_rel − (q_rel · n) n|"
+                    : limit->policy == AngularLimitPolicy::angle     ? "the move that turns the body by factor degrees"
+                                                                     : "";
+                if (limit->policy == AngularLimitPolicy::none)
+                    moves.row("angular_limit", std::string("no limit (policy none)"));
                 for (int i = 0; i < 2 && limit->policy != AngularLimitPolicy::none; ++i) {
                     if (!limit->applied[i]) continue;  // no body 1: the world
-                    const std::string maximum = limit->maximum[i] ? number(*limit->maximum[i]) : "none";
-                    moves.row(
-                        "angular_limit", maximum, i, {},
-                        policy + " " + number(limit->factor) + (*limit->applied[i] ? ", applied" : ", not reached"));
+                    if (limit->maximum[i])
+                        moves.row("angular_limit", *limit->maximum[i], i, maximum_formula,
+                                  policy + " " + number(limit->factor));
+                    else
+                        moves.row("angular_limit", std::string("none"), i, maximum_formula);
+                    moves.row("angular_limit_applied",
+                              yes_no(*limit->applied[i], "yes: the excess moves linearly", "no"), i);
+                    limited = limited || *limit->applied[i];
                 }
             }
-            moves.per_body("linear_move", r->moves.linear_move, number)
-                .per_body("angular_move", r->moves.angular_move, number);
+            const std::string_view linear_formula = split ? "linear_change · n"
+                                                    : limited
+                                                        ? "±amount · linear / total; limited: total move − angular"
+                                                        : "";
+            const std::string_view angular_formula = split     ? "(angular_change × q_rel) · n"
+                                                     : limited ? "±amount · angular / total; limited: ±angular_limit"
+                                                               : "";
+            moves.per_body("linear_move", r->moves.linear_move, linear_formula)
+                .per_body("angular_move", r->moves.angular_move, angular_formula);
             tables.push_back(moves.done());
         }
 
-        Table change("position_change", "Step 8 · linear_change and angular_change — the move applied", basis);
-        change.world_vectors("linear_change", r->change.linear_change)
-            .world_vectors("angular_change", r->change.angular_change);
+        Table change("position_change", "position_change — the move applied", basis);
+        // Velocity-based resolution applies the rewind and the projection together.
+        change
+            .world_vectors("linear_change", r->change.linear_change,
+                           r->rewind ? "rewind_linear_change + n · linear_move"
+                           : split   ? "Δṗ of the push × Δt = amount m⁻¹ n Δt"
+                                     : "")
+            .world_vectors("angular_change", r->change.angular_change,
+                           r->rewind     ? "rewind_angular_change + I⁻¹(q_rel × n) · angular_move / angular"
+                           : linear_only ? "0: linear projection never turns"
+                           : split       ? "Δθ̇ of the push × Δt = I⁻¹(q_rel × amount n) Δt"
+                                         : "");
         tables.push_back(change.done());
     }
     std::vector<Row> rows;
     for (const PenetrationUpdate& u : it.updates)
-        rows.push_back({"contact " + std::to_string(u.contact),
-                        "penetration " + number(u.before) + " → " + number(u.after) + " m",
-                        "(linear_change + angular_change × q_rel) · n", "",
-                        "body " + std::to_string(u.body) + " moved (its body " + std::to_string(u.slot) + ")"});
+        rows.push_back(
+            update_row("penetration_update", u.contact, "penetration " + change_text(u.before, u.after, "m"),
+                       exact(u.before) + " → " + exact(u.after) + " m",
+                       "body " + std::to_string(u.body) + " moved (its body " + std::to_string(u.slot) + ")"));
     for (StepTable& t : updates_tables("penetrations of contacts sharing a moved body", rows)) tables.push_back(t);
     return tables;
 }
@@ -226,18 +357,19 @@ std::string sweep_meaning(SolverStage stage) {
 std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, const Mat3* basis) {
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
-        Table velocity("contact_velocity", "Step 4 · contact_velocity — as the resolver has it now", basis);
+        Table velocity("contact_velocity", "contact_velocity — as the resolver has it now", basis);
         velocity.contact_vector("contact_velocity", r->contact_velocity);
         tables.push_back(velocity.done());
-        tables.push_back(desired_table(r->desired_delta_velocity));
+        const bool accumulating = it.accumulated.has_value();
+        tables.push_back(desired_table(r->desired_delta_velocity, accumulating, r->position_bias.has_value()));
         if (r->position_bias) {
-            Table bias("position_bias", "Step 5 · position_bias — speed added to push the bodies apart");
-            bias.row("position_bias", number(*r->position_bias));
+            Table bias("position_bias", "position_bias — speed added to push the bodies apart");
+            bias.row("position_bias", *r->position_bias);
             tables.push_back(bias.done());
         }
         if (const auto& a = it.accumulated) {
-            Table total("accumulated_impulse",
-                        "Step 6 · accumulated impulse — the running total, kept within its limits", basis);
+            Table total("accumulated_impulse", "accumulated_impulse — the running total, kept within its limits",
+                        basis);
             total.contact_vector("accumulated_before", a->before)
                 .contact_vector("accumulated_unclamped", a->unclamped)
                 .row("clamp", std::string(name_of(impulse_clamp_names, a->clamp)))
@@ -246,43 +378,49 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         }
 
         const Impulse& g = r->impulse;
-        Table impulse("impulse", "Step 6 · impulse_contact and impulse_world — the impulse", basis);
+        Table impulse("impulse", "impulse — impulse_contact and impulse_world", basis);
         impulse.row("impulse_model", std::string(name_of(impulse_model_names, g.model)));
         if (const auto& s = g.friction) {
-            impulse.row("delta_velocity_matrix", matrix_rows(s->delta_velocity_matrix))
+            impulse.row("delta_velocity_matrix", s->delta_velocity_matrix)
                 .contact_vector("target_delta_velocity", s->target_delta_velocity)
                 .contact_vector("static_impulse", s->static_impulse)
-                .row("tangential_impulse", number(s->tangential_impulse))
-                .row("cone_limit", number(s->cone_limit));
+                .row("tangential_impulse", s->tangential_impulse)
+                .row("cone_limit", s->cone_limit);
             if (s->sliding_direction)
-                impulse.row("sliding_direction",
-                            "(" + number(s->sliding_direction->x()) + ", " + number(s->sliding_direction->y()) + ")");
-            if (s->sliding_normal_response) impulse.row("sliding_normal_response", number(*s->sliding_normal_response));
+                impulse.row("sliding_direction", "(" + number(s->sliding_direction->x(), 1.0) + ", " +
+                                                     number(s->sliding_direction->y(), 1.0) + ")");
+            if (s->sliding_normal_response) impulse.row("sliding_normal_response", *s->sliding_normal_response);
         }
         impulse
             .contact_vector("impulse_contact", g.impulse_contact,
-                            it.accumulated                          ? "accumulated_after − accumulated_before"
+                            accumulating                            ? "accumulated_after − accumulated_before"
                             : g.model == ImpulseModel::frictionless ? std::string_view{}
                             : g.model == ImpulseModel::static_friction
                                 ? "static_impulse (inside the cone)"
-                                : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding response")
+                                : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding_normal_response")
             .world_vector("impulse_world", g.impulse_world);
         tables.push_back(impulse.done());
 
-        Table change("velocity_change", "Step 7 · velocity_change and rotation_change — the impulse applied", basis);
+        Table change("velocity_change", "velocity_change — the impulse applied", basis);
         change.world_vectors("impulsive_torque", r->velocity_change.impulsive_torque)
             .world_vectors("velocity_change", r->velocity_change.velocity_change)
             .world_vectors("rotation_change", r->velocity_change.rotation_change);
         tables.push_back(change.done());
     }
     std::vector<Row> rows;
-    for (const VelocityUpdate& u : it.updates)
-        rows.push_back({"contact " + std::to_string(u.contact),
-                        "v_s " + number(u.before.x()) + " → " + number(u.after.x()) + " m/s, Δv " +
-                            number(u.desired_delta_velocity_before) + " → " + number(u.desired_delta_velocity_after) +
-                            " m/s",
-                        "contact_velocity ± Cᵀ(Δṗ + Δθ̇ × q_rel), then step 5", "",
-                        "body " + std::to_string(u.body) + " changed speed (its body " + std::to_string(u.slot) + ")"});
+    for (const VelocityUpdate& u : it.updates) {
+        const double scale =
+            std::max({std::abs(u.before.x()), std::abs(u.after.x()), std::abs(u.desired_delta_velocity_before),
+                      std::abs(u.desired_delta_velocity_after)});
+        rows.push_back(update_row(
+            "velocity_update", u.contact,
+            "v_s " + number(u.before.x(), scale) + " → " + number(u.after.x(), scale) + " m/s, Δv " +
+                number(u.desired_delta_velocity_before, scale) + " → " + number(u.desired_delta_velocity_after, scale) +
+                " m/s",
+            "v_s " + exact(u.before.x()) + " → " + exact(u.after.x()) + " m/s, Δv " +
+                exact(u.desired_delta_velocity_before) + " → " + exact(u.desired_delta_velocity_after) + " m/s",
+            "body " + std::to_string(u.body) + " changed speed (its body " + std::to_string(u.slot) + ")"));
+    }
     for (StepTable& t : updates_tables("contacts sharing a body that changed speed", rows)) tables.push_back(t);
     return tables;
 }

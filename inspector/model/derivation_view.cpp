@@ -19,14 +19,14 @@ DerivationView derivation_view(const Trace& trace, const Cursor& cursor) {
 }
 
 std::string derivation_csv(const DerivationView& view) {
-    std::string csv = "step,quantity,value,other_frame,formula,equation,meaning,changed\n";
+    std::string csv = "step,quantity,value,exact,other_frame,formula,equation,meaning,changed\n";
     for (const ViewRow& r : view.rows) {
         // A matrix is formatted one row per line; in CSV its rows are joined by "; ".
         std::string value = r.row.value;
         for (std::size_t at = value.find('\n'); at != std::string::npos; at = value.find('\n', at))
             value.replace(at, 1, "; ");
-        csv += explain::csv_row({r.step, r.row.quantity, value, r.row.other_frame, r.row.formula, r.row.equation,
-                                 r.row.meaning, r.changed ? "yes" : "no"});
+        csv += explain::csv_row({r.step, r.row.quantity, value, r.row.exact, r.row.other_frame, r.row.formula,
+                                 r.row.equation, r.row.meaning, r.changed ? "yes" : "no"});
     }
     return csv;
 }

@@ -27,8 +27,8 @@ struct DerivationView {
 
 DerivationView derivation_view(const Trace& trace, const Cursor& cursor);
 
-// step,quantity,value,other_frame,formula,equation,meaning,changed — RFC 4180 quoting, one row per line
-// (a matrix's rows joined by "; ").
+// step,quantity,value,exact,other_frame,formula,equation,meaning,changed — RFC 4180 quoting, one row per
+// line (a matrix's rows joined by "; "); `value` as shown, `exact` with every digit.
 std::string derivation_csv(const DerivationView& view);
 
 }  // namespace impulse::inspect

@@ -18,33 +18,53 @@ const FrameRecord& frame_at(const Trace& trace, const Cursor& c) {
 }
 
 // Why an iteration picked its contact, as the first table of every iteration: worst first, or a sweep's turn.
+// `what` is the vocabulary name of the value it compares (penetration or desired_delta_velocity).
 StepTable choice_table(const char* what, int iteration, int contact, double value, double epsilon, const char* unit,
                        const std::string& pass, const std::optional<SweepPlace>& sweep,
                        const ResolverSettings& settings) {
     const std::string v = explain::number(value) + " " + unit;
     const std::string e = explain::number(epsilon) + " " + unit;
+    const std::string v_exact = explain::exact(value) + " " + unit;
+    const std::string e_exact = explain::exact(epsilon) + " " + unit;
+    const std::string count = std::to_string(iteration), chosen = std::to_string(contact);
     if (sweep) {
+        const std::string place = explain::sweep_text(*sweep, settings);
         std::vector<Row> rows{
-            {"iteration", std::to_string(iteration), "", "", "contact visits count from 0 within the phase"},
-            {"sweep", explain::sweep_text(*sweep, settings), "", "", explain::sweep_meaning(sweep->stage)},
-            {"contact", std::to_string(contact), "next in index order", "",
-             "a sweep visits every contact in turn, whatever its value"},
-            {what, v, "", "", "its value now, after the visits before this one"},
+            {"iteration", count, "", "", "contact visits count from 0 within the phase", {}, "iteration", count},
+            {"sweep", place, "", "", explain::sweep_meaning(sweep->stage), {}, "sweep", place},
+            {"contact",
+             chosen,
+             "next in index order",
+             "",
+             "a sweep visits every contact in turn, whatever its value",
+             {},
+             "contact",
+             chosen},
+            {what, v, "", "", "its value now, after the visits before this one", {}, what, v_exact},
         };
-        return {"choice",
-                "Sweep · " + explain::sweep_text(*sweep, settings) + " visits contact " + std::to_string(contact),
-                std::move(rows)};
+        return {"choice", "choice — " + place + " visits contact " + chosen, std::move(rows)};
     }
     std::vector<Row> rows{
-        {"iteration", std::to_string(iteration) + pass, "", "", "iterations count from 0 within the phase"},
-        {"contact", std::to_string(contact), "argmax over contacts above ε", "",
-         std::string("the contact with the largest ") + what + " is resolved first (worst first)"},
-        {what, v, "", "", "its value now, after the updates made by earlier iterations"},
-        {"epsilon", e, "", "",
-         std::string("values at or below ε are left alone: the phase stops when no ") + what + " is above it"},
+        {"iteration", count + pass, "", "", "iterations count from 0 within the phase", {}, "iteration", count + pass},
+        {"contact",
+         chosen,
+         "argmax over contacts above ε",
+         "",
+         std::string("the contact with the largest ") + what + " is resolved first (worst first)",
+         {},
+         "contact",
+         chosen},
+        {what, v, "", "", "its value now, after the updates made by earlier iterations", {}, what, v_exact},
+        {"epsilon",
+         e,
+         "",
+         "",
+         std::string("values at or below ε are left alone: the phase stops when no ") + what + " is above it",
+         {},
+         "epsilon",
+         e_exact},
     };
-    return {"choice", "Choice · iteration " + std::to_string(iteration) + " picks contact " + std::to_string(contact),
-            std::move(rows)};
+    return {"choice", "choice — iteration " + count + " picks contact " + chosen, std::move(rows)};
 }
 
 // A position iteration's pass, as the choice table words it.

@@ -465,7 +465,7 @@ TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accu
                                                             "position_bias", "accumulated_impulse", "impulse",
                                                             "velocity_change", "updates"});
     const explain::StepTable choice = step_tables(trace, at)[0];
-    CHECK(choice.title == "Sweep · warm_start visits contact " + std::to_string(first.contact));
+    CHECK(choice.title == "choice — warm_start visits contact " + std::to_string(first.contact));
     const explain::StepTable total = step_tables(trace, at)[4];
     REQUIRE(total.rows.size() == 4);
     CHECK(total.rows[0].quantity == "accumulated_before");
@@ -476,6 +476,6 @@ TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accu
                                     [](const VelocityIteration& it) { return it.sweep->stage == SolverStage::solve; });
     REQUIRE(solve != frame.velocity.iterations.end());
     const Cursor later{2, Stage::velocity, static_cast<int>(solve - frame.velocity.iterations.begin()), 0};
-    CHECK(step_tables(trace, later)[0].title == "Sweep · solve sweep " + std::to_string(solve->sweep->pass) +
+    CHECK(step_tables(trace, later)[0].title == "choice — solve sweep " + std::to_string(solve->sweep->pass) +
                                                     " visits contact " + std::to_string(solve->contact));
 }

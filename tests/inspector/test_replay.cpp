@@ -408,15 +408,24 @@ TEST_CASE("world vectors carry their contact coordinates and contact vectors the
 TEST_CASE("the derivation CSV has a header and one line per row, quoting commas and quotes") {
     // A view written by hand: a plain row, a vector (commas), a matrix (lines joined by "; ") and a quote.
     DerivationView view;
-    view.rows.push_back({"impulse", {"impulse_model", "frictionless", "", "", "which model"}, false});
-    view.rows.push_back(
-        {"impulse", {"impulse_world", "(0, 1.5, 0) N s", "C g", "(14.2)", "the impulse", "contact (1.5, 0, 0)"}, true});
-    view.rows.push_back({"basis", {"basis", "[1, 0, 0]\n[0, 1, 0]\n[0, 0, 1]", "", "", "the \"basis\" matrix"}, true});
+    view.rows.push_back({"impulse",
+                         {"impulse_model", "frictionless", "", "", "which model", "", "impulse_model", "frictionless"},
+                         false});
+    view.rows.push_back({"impulse",
+                         {"impulse_world", "(0, 1.5, 0) N s", "C g", "(14.2)", "the impulse", "contact (1.5, 0, 0)",
+                          "impulse_world", "(0, 1.5000000000000002, 0) N s"},
+                         true});
+    view.rows.push_back({"basis",
+                         {"basis", "[1, 0, 0]\n[0, 1, 0]\n[0, 0, 1]", "", "", "the \"basis\" matrix", "", "basis",
+                          "[1, 0, 0]; [0, 1, 0]; [0, 0, 1]"},
+                         true});
     CHECK(derivation_csv(view) ==
-          "step,quantity,value,other_frame,formula,equation,meaning,changed\n"
-          "impulse,impulse_model,frictionless,,,,which model,no\n"
-          "impulse,impulse_world,\"(0, 1.5, 0) N s\",\"contact (1.5, 0, 0)\",C g,(14.2),the impulse,yes\n"
-          "basis,basis,\"[1, 0, 0]; [0, 1, 0]; [0, 0, 1]\",,,,\"the \"\"basis\"\" matrix\",yes\n");
+          "step,quantity,value,exact,other_frame,formula,equation,meaning,changed\n"
+          "impulse,impulse_model,frictionless,frictionless,,,,which model,no\n"
+          "impulse,impulse_world,\"(0, 1.5, 0) N s\",\"(0, 1.5000000000000002, 0) N s\",\"contact (1.5, 0, 0)\",C g,"
+          "(14.2),the impulse,yes\n"
+          "basis,basis,\"[1, 0, 0]; [0, 1, 0]; [0, 0, 1]\",\"[1, 0, 0]; [0, 1, 0]; [0, 0, 1]\",,,,\"the \"\"basis\"\" "
+          "matrix\",yes\n");
 }
 
 TEST_CASE("the CSV of a real view has one line per row and no line broken by a matrix") {
@@ -426,7 +435,7 @@ TEST_CASE("the CSV of a real view has one line per row and no line broken by a m
         const DerivationView view = derivation_view(trace, at);
         const std::vector<std::string> lines = lines_of(derivation_csv(view));
         REQUIRE(lines.size() == view.rows.size() + 1);
-        CHECK(lines[0] == "step,quantity,value,other_frame,formula,equation,meaning,changed");
+        CHECK(lines[0] == "step,quantity,value,exact,other_frame,formula,equation,meaning,changed");
         for (std::size_t i = 0; i < view.rows.size(); ++i) {
             CHECK(starts_with(lines[i + 1], view.rows[i].step + "," + view.rows[i].row.quantity + ","));
             CHECK(lines[i + 1].ends_with(view.rows[i].changed ? ",yes" : ",no"));

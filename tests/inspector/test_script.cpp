@@ -440,7 +440,7 @@ TEST_CASE("export table writes the CSV of the derivation table at the cursor") {
     const std::string text = read_text(file);
     CHECK(text == exported_table(s));
     CHECK(text == derivation_csv(derivation_view(s.trace(), *s.cursor())));
-    CHECK(text.rfind("step,quantity,value,other_frame,formula,equation,meaning,changed\n", 0) == 0);
+    CHECK(text.rfind("step,quantity,value,exact,other_frame,formula,equation,meaning,changed\n", 0) == 0);
     CHECK(contains(text, "\nimpulse,impulse_world,"));
 }
 

@@ -136,8 +136,10 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
         run.script.push_back({inspect::ActionKind::screenshot, (folder / name).string(), 1, 0});
     }
     run.script.push_back({inspect::ActionKind::export_trace, (folder / "trace.json").string(), 1, 0});
-    // Text mode shows the answers, so it does not move the student's saved place or record answers.
+    // Text mode shows the answers, so it does not move the student's saved place or record answers; its
+    // pictures show each step as a student who answered every question before it.
     run.progress = nullptr;
+    run.lesson_preview = true;
     const int status = gui::run_inspector(prepared.session, run, out, err);
     if (status == 0)
         out << "\nWrote " << prepared.places.size() << " screenshots and trace.json to " << folder.string() << '\n';

@@ -26,7 +26,7 @@ public:
 
     void lesson_step(int step) override {
         if (!state_.lesson) throw io::InputError("lesson step", "no lesson is open");
-        const int count = static_cast<int>(state_.lesson->lesson->places.size());
+        const int count = state_.lesson->run.step_count();
         if (step >= count)
             throw io::InputError("lesson step", "the lesson has steps 1.." + std::to_string(count) + ", not " +
                                                     std::to_string(step + 1));
@@ -131,28 +131,11 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
         state.message_is_error = true;
     }
     if (run.lesson) {
-        state.lesson = LessonState{run.lesson, 0, {}, {}, run.progress, run.progress_file};
-        state.lesson->verdicts.resize(run.lesson->places.size());
         // Back where the student left off, with the answers they gave shown again.
-        int start = 0;
-        if (run.progress)
-            if (const auto found = run.progress->lessons.find(run.lesson->lesson.name);
-                found != run.progress->lessons.end()) {
-                start = std::min(found->second.last_step, static_cast<int>(run.lesson->places.size()) - 1);
-                for (std::size_t i = 0; i < run.lesson->lesson.steps.size(); ++i) {
-                    const lessons::Step& step = run.lesson->lesson.steps[i];
-                    const auto record = found->second.answers.find(step.id);
-                    if (!step.question || record == found->second.answers.end()) continue;
-                    try {
-                        state.lesson->verdicts[i] =
-                            lessons::check_answer(*step.question, *run.lesson->answers[i], record->second.answer);
-                    } catch (const io::InputError&) {
-                        // An answer the lesson no longer accepts (its options changed): asked again.
-                    }
-                }
-            }
-        state.lesson->step = start;
-        session.move_to(run.lesson->places[static_cast<std::size_t>(start)]);
+        state.lesson.emplace(LessonState{lessons::LessonRun(*run.lesson, run.progress, run.progress_file), {}, -1,
+                                         true, {}, -1, run.lesson_preview});
+        go_to_lesson_step(session, state, state.lesson->run.step());
+        refresh_mask(session, state);
     }
     Host host(session, state);
     Pixels pixels;
@@ -178,7 +161,7 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
                 state.message_is_error = true;
             }
         }
-        if (host.quitting()) break;
+        if (host.quitting() || state.quit) break;
         if (host.waiting()) continue;
         if (queue.empty()) {
             if (close_when_done) break;

@@ -27,6 +27,7 @@ struct InspectorRun {
     // A lesson shown beside the inspector (its session is the one inspected), and where progress is saved.
     lessons::PreparedLesson* lesson = nullptr;
     lessons::Progress* progress = nullptr;
+    bool lesson_preview = false;  // each step pictured with the questions before it answered, none recorded
     std::optional<std::filesystem::path> progress_file;
 };
 

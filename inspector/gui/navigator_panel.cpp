@@ -11,31 +11,37 @@ namespace {
 using inspect::Cursor;
 using inspect::Stage;
 
-// `secret`: a lesson's open question asks for this kind of value, so it is not shown.
-std::string item_label(const Trace& trace, const FrameRecord& frame, Stage stage, int item, bool secret) {
+// An item's line in the tree: its contact and the value that made it the choice, unless a lesson's open
+// question hides that value (or which bodies the contact joins).
+std::string item_label(const Trace& trace, const lessons::Mask& mask, int f, Stage stage, int item) {
+    const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
     const auto i = static_cast<std::size_t>(item);
+    const Cursor at{f, stage, item, 0};
     if (stage == Stage::preparation) {
         const ContactPreparation& c = frame.contacts[i];
+        if (mask.hides_bodies_of(f, c.contact)) return "contact " + std::to_string(c.contact) + " · ? / ?";
         return "contact " + std::to_string(c.contact) + " · " + inspect::body_label(trace, c.bodies[0]) + " / " +
                inspect::body_label(trace, c.bodies[1]);
     }
     if (stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[i];
+        const bool secret = mask.hides_value(at, it.contact, "penetration");
         return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) +
                (secret ? "" : " (" + explain::number(it.penetration) + " m)");
     }
     const VelocityIteration& it = frame.velocity.iterations[i];
+    const bool secret = mask.hides_value(at, it.contact, "desired_delta_velocity");
+    const std::string value = secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)";
     if (it.sweep)
         return explain::sweep_text(*it.sweep, trace.scene.settings) + " → contact " + std::to_string(it.contact) +
-               (secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)");
-    return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) +
-           (secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)");
+               value;
+    return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) + value;
 }
 
 std::string stage_label(const FrameRecord& frame, Stage stage) {
     const int n = inspect::item_count(frame, stage);
     if (stage == Stage::preparation)
-        return "Preparation: " + std::to_string(n) + (n == 1 ? " contact" : " contacts") + ", steps 1-5";
+        return "Preparation: " + std::to_string(n) + (n == 1 ? " contact" : " contacts");
     const PhaseOutcome& o = stage == Stage::position ? frame.position.outcome : frame.velocity.outcome;
     return std::string(stage == Stage::position ? "Position phase: " : "Velocity phase: ") + std::to_string(n) +
            " of " + std::to_string(o.iteration_limit) + " iterations";
@@ -47,8 +53,6 @@ void draw_items(inspect::Session& session, UiState& state, int f, Stage stage) {
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
     const Cursor& at = *session.cursor();
     const bool here = at.frame == f && at.stage == stage;
-    const std::string hidden = hidden_quantity(state, session);
-    const bool secret = hidden == (stage == Stage::position ? "penetration" : "desired_delta_velocity");
     ImGuiListClipper clipper;
     clipper.Begin(inspect::item_count(frame, stage));
     if (here && state.views.scroll_to_cursor) clipper.ForceDisplayRangeByIndices(at.item, at.item + 1);
@@ -56,7 +60,7 @@ void draw_items(inspect::Session& session, UiState& state, int f, Stage stage) {
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const bool current = here && at.item == i;
             ImGui::PushID(i);
-            if (ImGui::Selectable(item_label(trace, frame, stage, i, secret).c_str(), current))
+            if (ImGui::Selectable(item_label(trace, state.mask, f, stage, i).c_str(), current))
                 session.move_to(Cursor{f, stage, i, 0});
             if (current && state.views.scroll_to_cursor) ImGui::SetScrollHereY(0.4f);
             ImGui::PopID();

@@ -6,8 +6,8 @@
 
 namespace impulse::gui {
 
-// Buttons for every move, the location, the status message; and the keys: ←/→ step, ↑/↓ item,
-// PgUp/PgDn phase, Home/End first/last.
+// Buttons for every move, the location, the status message; and, without a lesson, the keys: ←/→ step,
+// ↑/↓ item, PgUp/PgDn phase, Home/End first/last.
 void draw_toolbar(inspect::Session& session, UiState& state, inspect::ActionHost& host);
 // Frame → phase → iteration or contact, and the current item's derivation steps.
 void draw_navigator(inspect::Session& session, UiState& state);
@@ -26,7 +26,8 @@ void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHos
 // Trace JSON, table CSV and screenshot PNG to the paths typed in.
 void draw_export(inspect::Session& session, UiState& state, inspect::ActionHost& host);
 
-// The open lesson's step: its text, its question, back and next.
+// The open lesson's step: its text, its question, back and next; and the keys while a lesson is open:
+// →/PgDn/Enter next, ←/PgUp back, Enter checks, Tab/↑/↓ between options, Esc closes the window.
 void draw_lesson(inspect::Session& session, UiState& state);
 
 // The whole window: every panel in its place for the current display size.

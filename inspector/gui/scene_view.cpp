@@ -1,4 +1,5 @@
 #include "gui/panels.hpp"
+#include "gui/text_wrap.hpp"
 
 #include "explain/format.hpp"
 #include "shapes/shape.hpp"
@@ -203,12 +204,27 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     const Trace& trace = session.trace();
     const Scene& scene = trace.scene;
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(v.cursor->frame)];
-    // While a lesson's question is open, the bodies stay as they were before the item: its outcome would
-    // give the answer away.
-    const bool conceal = !hidden_quantity(state, session).empty();
-    const std::vector<BodyState>& after = conceal ? v.bodies.before : v.bodies.after;
-    const std::vector<int> no_bodies;
-    const std::vector<int>& moved_bodies = conceal ? no_bodies : v.bodies.moved;
+    // A lesson's open question hides the bodies a hidden change moved: each is drawn where it was last
+    // shown, without the move or its velocities.
+    const lessons::Mask& mask = state.mask;
+    std::vector<BodyState> after = v.bodies.after, before_shown = v.bodies.before;
+    std::vector<char> concealed(after.size(), 0);
+    for (std::size_t b = 0; b < after.size(); ++b) {
+        const int body = static_cast<int>(b);
+        if (mask.hides_body(*v.cursor, body, false)) {
+            const inspect::Cursor until = *mask.body_shown_until(*v.cursor, body);
+            const BodyState last = until.frame == v.cursor->frame ? inspect::bodies_at(trace, until).before[b]
+                                                                   : frame.bodies_before[b];
+            after[b] = before_shown[b] = last;
+            concealed[b] = 1;
+        } else if (mask.hides_body(*v.cursor, body, true)) {
+            after[b] = v.bodies.before[b];
+            concealed[b] = 1;
+        }
+    }
+    std::vector<int> moved_bodies;
+    for (int b : v.bodies.moved)
+        if (!concealed[static_cast<std::size_t>(b)]) moved_bodies.push_back(b);
 
     // Fit the bodies (and contact points) into the canvas.
     Projector project{view_rotation(camera), Vec3::Zero(), ImVec2(), 1.0f};
@@ -230,7 +246,24 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     project.scale = static_cast<float>(std::min(size.x / span_x, size.y / span_y)) * 0.85f * camera.zoom;
     project.origin = ImVec2(top_left.x + size.x / 2 + camera.pan_x, top_left.y + size.y / 2 + camera.pan_y);
 
-    if (scene.ground) draw_ground(draw, project, scene.ground->plane, project.centre, std::max(span_x, span_y) * 0.75);
+    const double extent = std::max(span_x, span_y) * 0.75;
+    if (scene.ground) {
+        draw_ground(draw, project, scene.ground->plane, project.centre, extent);
+    } else {
+        // A case's contacts with the world (body 1) touch a surface the file does not describe as a shape:
+        // drawn as a plane through each contact point across its normal, once per distinct plane.
+        std::vector<HalfSpace> planes;
+        for (const inspect::ContactRow& row : v.contacts) {
+            if (row.prepared->bodies[1] != world_body || planes.size() >= 8) continue;
+            const HalfSpace plane{row.prepared->normal, row.prepared->normal.dot(row.prepared->point)};
+            const bool seen = std::any_of(planes.begin(), planes.end(), [&](const HalfSpace& p) {
+                return p.normal.isApprox(plane.normal, 1e-9) && std::abs(p.offset - plane.offset) < 1e-9;
+            });
+            if (seen) continue;
+            planes.push_back(plane);
+            draw_ground(draw, project, plane, row.prepared->point, extent);
+        }
+    }
 
     // Bodies: moved ones in orange, with a faint ghost where they were before this item's move.
     std::vector<char> moved(after.size(), 0);
@@ -239,7 +272,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     Pen pen(draw);
     for (std::size_t i = 0; i < after.size(); ++i) {
         if (moved[i] && position_move)
-            draw_body(pen, project, scene, i, v.bodies.before[i], IM_COL32(255, 170, 60, 90), 1.0f);
+            draw_body(pen, project, scene, i, before_shown[i], IM_COL32(255, 170, 60, 90), 1.0f);
         // Whole-pixel widths: ImGui draws those from its texture, one quad per line, which keeps a
         // thousand boxes cheap to rasterise.
         draw_body(pen, project, scene, i, after[i],
@@ -249,7 +282,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     if (v.cursor->stage == inspect::Stage::velocity)
         for (int b : moved_bodies) {
             const auto i = static_cast<std::size_t>(b);
-            arrow(draw, project(after[i].position), project(after[i].position + v.bodies.before[i].velocity * 0.1),
+            arrow(draw, project(after[i].position), project(after[i].position + before_shown[i].velocity * 0.1),
                   IM_COL32(120, 200, 255, 110), 2.0f);
             arrow(draw, project(after[i].position), project(after[i].position + after[i].velocity * 0.1),
                   IM_COL32(120, 200, 255, 255), 2.0f);
@@ -276,10 +309,11 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
         const ContactPreparation& c = *row.prepared;
         if (c.contact == current) current_penetration = row.penetration;
         const ImVec2 p = project(c.point);
-        // A depth under a pixel and a half is invisible at this zoom: not drawn.
-        if (row.penetration * project.scale > 1.5)
+        // A depth under a pixel and a half is invisible at this zoom: not drawn; nor one a question hides.
+        if (row.penetration * project.scale > 1.5 && !mask.hides_value(*v.cursor, c.contact, "penetration"))
             pen.line(p, project(c.point - c.normal * row.penetration), IM_COL32(240, 70, 60, 255), 2.0f);
-        const bool show_arrow = v.contacts.size() <= crowded || near_current(c);
+        const bool show_arrow = (v.contacts.size() <= crowded || near_current(c)) &&
+                                !mask.hides_value(*v.cursor, c.contact, "impulse_world");
         if (show_arrow && v.largest_impulse > 0 && row.impulse_so_far.norm() > 0) {
             const Vec3 direction = project.view * row.impulse_so_far;
             const float k = impulse_pixels / static_cast<float>(v.largest_impulse);
@@ -303,7 +337,9 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
               IM_COL32(90, 225, 120, 255), 2.0f);
         if (v.cursor->stage == inspect::Stage::velocity) {
             const VelocityIteration& it = frame.velocity.iterations[static_cast<std::size_t>(v.cursor->item)];
-            if (it.resolution && v.largest_impulse > 0 && !conceal) {
+            explain::Row impulse_row;
+            impulse_row.key = "impulse_world";
+            if (it.resolution && v.largest_impulse > 0 && !mask.hides_row(*v.cursor, impulse_row)) {
                 const Vec3 g = project.view * it.resolution->impulse.impulse_world;
                 const float k = impulse_pixels / static_cast<float>(v.largest_impulse);
                 arrow(draw, p, ImVec2(p.x + static_cast<float>(g.x()) * k, p.y - static_cast<float>(g.y()) * k),
@@ -311,15 +347,22 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
             }
         }
         const std::string label =
-            "contact " + std::to_string(current) + " · penetration " + explain::number(current_penetration) + " m";
+            mask.hides_value(*v.cursor, current, "penetration")
+                ? "contact " + std::to_string(current)
+                : "contact " + std::to_string(current) + " · penetration " +
+                      explain::number(current_penetration, std::abs(c->penetration)) + " m";
         draw->AddText(ImVec2(p.x + 12, p.y - 22), IM_COL32(255, 230, 60, 255), label.c_str());
     }
 
     draw_scale_bar(draw, ImVec2(top_left.x + 12, bottom_right.y - 14), project.scale);
-    const char* legend =
-        "orange: moved by this item (faint: before)   green: normal   red: penetration\n"
-        "violet: impulse so far   magenta: this impulse   blue: velocity × 0.1 s";
-    draw->AddText(ImVec2(top_left.x + 12, top_left.y + 6), IM_COL32(180, 180, 180, 255), legend);
+    // The legend, wrapped to the canvas (a lesson's scene is narrow).
+    std::string legend;
+    for (const std::string& line :
+         wrap_lines("orange: moved by this item (faint: before) · green: normal · red: penetration · violet: impulse "
+                    "so far · magenta: this impulse · blue: velocity × 0.1 s",
+                    size.x - 24.0f))
+        legend += (legend.empty() ? "" : "\n") + line;
+    draw->AddText(ImVec2(top_left.x + 12, top_left.y + 6), IM_COL32(180, 180, 180, 255), legend.c_str());
     if (!v.bodies.exact)
         draw->AddText(ImVec2(top_left.x + 12, top_left.y + 40), IM_COL32(255, 120, 100, 255),
                       "bodies shown at the frame's start and end: the recording's contact filter left out a move");

@@ -94,6 +94,9 @@ void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHos
         integer_field(session, state, host, "relaxation passes", "relaxation.passes", s.relaxation.passes);
     }
     number_field(session, state, host, "restitution cut-off", "restitution_cutoff", s.refinements.restitution_cutoff);
+    bool from_acceleration = s.refinements.velocity_from_acceleration;
+    if (ImGui::Checkbox("velocity from acceleration", &from_acceleration))
+        set(session, state, host, "velocity_from_acceleration", from_acceleration ? "true" : "false");
     enum_combo(session, state, host, "orientation update", "orientation_update", orientation_update_names,
                s.orientation_update);
     ImGui::PopItemWidth();

@@ -3,6 +3,7 @@
 #include "explain/format.hpp"
 #include "gui/fonts.hpp"
 #include "gui/panels.hpp"
+#include "gui/text_wrap.hpp"
 
 #include <imgui.h>
 
@@ -54,13 +55,18 @@ struct Column {
     float weight;
 };
 
-// A scrolling list with a frozen header row, its columns sharing the width by weight.
-bool begin_list_table(const char* id, std::initializer_list<Column> columns) {
-    constexpr ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV |
-                                      ImGuiTableFlags_SizingStretchProp;
-    if (!ImGui::BeginTable(id, static_cast<int>(columns.size()), flags)) return false;
+// A scrolling list with a frozen header row, its columns sharing the width by weight; `fit`: each column as
+// wide as its content instead, the list scrolling sideways when the panel is narrower (no value is cut).
+bool begin_list_table(const char* id, std::initializer_list<Column> columns, bool fit = false) {
+    constexpr ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY | ImGuiTableFlags_BordersInnerV;
+    if (!ImGui::BeginTable(id, static_cast<int>(columns.size()),
+                           flags | (fit ? ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX
+                                        : ImGuiTableFlags_SizingStretchProp)))
+        return false;
     ImGui::TableSetupScrollFreeze(0, 1);
-    for (const Column& c : columns) ImGui::TableSetupColumn(c.name, ImGuiTableColumnFlags_WidthStretch, c.weight);
+    for (const Column& c : columns)
+        ImGui::TableSetupColumn(c.name, fit ? ImGuiTableColumnFlags_WidthFixed : ImGuiTableColumnFlags_WidthStretch,
+                                fit ? 0.0f : c.weight);
     ImGui::TableHeadersRow();
     return true;
 }
@@ -72,14 +78,15 @@ void draw_contacts(inspect::Session& session, UiState& state) {
     if (!v.cursor) return;
     const Trace& trace = session.trace();
     const int current = inspect::contact_at(trace, *v.cursor);
-    const std::string hidden = hidden_quantity(state, session);  // a lesson's open question
+    const lessons::Mask& mask = state.mask;  // what a lesson's open questions hide
     ImGui::TextDisabled("Before this item, status in the %s phase. Click to go.",
                         v.cursor->stage == inspect::Stage::velocity   ? "velocity"
                         : v.cursor->stage == inspect::Stage::position ? "position"
                                                                       : "first");
     if (!begin_list_table(
             "contacts",
-            {{"#", 0.35f}, {"bodies", 1.2f}, {"pen. m", 0.9f}, {"Δv m/s", 0.9f}, {"|g| N s", 0.8f}, {"status", 0.75f}}))
+            {{"#", 0.35f}, {"bodies", 1.2f}, {"pen. m", 0.9f}, {"Δv m/s", 0.9f}, {"|g| N s", 0.8f}, {"status", 0.75f}},
+            true))
         return;
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(v.contacts.size()));
@@ -99,16 +106,32 @@ void draw_contacts(inspect::Session& session, UiState& state) {
             if (row.contact == current && v.scroll_to_cursor) ImGui::SetScrollHereY(0.4f);
             ImGui::PopID();
             ImGui::TableSetColumnIndex(1);
-            ImGui::Text("%s / %s", inspect::body_label(trace, row.prepared->bodies[0]).c_str(),
-                        inspect::body_label(trace, row.prepared->bodies[1]).c_str());
+            if (mask.hides_bodies_of(v.cursor->frame, row.contact))
+                ImGui::TextUnformatted("? / ?");
+            else
+                ImGui::Text("%s / %s", inspect::body_label(trace, row.prepared->bodies[0]).c_str(),
+                            inspect::body_label(trace, row.prepared->bodies[1]).c_str());
             ImGui::PushFont(value_font());
+            // Each value at the scale of the contact's own value as prepared: what rounding leaves of a
+            // resolved penetration is 0.
+            const auto cell = [&](std::string_view key, double value, double scale) {
+                if (mask.hides_value(*v.cursor, row.contact, key)) {
+                    ImGui::TextUnformatted("?");
+                    return;
+                }
+                const std::string text = explain::number(value, scale);
+                ImGui::TextUnformatted(text.c_str());
+                if (ImGui::IsItemHovered() && text != explain::exact(value))
+                    ImGui::SetTooltip("exactly %s", explain::exact(value).c_str());
+            };
             ImGui::TableSetColumnIndex(2);
-            ImGui::TextUnformatted(hidden == "penetration" ? "?" : explain::number(row.penetration).c_str());
+            cell("penetration", row.penetration, std::max(std::abs(row.prepared->penetration), std::abs(row.penetration)));
             ImGui::TableSetColumnIndex(3);
-            ImGui::TextUnformatted(
-                hidden == "desired_delta_velocity" ? "?" : explain::number(row.desired_delta_velocity).c_str());
+            const double desired = row.prepared->desired_delta_velocity.desired_delta_velocity;
+            cell("desired_delta_velocity", row.desired_delta_velocity,
+                 std::max(std::abs(desired), std::abs(row.desired_delta_velocity)));
             ImGui::TableSetColumnIndex(4);
-            ImGui::TextUnformatted(explain::number(row.impulse_so_far.norm()).c_str());
+            cell("impulse_world", row.impulse_so_far.norm(), 0.0);
             ImGui::PopFont();
             ImGui::TableSetColumnIndex(5);
             ImGui::TextColored(status_colour(row.status), "%s", std::string(inspect::status_name(row.status)).c_str());
@@ -127,30 +150,40 @@ void draw_bodies(const inspect::Session& session, UiState& state) {
             "bodies",
             {{"body", 0.6f}, {"position m (before → after)", 2.0f}, {"velocity m/s, ω rad/s (before → after)", 2.0f}}))
         return;
-    // While a lesson's question is open the item's outcome is not shown: it would give the answer away.
-    const bool conceal = !hidden_quantity(state, session).empty();
+    // A lesson's open question hides the state of the bodies a hidden change moved, from that change on.
+    const lessons::Mask& mask = state.mask;
     std::vector<char> moved(v.bodies.after.size(), 0);
-    if (!conceal)
-        for (int b : v.bodies.moved) moved[static_cast<std::size_t>(b)] = 1;
+    for (int b : v.bodies.moved) moved[static_cast<std::size_t>(b)] = 1;
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(v.bodies.after.size()));
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const auto b = static_cast<std::size_t>(i);
+            const bool hide_before = mask.hides_body(*v.cursor, i, false);
+            const bool hide_after = mask.hides_body(*v.cursor, i, true);
             const BodyState& before = v.bodies.before[b];
-            const BodyState& after = conceal ? before : v.bodies.after[b];
+            const BodyState& after = hide_after ? before : v.bodies.after[b];
             ImGui::TableNextRow();
-            if (moved[b]) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(90, 60, 20, 255));
+            if (moved[b] && !hide_after) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, IM_COL32(90, 60, 20, 255));
             ImGui::TableSetColumnIndex(0);
             ImGui::TextUnformatted(trace.scene.body_names[b].c_str());
+            if (hide_before || hide_after) {
+                ImGui::TableSetColumnIndex(1);
+                ImGui::TextWrapped(hide_before ? "? (hidden until you answer)" : "as before → ? (hidden until you answer)");
+                ImGui::TableSetColumnIndex(2);
+                ImGui::TextWrapped("?");
+                if (hide_before) continue;
+            }
             ImGui::PushFont(value_font());
-            ImGui::TableSetColumnIndex(1);
-            ImGui::TextWrapped("%s", change_text(before.position, after.position).c_str());
-            if (before.orientation.coeffs() != after.orientation.coeffs())
-                ImGui::TextWrapped("q %s", change_text(before.orientation, after.orientation).c_str());
-            ImGui::TableSetColumnIndex(2);
-            ImGui::TextWrapped("v %s", change_text(before.velocity, after.velocity).c_str());
-            ImGui::TextWrapped("ω %s", change_text(before.angular_velocity, after.angular_velocity).c_str());
+            if (!hide_after) {
+                ImGui::TableSetColumnIndex(1);
+                wrapped_text(change_text(before.position, after.position));
+                if (before.orientation.coeffs() != after.orientation.coeffs())
+                    wrapped_text("q " + change_text(before.orientation, after.orientation));
+                ImGui::TableSetColumnIndex(2);
+                wrapped_text("v " + change_text(before.velocity, after.velocity));
+                wrapped_text("ω " + change_text(before.angular_velocity, after.angular_velocity));
+            }
             ImGui::PopFont();
         }
     ImGui::EndTable();
@@ -165,8 +198,16 @@ void draw_plots(const inspect::Session& session, UiState& state) {
     }
     const float width = ImGui::GetContentRegionAvail().x / static_cast<float>(v.curves.size()) - 8.0f;
     const float height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing(), 30.0f);
+    const Trace& trace = session.trace();
     for (std::size_t k = 0; k < v.curves.size(); ++k) {
         const inspect::PhaseCurve& c = v.curves[k];
+        // A lesson's open question hides the values it would give away: those points are not drawn.
+        const std::string_view key = c.stage == inspect::Stage::position ? "penetration" : "desired_delta_velocity";
+        std::vector<char> shown(c.worst.size(), 1);
+        for (std::size_t i = 0; i < c.worst.size(); ++i) {
+            const inspect::Cursor item{v.cursor->frame, c.stage, static_cast<int>(i), 0};
+            shown[i] = !state.mask.hides_value(item, inspect::contact_at(trace, item), key);
+        }
         if (k > 0) ImGui::SameLine();
         ImGui::BeginGroup();
         const bool position = c.stage == inspect::Stage::position;
@@ -176,7 +217,10 @@ void draw_plots(const inspect::Session& session, UiState& state) {
         ImGui::Dummy(ImVec2(width, height));
         ImDrawList* draw = ImGui::GetWindowDrawList();
         draw->AddRectFilled(a, b, IM_COL32(24, 26, 32, 255));
-        const double top = std::max(*std::max_element(c.worst.begin(), c.worst.end()), c.epsilon) * 1.1;
+        double largest = c.epsilon;
+        for (std::size_t i = 0; i < c.worst.size(); ++i)
+            if (shown[i]) largest = std::max(largest, c.worst[i]);
+        const double top = largest * 1.1;
         const auto y_of = [&](double value) { return b.y - static_cast<float>(value / top) * (height - 4.0f) - 2.0f; };
         const auto x_of = [&](std::size_t i) {
             return a.x + 2.0f +
@@ -187,19 +231,19 @@ void draw_plots(const inspect::Session& session, UiState& state) {
         const std::size_t stride =
             std::max<std::size_t>(1, c.worst.size() / static_cast<std::size_t>(std::max(width, 1.0f)));
         for (std::size_t i = stride; i < c.worst.size(); i += stride)
-            draw->AddLine(ImVec2(x_of(i - stride), y_of(c.worst[i - stride])), ImVec2(x_of(i), y_of(c.worst[i])),
-                          IM_COL32(240, 160, 70, 255), 1.5f);
-        if (c.worst.size() == 1)
+            if (shown[i - stride] && shown[i])
+                draw->AddLine(ImVec2(x_of(i - stride), y_of(c.worst[i - stride])), ImVec2(x_of(i), y_of(c.worst[i])),
+                              IM_COL32(240, 160, 70, 255), 1.5f);
+        if (c.worst.size() == 1 && shown[0])
             draw->AddCircleFilled(ImVec2(x_of(0), y_of(c.worst[0])), 3.0f, IM_COL32(240, 160, 70, 255));
         if (v.cursor->stage == c.stage) {
             const auto i = static_cast<std::size_t>(v.cursor->item);
             draw->AddLine(ImVec2(x_of(i), a.y), ImVec2(x_of(i), b.y), IM_COL32(255, 230, 60, 160), 1.0f);
-            draw->AddCircleFilled(ImVec2(x_of(i), y_of(c.worst[i])), 4.0f, IM_COL32(255, 230, 60, 255));
+            if (shown[i]) draw->AddCircleFilled(ImVec2(x_of(i), y_of(c.worst[i])), 4.0f, IM_COL32(255, 230, 60, 255));
         }
-        const std::string hidden = hidden_quantity(state, session);
-        const bool secret = hidden == (position ? "penetration" : "desired_delta_velocity");
-        draw->AddText(ImVec2(a.x + 4, a.y + 2), IM_COL32(200, 200, 200, 255),
-                      secret ? "?" : explain::number(top).c_str());
+        const bool any_hidden = std::find(shown.begin(), shown.end(), 0) != shown.end();
+        const std::string scale = explain::number(top) + (any_hidden ? " (some values hidden)" : "");
+        draw->AddText(ImVec2(a.x + 4, a.y + 2), IM_COL32(200, 200, 200, 255), scale.c_str());
         draw->AddText(ImVec2(b.x - 70, y_of(c.epsilon) - 16), IM_COL32(130, 190, 130, 255), "ε");
         ImGui::EndGroup();
     }

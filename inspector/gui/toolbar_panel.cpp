@@ -1,6 +1,7 @@
 #include "gui/panels.hpp"
 
 #include <SDL.h>
+#include <filesystem>
 #include <imgui.h>
 
 namespace impulse::gui {
@@ -21,8 +22,8 @@ constexpr Button buttons[] = {
     {"◀◀ Phase", ActionKind::previous_phase, "The start of this phase, or the previous phase (Page Up)"},
     {"◀ Iteration", ActionKind::previous_iteration, "The previous iteration (↑ moves by item: iteration or contact)"},
     {"◀ Contact", ActionKind::previous_contact, "The previous contact"},
-    {"◀ Step", ActionKind::previous_step, "The previous derivation step (←)"},
-    {"Step ▶", ActionKind::next_step, "The next derivation step (→)"},
+    {"◀ Step", ActionKind::previous_step, "The previous derivation step (←; with a lesson open, this button)"},
+    {"Step ▶", ActionKind::next_step, "The next derivation step (→; with a lesson open, this button)"},
     {"Contact ▶", ActionKind::next_contact, "The next contact (in a phase: the next iteration on another contact)"},
     {"Iteration ▶", ActionKind::next_iteration, "The next iteration (↓ moves by item: iteration or contact)"},
     {"Phase ▶▶", ActionKind::next_phase, "The next phase (Page Down)"},
@@ -55,19 +56,24 @@ void draw_toolbar(inspect::Session& session, UiState& state, inspect::ActionHost
         ImGui::SameLine();
     }
     ImGui::NewLine();
-    // Keys move the cursor unless the user is typing in a field (a setting, an export path).
-    if (!ImGui::GetIO().WantTextInput)
-        for (int key : state.pressed_keys)
-            if (const Action pressed = key_action(key); pressed.count > 0) act(session, state, pressed, host);
-    state.pressed_keys.clear();
+    // Keys move the cursor unless the user is typing in a field (a setting, an export path). With a lesson
+    // open the keys belong to the lesson (its panel reads them) and the inspector moves by its buttons.
+    if (!state.lesson) {
+        if (!ImGui::GetIO().WantTextInput)
+            for (int key : state.pressed_keys)
+                if (const Action pressed = key_action(key); pressed.count > 0) act(session, state, pressed, host);
+        state.pressed_keys.clear();
+    }
     const CursorViews& v = state.views;
-    ImGui::TextUnformatted(session.path().c_str());
+    // A lesson's file is the lesson's, not the student's: the scene's name is enough.
+    const std::string file =
+        state.lesson ? std::filesystem::path(session.path()).filename().string() : session.path();
+    ImGui::TextUnformatted(file.c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("·");
     ImGui::SameLine();
     if (v.cursor)
-        ImGui::Text("%s   (step %d of %d)", v.derivation.where.c_str(), v.derivation.step_index + 1,
-                    v.derivation.step_count);
+        ImGui::TextUnformatted(v.derivation.where.c_str());
     else
         ImGui::TextUnformatted("nothing recorded to step through");
     if (!state.message.empty()) {

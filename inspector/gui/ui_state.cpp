@@ -2,13 +2,29 @@
 
 #include "io/input_error.hpp"
 
+#include <imgui.h>
+
 #include <algorithm>
 
 namespace impulse::gui {
 
+void refresh_mask(const inspect::Session& session, UiState& state) {
+    if (!state.lesson) {
+        state.mask = lessons::Mask();
+        return;
+    }
+    LessonState& l = *state.lesson;
+    if (l.reaches_revision != session.revision()) {
+        l.reaches = lessons::question_reaches(l.run.lesson(), session.trace());
+        l.reaches_revision = session.revision();
+    }
+    state.mask = lessons::Mask(l.reaches, l.run.open(), session.trace());
+}
+
 void refresh_views(const inspect::Session& session, UiState& state) {
     CursorViews& v = state.views;
     const std::optional<inspect::Cursor>& cursor = session.cursor();
+    if (state.lesson && state.lesson->reaches_revision != session.revision()) refresh_mask(session, state);
     if (v.revision == session.revision() && v.cursor == cursor) return;
     const Trace& trace = session.trace();
     if (v.revision != session.revision()) v.frame = -1;
@@ -36,48 +52,23 @@ void refresh_views(const inspect::Session& session, UiState& state) {
 
 void go_to_lesson_step(inspect::Session& session, UiState& state, int step) {
     LessonState& l = *state.lesson;
-    const int count = static_cast<int>(l.lesson->places.size());
-    l.step = std::clamp(step, 0, count - 1);
+    l.run.go_to(step);
+    if (l.preview) {
+        l.run.answered_before(l.run.step());
+        refresh_mask(session, state);
+    }
     l.typed.fill('\0');
-    session.move_to(l.lesson->places[static_cast<std::size_t>(l.step)]);
-    if (l.progress && l.progress_file) {
-        l.progress->lessons[l.lesson->lesson.name].last_step = l.step;
-        try {
-            lessons::save_progress(*l.progress_file, *l.progress);
-        } catch (const io::InputError& e) {
-            state.message = e.problem(), state.message_is_error = true;
-        }
+    l.chosen = -1;
+    l.focus_answer = true;
+    // The step's place in this trace: the lesson's own run, or the same place in a re-run with other settings.
+    const lessons::Step& s = l.run.current();
+    try {
+        session.move_to(inspect::resolve_goto(session.trace(), inspect::parse_goto(s.at, "at"), "at"));
+    } catch (const io::InputError& e) {
+        state.message = "this step's place (" + s.at + ") is not in the re-run: " + e.problem();
+        state.message_is_error = true;
     }
-}
-
-std::string hidden_quantity(const UiState& state, const inspect::Session& session) {
-    if (!state.lesson || !session.cursor()) return {};
-    const LessonState& l = *state.lesson;
-    const auto step = static_cast<std::size_t>(l.step);
-    const lessons::Step& s = l.lesson->lesson.steps[step];
-    // Hidden wherever the student looks until they answer: the same quantity also shows in later steps'
-    // tables of the item and in the contacts list.
-    if (!s.question || l.verdicts[step]) return {};
-    return lessons::question_quantity(*s.question);
-}
-
-bool is_hidden_row(const std::string& hidden, const std::string& question_path, std::string_view quantity) {
-    if (hidden.empty()) return false;
-    // The rows that show the asked value: its key (both bodies' rows of a per-body one), the last key of a
-    // nested path (friction_solve.cone_limit is the row cone_limit; rewind.time the row rewind_time), and the
-    // impulse in the other frame.
-    std::vector<std::string> names{hidden};
-    const std::size_t dot = question_path.rfind('.');
-    if (dot != std::string::npos) {
-        const std::string last = question_path.substr(dot + 1, question_path.find('[', dot) - dot - 1);
-        names.push_back(last);
-        names.push_back(hidden + "_" + last);
-    }
-    if (hidden == "impulse_contact") names.push_back("impulse_world");
-    if (hidden == "impulse_world") names.push_back("impulse_contact");
-    for (const std::string& name : names)
-        if (quantity == name || quantity.starts_with(name + "[")) return true;
-    return false;
+    if (!l.run.save_problem().empty()) state.message = l.run.save_problem(), state.message_is_error = true;
 }
 
 void act(inspect::Session& session, UiState& state, const inspect::Action& action, inspect::ActionHost& host) {
@@ -98,6 +89,13 @@ void act(inspect::Session& session, UiState& state, const inspect::Action& actio
         state.message = e.problem();
         state.message_is_error = true;
     }
+}
+
+void record_item(UiState& state, const char* what, bool scrolls) {
+    if (!state.record_layout) return;
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    state.layout.push_back({what, min.x, min.y, max.x, max.y, pos.x, pos.y, pos.x + size.x, pos.y + size.y, scrolls});
 }
 
 }  // namespace impulse::gui

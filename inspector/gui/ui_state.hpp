@@ -1,10 +1,11 @@
 #pragma once
-// What the window remembers between frames: the view of the scene, the export paths, the last message,
-// and the values rebuilt from the trace whenever the cursor or the trace changes (never every frame: a
-// fully recorded frame of the 1000-box grid has 4000 contacts).
+// What the window remembers between frames: the view of the scene, the export paths, the last message, the
+// panels' sizes, the open lesson, and the values rebuilt from the trace whenever the cursor or the trace
+// changes (never every frame: a fully recorded frame of the 1000-box grid has 4000 contacts).
 
 #include "lessons/lesson.hpp"
-#include "lessons/progress.hpp"
+#include "lessons/lesson_run.hpp"
+#include "lessons/mask.hpp"
 #include "model/derivation_view.hpp"
 #include "model/replay.hpp"
 #include "model/script.hpp"
@@ -14,6 +15,8 @@
 #include <optional>
 #include <string>
 #include <vector>
+
+struct ImVec2;
 
 namespace impulse::gui {
 
@@ -43,41 +46,71 @@ struct CursorViews {
     bool scroll_to_cursor = false;  // the panels bring the cursor's rows into view once after a move
 };
 
-// A lesson open in the window: which step the student is on, what they typed, what they were told.
+// A lesson open in the window: the student's run through it, what they are typing or have picked, and what
+// its open questions hide.
 struct LessonState {
-    lessons::PreparedLesson* lesson = nullptr;  // owned by the lesson command
-    int step = 0;
+    lessons::LessonRun run;
     std::array<char, 64> typed{};
-    std::vector<std::optional<lessons::Verdict>> verdicts;  // per step; set once answered
-    lessons::Progress* progress = nullptr;                  // saved after every answer and move, when given
-    std::optional<std::filesystem::path> progress_file;
+    int chosen = -1;             // a choose question's option, from 0; -1 none
+    bool focus_answer = true;    // give the answer field the keyboard at the next frame
+    // Worked out on the session's trace; again when a setting re-runs it.
+    std::vector<std::optional<lessons::QuestionReach>> reaches;
+    int reaches_revision = -1;
+    // The headless pictures of `lesson --headless`: each step shown with the questions before it answered.
+    bool preview = false;
+};
+
+// The panels' sizes, as the user dragged the splitters (0: the default for the window's size).
+struct PanelSizes {
+    float lesson_width = 0.0f;       // a lesson's panel, pixels
+    float left_width = 0.0f;         // the inspector's navigator and settings column, pixels
+    float right_width = 0.0f;        // its contacts, bodies and plots column, pixels
+    float derivation_share = 0.0f;   // of the height below the toolbar, above the scene
+    float scene_share = 0.0f;        // with a lesson: of the width beside the lesson, left of the tabs
+};
+
+// One item of the lesson panel as ImGui laid it out, for the layout test.
+struct LaidOutItem {
+    std::string what;     // "text", "button Check", "option 2", "input", ...
+    float min_x, min_y, max_x, max_y;
+    // The visible region it was drawn in (the panel, or the scrolling text inside it), and whether that
+    // region scrolls vertically (text below its bottom is then reached by scrolling).
+    float region_min_x, region_min_y, region_max_x, region_max_y;
+    bool scrolls;
 };
 
 struct UiState {
     SceneCamera camera;
+    PanelSizes sizes;
     std::optional<LessonState> lesson;
+    lessons::Mask mask;  // what the lesson's open questions hide (nothing without a lesson)
     CursorViews views;
     std::array<char, 512> trace_path{"trace.json"};
     std::array<char, 512> table_path{"table.csv"};
     std::array<char, 512> screenshot_path{"screenshot.png"};
-    std::vector<int> pressed_keys;  // SDL scancodes pressed since the last frame, for the navigation keys
+    std::vector<int> pressed_keys;  // SDL scancodes pressed since the last frame, for the keys
     std::string message;            // the last export's or setting's outcome, shown in the status line
     bool message_is_error = false;
+    bool quit = false;  // Esc in a lesson: the window closes
+    // Filled by the lesson panel every frame while `record_layout` is set.
+    bool record_layout = false;
+    std::vector<LaidOutItem> layout;
+    float lesson_panel[4] = {0, 0, 0, 0};  // the lesson window's rectangle: min x, min y, max x, max y
 };
 
-// Rebuilds `state.views` if the session's trace or cursor changed since the last call.
+// Rebuilds `state.views` (and the lesson's mask) if the session's trace or cursor changed since the last call.
 void refresh_views(const inspect::Session& session, UiState& state);
+// Works out the mask again: after an answer or a skip, and when the trace changed.
+void refresh_mask(const inspect::Session& session, UiState& state);
 
 // Goes to step `step` of the open lesson: its place in the trace, and the step's text and question.
 void go_to_lesson_step(inspect::Session& session, UiState& state, int step);
 
-// The quantity whose values are hidden: the current lesson step's question's, until it is answered.
-// Empty when nothing is hidden.
-std::string hidden_quantity(const UiState& state, const inspect::Session& session);
-// Whether a table row shows the hidden value: `question_path` is the question's full value path.
-bool is_hidden_row(const std::string& hidden, const std::string& question_path, std::string_view quantity);
-
 // Carries out an action from a key or a button; an error becomes the status message instead of an exit.
 void act(inspect::Session& session, UiState& state, const inspect::Action& action, inspect::ActionHost& host);
+
+// Records the last ImGui item (its rectangle and the window it shows in) while the layout is recorded.
+// `scrolls`: that window scrolls vertically, so the item may lie below its bottom until scrolled to.
+void record_item(UiState& state, const char* what, bool scrolls = false);
 
 }  // namespace impulse::gui

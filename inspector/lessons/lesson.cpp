@@ -1,5 +1,6 @@
 #include "lessons/lesson.hpp"
 
+#include "lessons/trace_path.hpp"
 #include "cli/input_files.hpp"
 #include "explain/annotations.hpp"
 #include "explain/format.hpp"
@@ -9,6 +10,7 @@
 #include "io/schema_validator.hpp"
 #include "io/scene_file.hpp"
 #include "io/schemas.hpp"
+#include "io/suggest.hpp"
 #include "io/trace_json.hpp"
 
 #include <algorithm>
@@ -52,6 +54,19 @@ Question read_question(const json& q, const std::string& where) {
     }
     if (q.contains("options"))
         for (const json& o : q["options"]) question.options.push_back({o["label"].get<std::string>(), o["value"]});
+    if (q.contains("reveals"))
+        for (std::size_t i = 0; i < q["reveals"].size(); ++i) {
+            const std::string name = q["reveals"][i].get<std::string>();
+            if (!explain::find_annotation(name)) {
+                std::vector<std::string> names;
+                for (const explain::Annotation& a : explain::vocabulary()) names.emplace_back(a.quantity);
+                const std::optional<std::string> suggestion = io::closest_name(name, names);
+                throw io::InputError(where + ".reveals[" + std::to_string(i) + "]",
+                                     "\"" + name + "\" is not a quantity of the vocabulary (docs/trace-format.md)" +
+                                         (suggestion ? "; did you mean \"" + *suggestion + "\"?" : std::string()));
+            }
+            question.reveals.push_back(name);
+        }
     if (question.kind == Question::Kind::predict) {
         if (!q.contains("tolerance"))
             throw io::InputError(where + ".tolerance",
@@ -68,56 +83,6 @@ Question read_question(const json& q, const std::string& where) {
     return question;
 }
 
-// Follows "key.key[i][j]" inside `item`; null when a part is missing. `problem` says which.
-const json* follow(const json& item, std::string_view path, std::string& problem) {
-    const json* at = &item;
-    std::size_t i = 0;
-    while (i < path.size()) {
-        if (path[i] == '[') {
-            const std::size_t close = path.find(']', i);
-            std::size_t index = 0;
-            const auto [end, error] = close == std::string_view::npos
-                                          ? std::from_chars(path.data(), path.data(), index)
-                                          : std::from_chars(path.data() + i + 1, path.data() + close, index);
-            if (close == std::string_view::npos || error != std::errc() || end != path.data() + close) {
-                problem = "\"" + std::string(path) + "\" is not a path like impulse_world[1]";
-                return nullptr;
-            }
-            if (!at->is_array() || index >= at->size()) {
-                problem = "\"" + std::string(path.substr(0, close + 1)) + "\" is outside the value it indexes";
-                return nullptr;
-            }
-            at = &(*at)[index];
-            i = close + 1;
-        } else {
-            if (path[i] == '.') ++i;
-            const std::size_t end = std::min(path.find_first_of(".[", i), path.size());
-            const std::string key(path.substr(i, end - i));
-            if (!at->is_object() || !at->contains(key)) {
-                std::string keys;
-                if (at->is_object())
-                    for (const auto& [k, v] : at->items()) keys += (keys.empty() ? "" : ", ") + k;
-                problem = "no \"" + key + "\" here" + (keys.empty() ? std::string() : " (keys: " + keys + ")");
-                return nullptr;
-            }
-            at = &(*at)[key];
-            i = end;
-        }
-    }
-    return at;
-}
-
-// The trace JSON of the item a cursor stands on: a prepared contact or an iteration.
-const json& item_json(const json& trace, const Trace& recorded, const inspect::Cursor& c) {
-    const json& frame = trace["frames"][static_cast<std::size_t>(c.frame)];
-    if (c.stage == inspect::Stage::preparation) return frame["contacts"][static_cast<std::size_t>(c.item)];
-    for (const json& phase : frame["phases"])
-        if (phase["phase"] == inspect::stage_name(c.stage))
-            return phase["iterations"][static_cast<std::size_t>(c.item)];
-    (void)recorded;
-    throw std::logic_error("a cursor's phase is missing from the trace JSON");
-}
-
 std::string text_of(const json& value) {
     if (value.is_number()) return explain::number(value.get<double>());
     if (value.is_string()) return value.get<std::string>();
@@ -126,9 +91,12 @@ std::string text_of(const json& value) {
 
 }  // namespace
 
-std::string question_quantity(const Question& question) {
-    const std::size_t end = question.value.find_first_of(".[");
-    return question.value.substr(0, end);
+std::string question_quantity(const Question& question, inspect::Stage stage) {
+    const explain::ItemKind item = stage == inspect::Stage::preparation ? explain::ItemKind::contact
+                                   : stage == inspect::Stage::position  ? explain::ItemKind::position_iteration
+                                                                        : explain::ItemKind::velocity_iteration;
+    const explain::Annotation* a = explain::quantity_of_path(question.value, item);
+    return a ? std::string(a->quantity) : std::string();
 }
 
 Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file) {
@@ -296,10 +264,14 @@ PreparedLesson prepare_lesson(Lesson lesson) {
             }
             const Question& q = *step.question;
             std::string problem;
-            const json* value = follow(item_json(document, trace, place), q.value, problem);
+            const json* value = follow(item_json(document, place), q.value, problem);
             if (!value) throw io::InputError(where + ".question.value", problem);
-            Answer answer{*value, {}, -1, {}};
-            if (const explain::Annotation* a = explain::find_annotation(question_quantity(q))) answer.unit = a->unit;
+            Answer answer{*value, question_quantity(q, place.stage), {}, -1, {}};
+            if (answer.quantity.empty())
+                throw io::InputError(where + ".question.value", "\"" + q.value +
+                                                                    "\" names no quantity of the vocabulary here "
+                                                                    "(docs/trace-format.md lists the keys)");
+            answer.unit = explain::annotation(answer.quantity).unit;
             if (q.kind == Question::Kind::predict) {
                 if (!value->is_number())
                     throw io::InputError(where + ".question.value", "a predict question needs a number, and \"" +
@@ -347,18 +319,26 @@ Verdict check_answer(const Question& question, const Answer& answer, std::string
         if (given != std::floor(given) || option < 0 || option >= static_cast<int>(question.options.size()))
             throw io::InputError("answer",
                                  "type the number of an option, from 1 to " + std::to_string(question.options.size()));
-        const bool right = option == answer.correct_option;
-        return {right, (right ? "right: " : "not quite: the engine's answer is ") + answer.shown};
+        if (option == answer.correct_option) return {true, "right: " + answer.shown};
+        return {false, "not quite: option " + std::to_string(option + 1) +
+                           " is not what the engine does; try again, or skip to see its answer"};
     }
     const double value = answer.value.get<double>();
-    const double error = std::abs(given - value);
+    const double error = given - value;
     const double allowed = std::max(question.tolerance.relative.value_or(0.0) * std::abs(value),
                                     question.tolerance.absolute.value_or(0.0));
-    const bool right = error <= allowed;
-    std::string off =
-        value != 0.0 ? explain::number(error / std::abs(value) * 100.0) + " % off" : explain::number(error) + " off";
-    return {right, (right ? "right: the engine has " : "not quite: the engine has ") + answer.shown + " (you were " +
-                       off + ")"};
+    // How far off, as a share of the value (or, for a value of 0, in its unit).
+    const std::string off = value != 0.0 ? explain::percent(std::abs(error) / std::abs(value) * 100.0) + " %"
+                                         : explain::with_unit(explain::number(std::abs(error)), answer.unit);
+    if (std::abs(error) <= allowed)
+        return {true, "right: the engine has " + answer.shown +
+                          (error == 0.0 ? std::string(" (exactly)") : " (you were " + off + " off)")};
+    return {false, "not quite: " + off + (error > 0 ? " too high" : " too low") +
+                       "; try again, or skip to see the engine's value"};
+}
+
+std::string skipped_text(const Answer& answer) {
+    return "skipped: the engine's answer is " + answer.shown;
 }
 
 }  // namespace impulse::lessons

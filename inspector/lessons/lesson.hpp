@@ -32,6 +32,9 @@ struct Question {
     std::string value;  // a path inside the place's item: "desired_delta_velocity", "impulse_world[1]"
     Tolerance tolerance;
     std::vector<Option> options;
+    // Vocabulary names whose values would give this answer away (a step's table that shows it under another
+    // name): hidden with the answer, and with what is computed from them, until the question is answered.
+    std::vector<std::string> reveals;
 };
 
 struct Step {
@@ -68,7 +71,8 @@ std::vector<std::filesystem::path> lesson_files(const std::filesystem::path& fol
 // The engine's answer to a question.
 struct Answer {
     nlohmann::ordered_json value;  // a number for predict; the trace's value for choose
-    std::string unit;              // from the annotations of the path's quantity ("m/s"); may be empty
+    std::string quantity;          // the vocabulary name of the value asked for ("velocity_update")
+    std::string unit;              // the quantity's unit ("m/s"); empty for a value without one
     int correct_option = -1;       // choose: the index of the option equal to the value
     std::string shown;             // "3.24 m/s", or the correct option's label
 };
@@ -85,16 +89,21 @@ struct PreparedLesson {
 // path of the first step whose place or question does not work with this run.
 PreparedLesson prepare_lesson(Lesson lesson);
 
-// What a student typed (a number, or for choose the option's index from 0), against the engine's answer.
+// What a student typed (a number, or for choose the option's number from 1), against the engine's answer. A
+// wrong answer says how far off it is, never the answer: the student may try again, or skip to see it.
 struct Verdict {
     bool correct = false;
-    std::string feedback;  // one line: "right: the engine has 3.24 m/s (you were 1.2 % off)"
+    // One line: "right: the engine has 3.24 m/s (you were 1.2 % off)", "not quite: 33.3 % too low; try
+    // again, or skip to see the engine's value".
+    std::string feedback;
 };
-// Throws io::InputError("answer", ...) when the text is not a number (or not an option's index).
+// Throws io::InputError("answer", ...) when the text is not a number (or not an option's number).
 Verdict check_answer(const Question& question, const Answer& answer, std::string_view typed);
+// What a skipped question shows: "skipped: the engine's answer is 7.5 m/s".
+std::string skipped_text(const Answer& answer);
 
-// The first key of a question's value path ("impulse_world" for "impulse_world[1]"): the table rows that
-// show it are hidden until the question is answered.
-std::string question_quantity(const Question& question);
+// The vocabulary name of a question's value at a place of `stage`: "impulse_contact" for "impulse_contact[0]",
+// "velocity_update" for "updates[0].after[0]" in a velocity iteration. Empty when the path names none.
+std::string question_quantity(const Question& question, inspect::Stage stage);
 
 }  // namespace impulse::lessons

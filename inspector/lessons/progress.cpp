@@ -60,7 +60,10 @@ Progress read_progress_text(std::string_view text) {
             if (!a.is_object()) throw io::InputError(where, "must be an object");
             p.answers[id] = {member(a, where, "answer", json::value_t::string, "text").get<std::string>(),
                              member(a, where, "correct", json::value_t::boolean, "true or false").get<bool>(),
-                             read_count(a, where, "tries")};
+                             read_count(a, where, "tries"),
+                             // Written since skipping was added; older files have no skipped question.
+                             a.contains("skipped") &&
+                                 member(a, where, "skipped", json::value_t::boolean, "true or false").get<bool>()};
         }
         progress.lessons[name] = std::move(p);
     }
@@ -79,6 +82,31 @@ std::string time_stamp() {
 }
 
 }  // namespace
+
+Tally tally(const LessonProgress& lesson) {
+    Tally t;
+    for (const auto& [id, a] : lesson.answers) {
+        if (a.skipped)
+            ++t.skipped;
+        else if (a.correct)
+            ++(a.tries <= 1 ? t.first_try : t.after_retries);
+        else if (a.tries > 0)
+            ++t.open;
+    }
+    return t;
+}
+
+std::string tally_text(const Tally& t) {
+    std::string text;
+    const auto part = [&text](int n, const std::string& what) {
+        if (n > 0) text += (text.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+    };
+    part(t.first_try, "right at the first try");
+    part(t.after_retries, "right after retries");
+    part(t.skipped, "skipped");
+    part(t.open, "tried, not yet right");
+    return text.empty() ? "none answered yet" : text;
+}
 
 std::optional<std::filesystem::path> progress_file() {
     if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config)
@@ -113,7 +141,7 @@ void save_progress(const std::filesystem::path& file, const Progress& progress) 
     for (const auto& [name, p] : progress.lessons) {
         json answers = json::object();
         for (const auto& [id, a] : p.answers)
-            answers[id] = {{"answer", a.answer}, {"correct", a.correct}, {"tries", a.tries}};
+            answers[id] = {{"answer", a.answer}, {"correct", a.correct}, {"tries", a.tries}, {"skipped", a.skipped}};
         lessons[name] = {{"last_step", p.last_step}, {"answers", answers}};
     }
     const json document = {{"format", format_name}, {"version", 1}, {"lessons", lessons}};

@@ -13,9 +13,19 @@
 namespace impulse::lessons {
 
 struct AnswerRecord {
-    std::string answer;  // as typed
+    std::string answer;  // the last answer, as typed
     bool correct = false;
-    int tries = 0;
+    int tries = 0;         // answers given (a skip is not one)
+    bool skipped = false;  // the student asked for the answer instead (kept as "skipped"; files before it lack it)
+};
+
+// How a lesson's questions went: right at the first try, right after wrong tries, skipped, and tried but
+// still open (only wrong answers so far).
+struct Tally {
+    int first_try = 0;
+    int after_retries = 0;
+    int skipped = 0;
+    int open = 0;
 };
 
 struct LessonProgress {
@@ -26,6 +36,10 @@ struct LessonProgress {
 struct Progress {
     std::map<std::string, LessonProgress> lessons;  // by lesson name ("01-impulse-is-a-velocity-change")
 };
+
+Tally tally(const LessonProgress& lesson);
+// "3 right at the first try, 1 after retries, 1 skipped" (the parts that are not 0), or "none answered yet".
+std::string tally_text(const Tally& tally);
 
 // Where progress is kept; none when neither XDG_CONFIG_HOME nor HOME is set.
 std::optional<std::filesystem::path> progress_file();

@@ -80,7 +80,8 @@ TEST_CASE(
             bool named = mentions(step.text, table.step);
             for (const explain::Row& r : table.rows)
                 named = named || mentions(step.text, r.quantity.substr(0, r.quantity.find('[')));
-            if (step.question) named = named || mentions(step.text, lessons::question_quantity(*step.question));
+            if (step.question)
+                named = named || mentions(step.text, lessons::question_quantity(*step.question, place.stage));
             CHECK(named);
 
             // Its question is right at the engine's value and wrong well away from it.
@@ -120,7 +121,8 @@ TEST_CASE("a predict answer is right within its tolerance and says how far off i
     CHECK(lessons::check_answer(q, *p.answers[1], "7.6").correct);  // 1.3 % off, 2 % allowed
     const lessons::Verdict wrong = lessons::check_answer(q, *p.answers[1], "5");
     CHECK_FALSE(wrong.correct);
-    CHECK(wrong.feedback == "not quite: the engine has 7.5 m/s (you were 33.3333 % off)");
+    CHECK(wrong.feedback == "not quite: 33.3 % too low; try again, or skip to see the engine's value");
+    CHECK(lessons::check_answer(q, *p.answers[1], "7.6").feedback == "right: the engine has 7.5 m/s (you were 1.33 % off)");
     CHECK_THROWS_AS(lessons::check_answer(q, *p.answers[1], "seven"), io::InputError);
 }
 
@@ -238,24 +240,31 @@ TEST_CASE("validate checks a lesson file with its run") {
 
 }  // namespace impulse::test
 
-#include "gui/ui_state.hpp"
+#include "lessons/lesson_run.hpp"
+#include "lessons/mask.hpp"
 
 namespace impulse::test {
 
 TEST_CASE("an open question hides its quantity until the student answers it") {
     TempDir dir;
     const auto file = dir.write("01-test.md", lesson_text(good_steps, good_sections));
-    lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(file));
-    gui::UiState state;
-    state.lesson = gui::LessonState{&prepared, 0, {}, {}, nullptr, std::nullopt};
-    state.lesson->verdicts.resize(prepared.places.size());
-    gui::go_to_lesson_step(prepared.session, state, 0);
-    CHECK(gui::hidden_quantity(state, prepared.session).empty());  // the first step asks nothing
-    gui::go_to_lesson_step(prepared.session, state, 1);
-    CHECK(*prepared.session.cursor() == prepared.places[1]);
-    CHECK(gui::hidden_quantity(state, prepared.session) == "desired_delta_velocity");
-    state.lesson->verdicts[1] = lessons::check_answer(*prepared.lesson.steps[1].question, *prepared.answers[1], "7.5");
-    CHECK(gui::hidden_quantity(state, prepared.session).empty());
+    const lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(file));
+    const Trace& trace = prepared.session.trace();
+    const auto reaches = lessons::question_reaches(prepared, trace);
+    lessons::LessonRun run(prepared, nullptr, std::nullopt);
+    // The desired Δv row of the velocity iteration (step 1's place), and of the contact as prepared.
+    explain::Row desired;
+    desired.key = "desired_delta_velocity";
+    const inspect::Cursor iteration = prepared.places[1], preparation{0, inspect::Stage::preparation, 0, 4};
+    const lessons::Mask open(reaches, run.open(), trace);
+    CHECK(open.hides_row(iteration, desired));
+    CHECK(open.hides_row(preparation, desired));
+    CHECK(open.hides_value(preparation, 0, "desired_delta_velocity"));
+    run.go_to(1);
+    CHECK_FALSE(run.answer("5").correct);  // a wrong answer leaves it hidden
+    CHECK(lessons::Mask(reaches, run.open(), trace).hides_row(iteration, desired));
+    CHECK(run.answer("7.5").correct);
+    CHECK_FALSE(lessons::Mask(reaches, run.open(), trace).hides_row(iteration, desired));
 }
 
 }  // namespace impulse::test

@@ -150,6 +150,9 @@ void add_lesson(CLI::App& app, LessonOptions& o) {
         "Example: impulse-lab lesson 1");
     lesson->add_option("N", o.number, "Lesson number")->check(whole_number(1, 99));
     lesson->add_flag("--headless", o.headless, "Print the lesson as text; write its trace and a PNG per step");
+    lesson->add_flag("--text", o.text,
+                     "Take the lesson in this terminal: it asks each question and waits (without a terminal to read "
+                     "from, it prints the lesson with the answers)");
     lesson->add_option("--out", o.out, "Folder for the headless lesson's files (default lesson-NN)");
     lesson->add_option("--lessons", o.lessons_folder, "Folder of lesson files (default: the repository's lessons/)");
     lesson->add_option("--size", o.size, "Window or image size WxH in pixels (default 1280x800)");
@@ -239,7 +242,8 @@ std::string one_line(const std::string& text) {
 
 }  // namespace
 
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal) {
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal,
+        std::istream* terminal_in) {
     CLI::App app{"Impulse Lab: step through rigid-body collision resolution (Millington, ch. 14)", "impulse-lab"};
     app.set_version_flag("--version", version_text);
     app.require_subcommand(1);
@@ -288,7 +292,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         if (app.got_subcommand("resolve")) return resolve_command(resolve, out, err);
         if (app.got_subcommand("run")) return run_command(run_options, out, err, err_is_terminal ? &err : nullptr);
         if (app.got_subcommand("inspect")) return inspect_command(inspect, out, err);
-        if (app.got_subcommand("lesson")) return lesson_command(lesson, out, err);
+        if (app.got_subcommand("lesson")) {
+            lesson.terminal = terminal_in;
+            return lesson_command(lesson, out, err);
+        }
         if (app.got_subcommand("worksheet")) return worksheet_command(worksheet, out, err);
         if (app.got_subcommand("diff")) return diff_command(diff, out, err);
         if (app.got_subcommand("bench"))

@@ -2,6 +2,7 @@
 // The impulse-lab command line. Runnable in-process so tests can check exit codes, messages and files
 // without spawning the program.
 
+#include <istream>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -15,7 +16,9 @@ inline constexpr int exit_interrupted = 130;  // `run` stopped by Ctrl-C (SIGTER
 inline constexpr int exit_non_finite = 3; // `run`: a body's state became NaN or infinite; the frames before it
                                           // are written
 
-// `args` excludes the program name. `err_is_terminal` allows a progress bar on `err` for long runs.
-int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal = false);
+// `args` excludes the program name. `err_is_terminal` allows a progress bar on `err` for long runs;
+// `terminal_in` is standard input when it is a terminal a lesson may ask questions on (null: never wait).
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal = false,
+        std::istream* terminal_in = nullptr);
 
 }  // namespace impulse::cli

@@ -5,6 +5,7 @@
 #include "model/script.hpp"
 #include "model/session.hpp"
 
+#include <istream>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -57,6 +58,8 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
 struct LessonOptions {
     std::optional<int> number;  // none: list the lessons
     bool headless = false;
+    bool text = false;                 // in the terminal: interactive when `terminal` is given, else annotated
+    std::istream* terminal = nullptr;  // standard input when it is a terminal (the lesson may then ask and wait)
     std::optional<std::string> out;             // folder for the headless lesson's trace and screenshots
     std::optional<std::string> lessons_folder;  // default: the repository's lessons/
     std::optional<std::string> size;
@@ -64,7 +67,8 @@ struct LessonOptions {
     std::optional<std::string> screenshot;  // as inspect's: a PNG at the end, then the window closes
 };
 
-// Lists the lessons with the student's progress, or opens one (a window, or text and PNGs headless).
+// Lists the lessons with the student's progress, or opens one: in a window; interactively in the terminal
+// (--text, or no display) when standard input is one; else as annotated text (with its PNGs unless --text).
 int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream& err);
 
 // A --script file's actions; throws FileError naming the file and line.

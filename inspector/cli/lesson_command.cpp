@@ -12,13 +12,24 @@
 #include "io/input_error.hpp"
 #include "lessons/lesson.hpp"
 #include "lessons/progress.hpp"
+#include "lessons/text_lesson.hpp"
 #include "model/script.hpp"
 
 #include <cstdio>
 
+#include <sys/ioctl.h>
+#include <unistd.h>
+
 namespace impulse::cli {
 
 namespace {
+
+// Columns of the terminal the lesson is written to (100 when it is not one).
+int terminal_width() {
+    winsize size{};
+    if (::ioctl(STDOUT_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 0) return size.ws_col;
+    return 100;
+}
 
 std::filesystem::path lessons_folder(const LessonOptions& options) {
     return options.lessons_folder ? std::filesystem::path(*options.lessons_folder)
@@ -36,50 +47,25 @@ int list_lessons(const LessonOptions& options, const lessons::Progress& progress
         try {
             const lessons::Lesson lesson = lessons::read_lesson(file);
             const int questions = lessons::question_count(lesson);
-            int answered = 0, right = 0;
+            std::optional<lessons::Tally> tally;
             if (const auto p = progress.lessons.find(lesson.name); p != progress.lessons.end())
-                for (const auto& [id, record] : p->second.answers) ++answered, right += record.correct ? 1 : 0;
+                tally = lessons::tally(p->second);
             // Padded by what a terminal shows, not by bytes: titles hold symbols such as ×.
             const std::size_t width = explain::display_width(lesson.title);
             char line[96];
             std::snprintf(line, sizeof line, " %2zu steps, %d questions   ", lesson.steps.size(), questions);
             out << (lesson.number < 10 ? "   " : "  ") << lesson.number << "  " << lesson.title
                 << std::string(width < 60 ? 60 - width : 1, ' ') << line;
-            if (answered == 0)
+            if (!tally)
                 out << "not started\n";
             else
-                out << "answered " << answered << " of " << questions << ", " << right << " right\n";
+                out << lessons::tally_text(*tally) << '\n';
         } catch (const FileError& e) {
             err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
             status = exit_bad_input;
         }
     }
     return status;
-}
-
-// The lesson as text: each step's place, text, question, the step's table, and the engine's answer.
-void write_lesson_text(std::ostream& out, const lessons::PreparedLesson& prepared) {
-    const lessons::Lesson& lesson = prepared.lesson;
-    out << "Lesson " << lesson.number << " · " << lesson.title << "\n(" << lesson.file.string() << ", scene "
-        << lesson.scene.lexically_normal().string() << ")\n";
-    if (!lesson.introduction.empty()) out << '\n' << lesson.introduction << '\n';
-    const Trace& trace = prepared.session.trace();
-    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
-        const lessons::Step& step = lesson.steps[i];
-        const inspect::Cursor& place = prepared.places[i];
-        out << "\n── Step " << i + 1 << " of " << lesson.steps.size() << " · " << inspect::describe(trace, place)
-            << " ──\n\n"
-            << step.text << '\n';
-        if (step.question) {
-            out << "\nQuestion: " << step.question->prompt << '\n';
-            for (std::size_t o = 0; o < step.question->options.size(); ++o)
-                out << "  " << o + 1 << ". " << step.question->options[o].label << '\n';
-        }
-        const std::vector<explain::StepTable> tables = inspect::step_tables(trace, place);
-        out << '\n';
-        explain::write_table(out, tables[static_cast<std::size_t>(place.step)]);
-        if (step.question) out << "Answer (the engine's): " << prepared.answers[i]->shown << '\n';
-    }
 }
 
 }  // namespace
@@ -90,6 +76,14 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
     if (progress_path) loaded = lessons::load_progress(*progress_path);
     if (!loaded.note.empty()) err << "impulse-lab: note: " << loaded.note << '\n';
     if (!options.number) return list_lessons(options, loaded.progress, out, err);
+    if (options.text && (options.headless || options.script || options.screenshot || options.out || options.size))
+        throw io::InputError("--text", std::string("takes the lesson in the terminal; ") +
+                                           (options.headless     ? "--headless"
+                                            : options.script     ? "--script"
+                                            : options.screenshot ? "--screenshot"
+                                            : options.out        ? "--out"
+                                                                 : "--size") +
+                                           " is for the window and its pictures");
 
     std::optional<std::filesystem::path> file;
     for (const std::filesystem::path& f : lessons::lesson_files(lessons_folder(options)))
@@ -99,13 +93,14 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
                                            lessons_folder(options).string() + " (impulse-lab lesson lists them)");
     lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(*file));
 
+    const bool window = !options.text && !options.headless && gui::display_available();
     gui::InspectorRun run;
     if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
     run.lesson = &prepared;
     run.progress = &loaded.progress;
     run.progress_file = progress_path;
-    run.headless = options.headless || !gui::display_available();
-    if (!run.headless) {
+    run.headless = !window;
+    if (window) {
         if (options.script) {
             run.script_name = *options.script;
             run.script = read_script_file(*options.script);
@@ -117,6 +112,20 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
         throw io::InputError(options.script ? "--script" : "--screenshot",
                              "is for the lesson's window; headless, every step is written as a PNG to --out");
 
+    // A terminal to read from: the lesson asks and waits, and saves progress as the window does.
+    if (options.terminal && !options.headless) {
+        if (!options.text)
+            err << "impulse-lab: note: no display (DISPLAY is not set): the lesson runs in this terminal "
+                   "(--headless prints it with its answers and pictures)\n";
+        lessons::LessonRun taking(prepared, progress_path ? &loaded.progress : nullptr, progress_path);
+        lessons::take_lesson(taking, *options.terminal, out, terminal_width());
+        return 0;
+    }
+    // Nothing to read answers from: the lesson with its answers, at once, never waiting.
+    if (options.text) {
+        lessons::write_annotated_lesson(out, prepared);
+        return 0;
+    }
     if (!options.headless)
         err << "impulse-lab: note: no display (DISPLAY is not set): the lesson is shown as text, with its "
                "pictures in a folder\n";
@@ -127,7 +136,7 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
     std::filesystem::create_directories(folder, error);
     if (error) throw io::InputError("--out", "cannot create " + folder.string() + ": " + error.message());
 
-    write_lesson_text(out, prepared);
+    lessons::write_annotated_lesson(out, prepared);
     run.script_name = "lesson";
     for (std::size_t i = 0; i < prepared.places.size(); ++i) {
         char name[96];

@@ -38,6 +38,16 @@ bool set(const char* name) {
 
 }  // namespace
 
+std::string set_up_imgui() {
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // never write imgui.ini into the user's working directory
+    io.LogFilename = nullptr;
+    const std::string note = load_fonts(io);
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().WindowRounding = 0.0f;
+    return note;
+}
+
 bool display_available() {
     return set("DISPLAY") || set("WAYLAND_DISPLAY");
 }
@@ -92,13 +102,8 @@ Display::Display(const DisplayOptions& options) : headless_(options.headless), g
 
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;  // never write imgui.ini into the user's working directory
-    io.LogFilename = nullptr;
-    font_note_ = load_fonts(io);
-    ImGui::StyleColorsDark();
+    font_note_ = set_up_imgui();
     ImGuiStyle& style = ImGui::GetStyle();
-    style.WindowRounding = 0.0f;
     // The panels tile the screen, so their background is the cleared screen itself: ImGui skips a fully
     // transparent background, which saves shading every pixel twice (llvmpipe renders headless frames on
     // the CPU, where that is a third of the frame time).

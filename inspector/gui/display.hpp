@@ -25,6 +25,10 @@ struct DisplayOptions {
     std::string title = "Impulse Lab";
 };
 
+// The fonts and style of the inspector, in the current ImGui context (Display does this; so does the layout
+// check, which lays the window out without one). Returns the fonts' note (empty when they were found).
+std::string set_up_imgui();
+
 // Whether a window could be shown here: false when neither DISPLAY nor WAYLAND_DISPLAY is set.
 bool display_available();
 

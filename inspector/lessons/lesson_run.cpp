@@ -11,6 +11,7 @@ LessonRun::LessonRun(const PreparedLesson& lesson, Progress* progress, std::opti
     const std::vector<Step>& steps = lesson.lesson.steps;
     states_.assign(steps.size(), QuestionState::none);
     feedback_.assign(steps.size(), {});
+    tries_.assign(steps.size(), 0);
     for (std::size_t i = 0; i < steps.size(); ++i)
         if (steps[i].question) states_[i] = QuestionState::open;
     if (!progress_) return;
@@ -22,6 +23,7 @@ LessonRun::LessonRun(const PreparedLesson& lesson, Progress* progress, std::opti
         const auto saved = found->second.answers.find(steps[i].id);
         if (!steps[i].question || saved == found->second.answers.end()) continue;
         const AnswerRecord& a = saved->second;
+        tries_[i] = a.tries;
         if (a.skipped) {
             states_[i] = QuestionState::skipped;
             feedback_[i] = skipped_text(*lesson.answers[i]);
@@ -57,6 +59,7 @@ Verdict LessonRun::answer(std::string_view typed) {
     if (states_[i] != QuestionState::open) return verdict;  // already settled: a check, not a new answer
     states_[i] = verdict.correct ? QuestionState::answered : QuestionState::open;
     feedback_[i] = verdict.feedback;
+    ++tries_[i];
     if (AnswerRecord* r = record(step_)) {
         r->answer = std::string(typed);
         r->correct = verdict.correct;
@@ -85,6 +88,19 @@ void LessonRun::answered_before(int step) {
         states_[k] = i < step ? QuestionState::answered : QuestionState::open;
         feedback_[k] = i < step ? "right: the engine has " + lesson_->answers[k]->shown : std::string();
     }
+}
+
+Tally LessonRun::tally() const {
+    Tally t;
+    for (std::size_t i = 0; i < states_.size(); ++i) {
+        if (states_[i] == QuestionState::skipped)
+            ++t.skipped;
+        else if (states_[i] == QuestionState::answered)
+            ++(tries_[i] <= 1 ? t.first_try : t.after_retries);
+        else if (states_[i] == QuestionState::open && tries_[i] > 0)
+            ++t.open;
+    }
+    return t;
 }
 
 std::vector<bool> LessonRun::open() const {

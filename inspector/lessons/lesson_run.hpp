@@ -53,6 +53,9 @@ public:
     // headless pictures show each step as a student who answered each question in turn sees it.
     void answered_before(int step);
 
+    // How the questions went so far (tries counted since the lesson was opened, and before when resumed).
+    Tally tally() const;
+
     // Per step: whether its question is open, for the mask.
     std::vector<bool> open() const;
 
@@ -69,6 +72,7 @@ private:
     int step_ = 0;
     std::vector<QuestionState> states_;
     std::vector<std::string> feedback_;
+    std::vector<int> tries_;
     std::string save_problem_;
 };
 

@@ -1,0 +1,30 @@
+// The lesson window fits: every step of every lesson, laid out at 1024x768, 1280x800 and 1920x1080 as the
+// student meets it, after a wrong answer, the right one and a skip, has every text and control of the lesson
+// panel inside the window, read from ImGui's own item rectangles.
+
+#include "gui/layout_check.hpp"
+#include "lessons/lesson.hpp"
+
+#include <doctest/doctest.h>
+
+namespace impulse::test {
+
+TEST_CASE("every step of every lesson fits the lesson panel at 1024x768, 1280x800 and 1920x1080") {
+    const std::vector<std::filesystem::path> files = lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
+    REQUIRE(files.size() == 12);
+    int states = 0, items = 0;
+    for (const std::filesystem::path& file : files) {
+        lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(file));
+        for (const auto& [width, height] : {std::pair{1024, 768}, std::pair{1280, 800}, std::pair{1920, 1080}}) {
+            const gui::LayoutReport report = gui::check_lesson_layout(lesson, width, height);
+            INFO(file.filename().string() << " at " << width << "x" << height);
+            for (const std::string& problem : report.problems) FAIL_CHECK(problem);
+            CHECK(report.states >= static_cast<int>(lesson.lesson.steps.size()));
+            states += report.states;
+            items += report.items;
+        }
+    }
+    MESSAGE(states << " step states and " << items << " items checked");
+}
+
+}  // namespace impulse::test

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cassert>
 #include <set>
+#include <unordered_map>
 
 namespace impulse::explain {
 
@@ -201,9 +202,14 @@ const std::vector<Annotation>& vocabulary() {
 }
 
 const Annotation* find_annotation(std::string_view quantity) {
-    for (const Annotation& a : rows)
-        if (a.quantity == quantity) return &a;
-    return nullptr;
+    // Looked up for every row of every table the window draws: indexed once.
+    static const std::unordered_map<std::string_view, const Annotation*> index = [] {
+        std::unordered_map<std::string_view, const Annotation*> names;
+        for (const Annotation& a : rows) names.emplace(a.quantity, &a);
+        return names;
+    }();
+    const auto found = index.find(quantity);
+    return found == index.end() ? nullptr : found->second;
 }
 
 const Annotation& annotation(std::string_view quantity) {

@@ -25,12 +25,12 @@ std::string item_label(const Trace& trace, const lessons::Mask& mask, int f, Sta
     }
     if (stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[i];
-        const bool secret = mask.hides_value(at, it.contact, "penetration");
+        const bool secret = mask.hides_value(at, it.contact, "penetration", it.penetration);
         return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) +
                (secret ? "" : " (" + explain::number(it.penetration) + " m)");
     }
     const VelocityIteration& it = frame.velocity.iterations[i];
-    const bool secret = mask.hides_value(at, it.contact, "desired_delta_velocity");
+    const bool secret = mask.hides_value(at, it.contact, "desired_delta_velocity", it.desired_delta_velocity);
     const std::string value = secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)";
     if (it.sweep)
         return explain::sweep_text(*it.sweep, trace.scene.settings) + " → contact " + std::to_string(it.contact) +

@@ -211,13 +211,16 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     std::vector<char> concealed(after.size(), 0);
     for (std::size_t b = 0; b < after.size(); ++b) {
         const int body = static_cast<int>(b);
-        if (mask.hides_body(*v.cursor, body, false)) {
-            const inspect::Cursor until = *mask.body_shown_until(*v.cursor, body);
-            const BodyState last = until.frame == v.cursor->frame ? inspect::bodies_at(trace, until).before[b]
-                                                                   : frame.bodies_before[b];
+        if (mask.hides_body(*v.cursor, body, false, v.bodies.before[b])) {
+            // Where a hidden change left it last shown; a body hidden only for its values (equal to an
+            // answer) is drawn where it is, without its values anywhere.
+            const std::optional<inspect::Cursor> until = mask.body_shown_until(*v.cursor, body);
+            const BodyState last = !until                            ? v.bodies.before[b]
+                                   : until->frame == v.cursor->frame ? inspect::bodies_at(trace, *until).before[b]
+                                                                     : frame.bodies_before[b];
             after[b] = before_shown[b] = last;
             concealed[b] = 1;
-        } else if (mask.hides_body(*v.cursor, body, true)) {
+        } else if (mask.hides_body(*v.cursor, body, true, v.bodies.after[b])) {
             after[b] = v.bodies.before[b];
             concealed[b] = 1;
         }
@@ -310,10 +313,10 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
         if (c.contact == current) current_penetration = row.penetration;
         const ImVec2 p = project(c.point);
         // A depth under a pixel and a half is invisible at this zoom: not drawn; nor one a question hides.
-        if (row.penetration * project.scale > 1.5 && !mask.hides_value(*v.cursor, c.contact, "penetration"))
+        if (row.penetration * project.scale > 1.5 && !mask.hides_value(*v.cursor, c.contact, "penetration", row.penetration))
             pen.line(p, project(c.point - c.normal * row.penetration), IM_COL32(240, 70, 60, 255), 2.0f);
         const bool show_arrow = (v.contacts.size() <= crowded || near_current(c)) &&
-                                !mask.hides_value(*v.cursor, c.contact, "impulse_world");
+                                !mask.hides_value(*v.cursor, c.contact, "impulse_world", row.impulse_so_far.norm());
         if (show_arrow && v.largest_impulse > 0 && row.impulse_so_far.norm() > 0) {
             const Vec3 direction = project.view * row.impulse_so_far;
             const float k = impulse_pixels / static_cast<float>(v.largest_impulse);
@@ -347,7 +350,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
             }
         }
         const std::string label =
-            mask.hides_value(*v.cursor, current, "penetration")
+            mask.hides_value(*v.cursor, current, "penetration", current_penetration)
                 ? "contact " + std::to_string(current)
                 : "contact " + std::to_string(current) + " · penetration " +
                       explain::number(current_penetration, std::abs(c->penetration)) + " m";

@@ -115,7 +115,7 @@ void draw_contacts(inspect::Session& session, UiState& state) {
             // Each value at the scale of the contact's own value as prepared: what rounding leaves of a
             // resolved penetration is 0.
             const auto cell = [&](std::string_view key, double value, double scale) {
-                if (mask.hides_value(*v.cursor, row.contact, key)) {
+                if (mask.hides_value(*v.cursor, row.contact, key, value)) {
                     ImGui::TextUnformatted("?");
                     return;
                 }
@@ -159,8 +159,8 @@ void draw_bodies(const inspect::Session& session, UiState& state) {
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const auto b = static_cast<std::size_t>(i);
-            const bool hide_before = mask.hides_body(*v.cursor, i, false);
-            const bool hide_after = mask.hides_body(*v.cursor, i, true);
+            const bool hide_before = mask.hides_body(*v.cursor, i, false, v.bodies.before[b]);
+            const bool hide_after = hide_before || mask.hides_body(*v.cursor, i, true, v.bodies.after[b]);
             const BodyState& before = v.bodies.before[b];
             const BodyState& after = hide_after ? before : v.bodies.after[b];
             ImGui::TableNextRow();
@@ -206,7 +206,7 @@ void draw_plots(const inspect::Session& session, UiState& state) {
         std::vector<char> shown(c.worst.size(), 1);
         for (std::size_t i = 0; i < c.worst.size(); ++i) {
             const inspect::Cursor item{v.cursor->frame, c.stage, static_cast<int>(i), 0};
-            shown[i] = !state.mask.hides_value(item, inspect::contact_at(trace, item), key);
+            shown[i] = !state.mask.hides_value(item, inspect::contact_at(trace, item), key, c.worst[i]);
         }
         if (k > 0) ImGui::SameLine();
         ImGui::BeginGroup();

@@ -6,7 +6,9 @@
 #include "lessons/trace_path.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <cstdlib>
 
 namespace impulse::lessons {
 
@@ -18,7 +20,7 @@ using inspect::Stage;
 
 // What a value shows about itself only, never about a hidden change: indices, settings, what a contact is given.
 bool fixed_row(std::string_view key) {
-    static const std::set<std::string_view> fixed{"iteration",
+    static const std::set<std::string_view, std::less<>> fixed{"iteration",
                                                   "contact",
                                                   "sweep",
                                                   "epsilon",
@@ -72,14 +74,14 @@ std::vector<std::string> paths_like(const json& item, const std::string& path) {
     return paths;
 }
 
-void add_with_consumers(std::set<std::string>& keys, std::string_view name) {
+void add_with_consumers(std::set<std::string, std::less<>>& keys, std::string_view name) {
     keys.insert(std::string(name));
     for (std::string_view c : explain::consumers(name)) keys.insert(std::string(c));
 }
 
 // A question asked before the step that computes its quantity looks ahead: the inputs that step computes on
 // the way (the parts that add up to it) would hand the answer over, so they are hidden too.
-void add_same_step_inputs(std::set<std::string>& keys, std::string_view quantity) {
+void add_same_step_inputs(std::set<std::string, std::less<>>& keys, std::string_view quantity) {
     const explain::Annotation& a = explain::annotation(quantity);
     std::vector<std::string_view> todo = explain::inputs_of(a);
     while (!todo.empty()) {
@@ -105,8 +107,29 @@ bool looks_ahead(const Trace& trace, const Cursor& place, std::string_view quant
 
 // Whether what a question hides changes the bodies: an impulse or a move, or an update (the bodies' new
 // state gives a contact's velocity or penetration after it in one step).
-bool changes_bodies(const std::set<std::string>& keys) {
+bool changes_bodies(const std::set<std::string, std::less<>>& keys) {
     return keys.count("bodies_after") || keys.count("velocity_update") || keys.count("penetration_update");
+}
+
+// The numbers in a value as shown with every digit ("(0, -0.5, 0) m", "v_s -2 → 1 m/s").
+std::vector<double> numbers_in(const std::string& text) {
+    std::vector<double> found;
+    for (std::size_t i = 0; i < text.size();) {
+        const char c = text[i];
+        const bool starts = std::isdigit(static_cast<unsigned char>(c)) ||
+                            ((c == '-' || c == '.') && i + 1 < text.size() &&
+                             std::isdigit(static_cast<unsigned char>(text[i + 1])));
+        // A digit inside a name ("t₁", "contact 3" is text, not a value) is not a value's start.
+        const bool inside_word = i > 0 && (std::isalpha(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_');
+        if (!starts || inside_word) {
+            ++i;
+            continue;
+        }
+        char* end = nullptr;
+        found.push_back(std::strtod(text.c_str() + i, &end));
+        i = std::max(i + 1, static_cast<std::size_t>(end - text.c_str()));
+    }
+    return found;
 }
 
 }  // namespace
@@ -137,6 +160,16 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
             continue;
         }
         if (looks_ahead(trace, *place, quantity)) add_same_step_inputs(reach.keys, quantity);
+        // Everything the answer is computed from: the student works from those, so they stay in view even
+        // when one equals the answer.
+        std::vector<std::string_view> todo = explain::inputs_of(explain::annotation(quantity));
+        while (!todo.empty()) {
+            const std::string_view name = todo.back();
+            todo.pop_back();
+            if (!reach.inputs.insert(std::string(name)).second) continue;
+            if (const explain::Annotation* a = explain::find_annotation(name))
+                for (std::string_view next : explain::inputs_of(*a)) todo.push_back(next);
+        }
         reach.frame = place->frame;
         const int own = inspect::contact_at(trace, *place);
         reach.contacts.insert(own);
@@ -151,6 +184,9 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
                 const double value = here->get<double>();
                 const double allowed = std::max(q.tolerance.relative.value_or(0.0) * std::abs(value),
                                                 q.tolerance.absolute.value_or(0.0));
+                reach.answer = value;
+                reach.allowed = allowed;
+                reach.unit = explain::annotation(quantity).unit;
                 for (const Cursor& item : items) {
                     const json& j = item_json(*document, item);
                     for (const std::string& path : paths_like(j, q.value)) {
@@ -213,6 +249,17 @@ bool Mask::touches_hidden_body(const Cursor& at, int contact, bool including) co
     return false;
 }
 
+bool Mask::equals_an_answer(std::string_view key, double value, std::string_view unit) const {
+    const explain::Annotation* a = explain::find_annotation(key);
+    if (unit.empty() && a) unit = a->unit;
+    if (unit.empty()) return false;
+    for (const QuestionReach& r : reaches_)
+        if (r.answer && r.unit == unit && std::abs(*r.answer) > r.allowed && std::abs(value - *r.answer) <= r.allowed &&
+            !r.inputs.count(key))
+            return true;
+    return false;
+}
+
 bool Mask::hides_row(const Cursor& item, const explain::Row& row) const {
     if (reaches_.empty() || row.key.empty()) return false;
     const int contact = inspect::contact_at(*trace_, item);
@@ -220,22 +267,38 @@ bool Mask::hides_row(const Cursor& item, const explain::Row& row) const {
         const bool here = r.frame < 0 || (r.frame == item.frame && r.contacts.count(contact));
         if (here && r.keys.count(row.key)) return true;
     }
+    // Any value in it equal to an open answer (read only when an answer is in the row's unit).
+    const explain::Annotation* a = explain::find_annotation(row.key);
+    if (a && !fixed_row(row.key) &&
+        std::any_of(reaches_.begin(), reaches_.end(), [&](const QuestionReach& r) { return r.answer && r.unit == a->unit; }))
+        for (double v : numbers_in(row.exact))
+            if (equals_an_answer(row.key, v)) return true;
     // Computed from a body a hidden change moved earlier: everything but what the item is given.
     return !fixed_row(row.key) && touches_hidden_body(item, contact, false);
 }
 
-bool Mask::hides_value(const Cursor& at, int contact, std::string_view key) const {
+bool Mask::hides_value(const Cursor& at, int contact, std::string_view key, double value) const {
     if (reaches_.empty()) return false;
     for (const QuestionReach& r : reaches_) {
         const bool here = r.frame < 0 || (r.frame == at.frame && r.contacts.count(contact));
-        if (here && r.keys.count(std::string(key))) return true;
+        if (here && r.keys.count(key)) return true;
     }
-    return touches_hidden_body(at, contact, false);
+    return equals_an_answer(key, value, key == "impulse_world" ? "N·s" : "") || touches_hidden_body(at, contact, false);
 }
 
 bool Mask::hides_bodies_of(int frame, int contact) const {
     for (const QuestionReach& r : reaches_)
         if (r.keys.count("bodies") && (r.frame < 0 || (r.frame == frame && r.contacts.count(contact)))) return true;
+    return false;
+}
+
+bool Mask::hides_body(const Cursor& at, int body, bool after, const BodyState& state) const {
+    if (hides_body(at, body, after)) return true;
+    for (int k = 0; k < 3; ++k)
+        if (equals_an_answer("body_position", state.position[k]) ||
+            equals_an_answer("body_velocity", state.velocity[k]) ||
+            equals_an_answer("body_angular_velocity", state.angular_velocity[k]))
+            return true;
     return false;
 }
 

@@ -9,7 +9,10 @@
 //   - in every item about its contact, and about any contact whose same quantity has the answer's value
 //     (the lesson's three objects all bounce back at the same speed);
 //   - and when what it hides changes the bodies (an impulse, a move, an update), the state of the bodies
-//     that change moved, from that item on, and every later item and contact value on those bodies.
+//     that change moved, from that item on, and every later item and contact value on those bodies;
+//   - and anywhere, any value equal to its answer in the answer's unit (the resting ball's velocity is the
+//     landing ball's velocity from acceleration), unless the answer is computed from it or is 0 (zeros are
+//     everywhere and give nothing away).
 // Pure functions of the lesson and a trace: the window, the terminal and the tests all ask the same mask.
 
 #include "lessons/lesson.hpp"
@@ -27,10 +30,15 @@ namespace impulse::lessons {
 struct QuestionReach {
     int frame = -1;              // the frame index its place is in
     std::set<int> contacts;      // its contact and those whose same quantity has the answer's value
-    std::set<std::string> keys;  // vocabulary names hidden in those contacts' items
+    std::set<std::string, std::less<>> keys;  // vocabulary names hidden in those contacts' items
     // The bodies a hidden change moves, each with the first item (time order) that moves it: from there on
     // its state, and everything computed from it, is hidden.
     std::map<int, inspect::Cursor> bodies;
+    // A predict question's answer, to hide any value equal to it.
+    std::optional<double> answer;
+    double allowed = 0.0;                    // its tolerance
+    std::string unit;                        // its unit
+    std::set<std::string, std::less<>> inputs;  // what it is computed from (directly or not): shown all the same
 };
 
 // One per step of the lesson (none for a step without a question), worked out on `trace`: the lesson's own
@@ -50,11 +58,16 @@ public:
     bool hides_row(const inspect::Cursor& item, const explain::Row& row) const;
     // A contact's bookkeeping value as the contacts list, the navigator and the plots show it just before
     // the item `at` stands on: "penetration", "desired_delta_velocity" or "impulse_world" (the impulse so far).
-    bool hides_value(const inspect::Cursor& at, int contact, std::string_view key) const;
+    bool hides_value(const inspect::Cursor& at, int contact, std::string_view key, double value) const;
     // Which bodies a contact joins ("ball / world").
     bool hides_bodies_of(int frame, int contact) const;
-    // A body's state just before (after = false) or just after the item `at` stands on.
+    // A body's state just before (after = false) or just after the item `at` stands on; `state` is that state.
+    bool hides_body(const inspect::Cursor& at, int body, bool after, const BodyState& state) const;
+    // Whether a body's state at `at` is hidden for a hidden change (whatever its values).
     bool hides_body(const inspect::Cursor& at, int body, bool after) const;
+    // A value of `key` (in that quantity's unit, or `unit` when given) equal to an open answer it does not
+    // feed into.
+    bool equals_an_answer(std::string_view key, double value, std::string_view unit = {}) const;
     // The item before which a hidden body was last shown, to draw it where it was; none when it is not hidden
     // at `at`.
     std::optional<inspect::Cursor> body_shown_until(const inspect::Cursor& at, int body) const;

@@ -218,7 +218,7 @@ TEST_CASE("impulse-lab lesson lists the lessons with the progress kept in the co
     const CliResult r = run_cli({"lesson", "--lessons", lessons_dir.string()});
     CHECK(r.code == 0);
     CHECK(r.out.find(" 1  A test ") != std::string::npos);
-    CHECK(r.out.find("2 steps, 1 questions   answered 1 of 1, 1 right") != std::string::npos);
+    CHECK(r.out.find("2 steps, 1 questions   1 right at the first try") != std::string::npos);
 
     const CliResult missing = run_cli({"lesson", "7", "--lessons", lessons_dir.string()});
     CHECK(missing.code == 2);
@@ -259,7 +259,7 @@ TEST_CASE("an open question hides its quantity until the student answers it") {
     const lessons::Mask open(reaches, run.open(), trace);
     CHECK(open.hides_row(iteration, desired));
     CHECK(open.hides_row(preparation, desired));
-    CHECK(open.hides_value(preparation, 0, "desired_delta_velocity"));
+    CHECK(open.hides_value(preparation, 0, "desired_delta_velocity", 7.5));
     run.go_to(1);
     CHECK_FALSE(run.answer("5").correct);  // a wrong answer leaves it hidden
     CHECK(lessons::Mask(reaches, run.open(), trace).hides_row(iteration, desired));

@@ -11,6 +11,9 @@
 #include "io/trace_json.hpp"
 #include "lessons/lesson.hpp"
 
+#include <cctype>
+#include <filesystem>
+
 namespace impulse::cli {
 
 namespace {
@@ -19,8 +22,26 @@ std::string count(std::size_t n, std::string_view one, std::string_view many) {
     return std::to_string(n) + " " + std::string(n == 1 ? one : many);
 }
 
+// A Markdown file that is neither named nor made like a lesson (a folder's README.md): nothing to check, so
+// `validate lessons/*.md` checks the lessons and passes over the rest.
+bool other_markdown(const std::string& path) {
+    const std::string name = std::filesystem::path(path).filename().string();
+    const bool named = name.size() > 3 && std::isdigit(static_cast<unsigned char>(name[0])) &&
+                       std::isdigit(static_cast<unsigned char>(name[1])) && name[2] == '-';
+    if (named) return false;
+    std::string text;
+    try {
+        text = read_input_file(path, max_text_input_bytes);
+    } catch (const FileError&) {
+        return false;  // reported when it is read as a lesson
+    }
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    return first == std::string::npos || text.compare(first, 7, "```json") != 0;
+}
+
 std::string check_file(const std::string& path) {
     if (path.ends_with(".md")) {
+        if (other_markdown(path)) return "not a lesson (no NN- name, no ```json header): skipped";
         // A lesson: its header and sections, then its run, places and answers.
         const lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(path));
         const auto questions = static_cast<std::size_t>(lessons::question_count(lesson.lesson));

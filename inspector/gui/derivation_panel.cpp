@@ -68,6 +68,9 @@ Columns column_widths(const inspect::DerivationView& view, const std::vector<boo
         natural[value] = std::max(natural[value], natural[other]);
     }
     for (const inspect::ViewRow& r : view.rows) {
+        // Words of a formula or a meaning are split only when even their column's least width cannot hold them.
+        least[formula] = std::max(least[formula], std::min(widest_word(r.row.formula), 150.0f));
+        least[meaning] = std::max(least[meaning], std::min(widest_word(r.row.meaning), 120.0f));
         least[quantity] = std::max(least[quantity], ImGui::CalcTextSize(r.row.quantity.c_str()).x);
         least[equation] = std::max(least[equation], std::min(longest_line(r.row.equation), 90.0f));
         natural[formula] = std::max(natural[formula], longest_line(r.row.formula));

@@ -83,16 +83,29 @@ void wrapped_text(std::string_view text, float width) {
     ImGui::TextUnformatted(joined.c_str(), joined.c_str() + joined.size());
 }
 
-float widest_unbreakable(std::string_view text) {
-    float widest = 0.0f;
+namespace {
+
+template <typename Take>
+float widest(std::string_view text, Take take) {
+    float most = 0.0f;
     std::size_t start = 0;
     while (start < text.size()) {
         const std::size_t end = std::min(text.find_first_of(" \n", start), text.size());
         const std::string_view word = text.substr(start, end - start);
-        if (has_digit(word)) widest = std::max(widest, width_of(word));
+        if (take(word)) most = std::max(most, width_of(word));
         start = end + 1;
     }
-    return widest;
+    return most;
+}
+
+}  // namespace
+
+float widest_unbreakable(std::string_view text) {
+    return widest(text, has_digit);
+}
+
+float widest_word(std::string_view text) {
+    return widest(text, [](std::string_view) { return true; });
 }
 
 }  // namespace impulse::gui

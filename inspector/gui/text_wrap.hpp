@@ -19,5 +19,7 @@ void wrapped_text(std::string_view text, float width = 0.0f);
 // The widest word of `text` that is never split (one holding a digit), in pixels: a column narrower than
 // this would cut a number.
 float widest_unbreakable(std::string_view text);
+// The widest word of `text`, in pixels: a column at least this wide splits no word.
+float widest_word(std::string_view text);
 
 }  // namespace impulse::gui

@@ -9,6 +9,7 @@
 #include <imgui_impl_sdl.h>
 #include <stb_image_write.h>
 
+#include <algorithm>
 #include <cstdlib>
 
 namespace impulse::gui {
@@ -127,13 +128,27 @@ Display::~Display() {
 }
 
 bool Display::begin_frame(bool idle) {
-    if (idle && !headless_) SDL_WaitEventTimeout(nullptr, 250);
+    if (idle && !headless_ && deferred_.empty()) SDL_WaitEventTimeout(nullptr, 250);
     SDL_Event event;
-    had_events_ = false;
+    had_events_ = !deferred_.empty();
     pressed_keys_.clear();
+    // Key releases held back from the last frame: ImGui 1.86 reads whether a key is down once per frame, so
+    // a press and its release in one frame (a quick tap, or a test's synthetic keys) would never reach a
+    // widget (Enter in the answer field, Ctrl+A). The release comes a frame after its press instead.
+    std::vector<SDL_Event> releases;
+    releases.swap(deferred_);
+    for (SDL_Event& e : releases) ImGui_ImplSDL2_ProcessEvent(&e);
+    std::vector<SDL_Scancode> down;
     while (SDL_PollEvent(&event)) {
         had_events_ = true;
-        if (event.type == SDL_KEYDOWN) pressed_keys_.push_back(event.key.keysym.scancode);
+        if (event.type == SDL_KEYDOWN) {
+            pressed_keys_.push_back(event.key.keysym.scancode);
+            down.push_back(event.key.keysym.scancode);
+        }
+        if (event.type == SDL_KEYUP && std::find(down.begin(), down.end(), event.key.keysym.scancode) != down.end()) {
+            deferred_.push_back(event);
+            continue;
+        }
         ImGui_ImplSDL2_ProcessEvent(&event);
         if (event.type == SDL_QUIT) quit_ = true;
         if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&

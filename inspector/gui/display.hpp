@@ -9,6 +9,7 @@
 #include <vector>
 
 struct SDL_Window;
+union SDL_Event;
 
 namespace impulse::gui {
 
@@ -71,6 +72,7 @@ private:
     bool quit_ = false;
     bool had_events_ = false;
     std::vector<int> pressed_keys_;
+    std::vector<SDL_Event> deferred_;  // key releases passed to ImGui a frame after their press
     struct Colour {
         float x, y, z, w;
     } window_background_{};

@@ -211,7 +211,8 @@ void draw_question(inspect::Session& session, UiState& state) {
         l.focus_answer = false;
         ImGui::SetNextItemWidth(std::min(160.0f, ImGui::GetContentRegionAvail().x * 0.6f));
         if (ImGui::InputText("##answer", l.typed.data(), l.typed.size(),
-                             ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific))
+                             ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific |
+                                 ImGuiInputTextFlags_AutoSelectAll))  // a retry types over the last try
             check(session, state);
         record_item(state, "input");
         ImGui::SameLine();

@@ -5,6 +5,7 @@
 #include "cli/input_files.hpp"
 #include "io/input_error.hpp"
 #include "lessons/lesson.hpp"
+#include "lessons/lesson_run.hpp"
 #include "lessons/progress.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
@@ -193,6 +194,65 @@ TEST_CASE("progress survives a round trip and a corrupt file is kept aside and r
     for (const auto& entry : std::filesystem::directory_iterator(dir.file("cfg/impulse-lab")))
         kept += entry.path().filename().string().starts_with("progress.json.corrupt-") ? 1 : 0;
     CHECK(kept == 1);
+}
+
+TEST_CASE(
+    "a progress file written before skipping existed still loads, and progress counts right, retried and skipped") {
+    TempDir dir;
+    // As the previous version wrote it: no "skipped".
+    const auto file = dir.write("progress.json", R"({"format": "impulse-lab-progress", "version": 1, "lessons": {
+        "01-test": {"last_step": 1, "answers": {"desired": {"answer": "7.5", "correct": true, "tries": 1}}}}})");
+    const lessons::LoadedProgress old = lessons::load_progress(file);
+    REQUIRE(old.note.empty());
+    const lessons::AnswerRecord& desired = old.progress.lessons.at("01-test").answers.at("desired");
+    CHECK(desired.correct);
+    CHECK_FALSE(desired.skipped);
+
+    lessons::Progress progress = old.progress;
+    lessons::LessonProgress& p = progress.lessons.at("01-test");
+    p.answers["retried"] = {"3", true, 3, false};
+    p.answers["given-up"] = {"", false, 2, true};
+    p.answers["still-open"] = {"9", false, 1, false};
+    lessons::save_progress(file, progress);
+    const lessons::Progress back = lessons::load_progress(file).progress;
+    CHECK(back.lessons.at("01-test").answers.at("given-up").skipped);
+    const lessons::Tally t = lessons::tally(back.lessons.at("01-test"));
+    CHECK(t.first_try == 1);
+    CHECK(t.after_retries == 1);
+    CHECK(t.skipped == 1);
+    CHECK(t.open == 1);
+    CHECK(lessons::tally_text(t) ==
+          "1 right at the first try, 1 right after retries, 1 skipped, 1 tried, not yet right");
+    // A "skipped" that is not true or false is an error naming it.
+    dir.write("bad.json", R"({"format": "impulse-lab-progress", "version": 1, "lessons": {"x": {"last_step": 0,
+        "answers": {"a": {"answer": "", "correct": false, "tries": 0, "skipped": "yes"}}}}})");
+    CHECK_THROWS_WITH_AS(lessons::read_progress_text(cli::read_input_file(dir.file("bad.json").string())),
+                         doctest::Contains("skipped"), io::InputError);
+}
+
+TEST_CASE("a lesson run resumes each question as it stood, and a skip is saved as skipped") {
+    TempDir dir;
+    const auto file = dir.write("01-test.md", lesson_text(good_steps, good_sections));
+    const lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(file));
+    const auto saved = dir.file("cfg/progress.json");
+    lessons::Progress progress;
+    {
+        lessons::LessonRun run(prepared, &progress, saved);
+        run.go_to(1);
+        CHECK(run.waiting());
+        CHECK_FALSE(run.answer("6").correct);
+        run.skip();
+        CHECK(run.state(1) == lessons::QuestionState::skipped);
+        CHECK(run.feedback(1) == "skipped: the engine's answer is 7.5 m/s");
+    }
+    lessons::Progress reloaded = lessons::load_progress(saved).progress;
+    lessons::LessonRun again(prepared, &reloaded, saved);
+    CHECK(again.step() == 1);
+    CHECK(again.state(1) == lessons::QuestionState::skipped);
+    CHECK(again.open() == std::vector<bool>{false, false});
+    const lessons::AnswerRecord& r = reloaded.lessons.at("01-test").answers.at("desired");
+    CHECK(r.skipped);
+    CHECK(r.tries == 1);
 }
 
 TEST_CASE("a progress file larger than any we write is kept aside unread, and progress starts afresh") {

@@ -139,8 +139,10 @@ std::string yes_no(bool value, std::string_view yes, std::string_view no) {
 }
 
 // How a velocity iteration's desired Δv was made. `accumulating`: projected Gauss-Seidel or soft step, whose
-// Δv is the rest of the way to the visit's target; `bias`: the Baumgarte bias is in it (worst-first, sweeps).
-std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bool bias) {
+// Δv is the rest of the way to the visit's target (a warm start's: what re-applying the total does);
+// `bias`: the Baumgarte bias is in it (worst-first, sweeps).
+std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bool warm_start, bool bias) {
+    if (accumulating && warm_start) return "(K λ)_n: the normal change the re-applied total makes";
     if (accumulating) return "Δv = target − v_s (target: the bounce judged at preparation, + position_bias)";
     const bool plain = !d.velocity_from_acceleration_applied && !d.restitution_cutoff_applied;
     std::string formula = plain ? "Δv = −(1 + c) v_s" : "Δv = −v_s − c (v_s − v_acc)";
@@ -148,7 +150,8 @@ std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bo
     return formula;
 }
 
-StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false, bool bias = false) {
+StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false, bool warm_start = false,
+                        bool bias = false) {
     Table t("desired_delta_velocity", "desired_delta_velocity — the velocity change the impulse must make");
     t.row("separating_velocity", d.separating_velocity);
     t.row("restitution", d.restitution);
@@ -159,7 +162,10 @@ StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false
     }
     t.row("restitution_used", d.restitution_used);
     if (d.velocity_from_acceleration_applied) t.row("velocity_from_acceleration", d.velocity_from_acceleration);
-    t.row("desired_delta_velocity", d.desired_delta_velocity, std::nullopt, desired_formula(d, accumulating, bias));
+    t.row("desired_delta_velocity", d.desired_delta_velocity, std::nullopt,
+          desired_formula(d, accumulating, warm_start, bias));
+    // The chapter's v_s' = −c v_s is the book's target; an accumulating solver's is its own.
+    if (accumulating) t.equation("");
     return t.done();
 }
 
@@ -361,7 +367,9 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         velocity.contact_vector("contact_velocity", r->contact_velocity);
         tables.push_back(velocity.done());
         const bool accumulating = it.accumulated.has_value();
-        tables.push_back(desired_table(r->desired_delta_velocity, accumulating, r->position_bias.has_value()));
+        const bool warm_start = it.sweep && it.sweep->stage == SolverStage::warm_start;
+        tables.push_back(
+            desired_table(r->desired_delta_velocity, accumulating, warm_start, r->position_bias.has_value()));
         if (r->position_bias) {
             Table bias("position_bias", "position_bias — speed added to push the bodies apart");
             bias.row("position_bias", *r->position_bias);
@@ -371,15 +379,20 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
             Table total("accumulated_impulse", "accumulated_impulse — the running total, kept within its limits",
                         basis);
             total.contact_vector("accumulated_before", a->before)
-                .contact_vector("accumulated_unclamped", a->unclamped)
+                .contact_vector("accumulated_unclamped", a->unclamped,
+                                warm_start ? "λ, last frame's total re-applied"
+                                           : "λ + this visit's raw impulse (normal: Δv over the normal response; "
+                                             "sliding: −K_tt⁻¹ v_t)")
                 .row("clamp", std::string(name_of(impulse_clamp_names, a->clamp)))
-                .contact_vector("accumulated_after", a->after);
+                .contact_vector("accumulated_after", a->after, "clamp(accumulated_unclamped)");
             tables.push_back(total.done());
         }
 
         const Impulse& g = r->impulse;
         Table impulse("impulse", "impulse — impulse_contact and impulse_world", basis);
-        impulse.row("impulse_model", std::string(name_of(impulse_model_names, g.model)));
+        impulse.row(
+            "impulse_model", std::string(name_of(impulse_model_names, g.model)), std::nullopt,
+            accumulating ? "μ = 0: frictionless; sliding when the clamp held friction to its cone; else static" : "");
         if (const auto& s = g.friction) {
             impulse.row("delta_velocity_matrix", s->delta_velocity_matrix)
                 .contact_vector("target_delta_velocity", s->target_delta_velocity)
@@ -391,14 +404,15 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
                                                      number(s->sliding_direction->y(), 1.0) + ")");
             if (s->sliding_normal_response) impulse.row("sliding_normal_response", *s->sliding_normal_response);
         }
-        impulse
-            .contact_vector("impulse_contact", g.impulse_contact,
-                            accumulating                            ? "accumulated_after − accumulated_before"
-                            : g.model == ImpulseModel::frictionless ? std::string_view{}
-                            : g.model == ImpulseModel::static_friction
-                                ? "static_impulse (inside the cone)"
-                                : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding_normal_response")
-            .world_vector("impulse_world", g.impulse_world);
+        impulse.contact_vector("impulse_contact", g.impulse_contact,
+                               accumulating                            ? "accumulated_after − accumulated_before"
+                               : g.model == ImpulseModel::frictionless ? std::string_view{}
+                               : g.model == ImpulseModel::static_friction
+                                   ? "static_impulse (inside the cone)"
+                                   : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding_normal_response");
+        // (14.3) is the frictionless g = Δv / d; the friction solve is chapter 15's, a sweep's increment its own.
+        if (accumulating || g.model != ImpulseModel::frictionless) impulse.equation(accumulating ? "" : "ch. 15");
+        impulse.world_vector("impulse_world", g.impulse_world);
         tables.push_back(impulse.done());
 
         Table change("velocity_change", "velocity_change — the impulse applied", basis);

@@ -22,32 +22,6 @@ public:
     void quit() override {}
 };
 
-// An ImGui context of its own, with the inspector's fonts and style, restored when done.
-class LayoutContext {
-public:
-    LayoutContext(int width, int height) : previous_(ImGui::GetCurrentContext()) {
-        context_ = ImGui::CreateContext();
-        ImGui::SetCurrentContext(context_);
-        set_up_imgui();
-        ImGuiIO& io = ImGui::GetIO();
-        unsigned char* pixels = nullptr;
-        int w = 0, h = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the atlas, as a renderer would
-        io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
-        io.DeltaTime = 1.0f / 60.0f;
-    }
-    ~LayoutContext() {
-        ImGui::DestroyContext(context_);
-        ImGui::SetCurrentContext(previous_);
-    }
-    LayoutContext(const LayoutContext&) = delete;
-    LayoutContext& operator=(const LayoutContext&) = delete;
-
-private:
-    ImGuiContext* previous_;
-    ImGuiContext* context_;
-};
-
 std::string rect_text(float x0, float y0, float x1, float y1) {
     char text[96];
     std::snprintf(text, sizeof text, "(%.0f, %.0f)-(%.0f, %.0f)", x0, y0, x1, y1);
@@ -83,22 +57,44 @@ void check_items(const UiState& state, int width, int height, const std::string&
 
 }  // namespace
 
+OffscreenLayout::OffscreenLayout(int width, int height) : previous_(ImGui::GetCurrentContext()) {
+    context_ = ImGui::CreateContext();
+    ImGui::SetCurrentContext(context_);
+    set_up_imgui();
+    ImGuiIO& io = ImGui::GetIO();
+    unsigned char* pixels = nullptr;
+    int w = 0, h = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // builds the atlas, as a renderer would
+    io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+    io.DeltaTime = 1.0f / 60.0f;
+}
+
+OffscreenLayout::~OffscreenLayout() {
+    ImGui::DestroyContext(context_);
+    ImGui::SetCurrentContext(previous_);
+}
+
+void OffscreenLayout::frame(inspect::Session& session, UiState& state, float mouse_x, float mouse_y, bool mouse_down) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.MousePos = ImVec2(mouse_x, mouse_y);
+    io.MouseDown[0] = mouse_down;
+    NoHost host;
+    ImGui::NewFrame();
+    draw_inspector(session, state, host);
+    ImGui::Render();
+}
+
 LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int height) {
-    LayoutContext context(width, height);
+    OffscreenLayout layout(width, height);
     inspect::Session& session = lesson.session;
     UiState state;
     state.lesson.emplace(LessonState{lessons::LessonRun(lesson, nullptr, std::nullopt), {}, -1, true, {}, -1, true});
     state.record_layout = true;
-    NoHost host;
     LayoutReport report;
 
     // Three frames: ImGui sizes tables and settles scrolling over the first ones, as a screenshot waits for.
     const auto lay_out = [&] {
-        for (int frame = 0; frame < 3; ++frame) {
-            ImGui::NewFrame();
-            draw_inspector(session, state, host);
-            ImGui::Render();
-        }
+        for (int frame = 0; frame < 3; ++frame) layout.frame(session, state);
         ++report.states;
     };
     const int steps = state.lesson->run.step_count();

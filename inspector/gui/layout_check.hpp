@@ -6,10 +6,13 @@
 // ImGui lays the frames out in its own context with the inspector's fonts; nothing is rasterised, so a whole
 // course takes seconds.
 
+#include "gui/ui_state.hpp"
 #include "lessons/lesson.hpp"
 
 #include <string>
 #include <vector>
+
+struct ImGuiContext;
 
 namespace impulse::gui {
 
@@ -19,7 +22,25 @@ struct LayoutReport {
     std::vector<std::string> problems;  // one line each: "step 3 (answered wrong): button Check at ... outside ..."
 };
 
-// Throws DisplayError when ImGui cannot be set up.
 LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int height);
+
+// The inspector's window laid out frame by frame in its own ImGui context (the inspector's fonts and
+// style, nothing rasterised), with the mouse where a test puts it: how the layout check and the tests drive
+// the panels without a display.
+class OffscreenLayout {
+public:
+    OffscreenLayout(int width, int height);
+    ~OffscreenLayout();
+    OffscreenLayout(const OffscreenLayout&) = delete;
+    OffscreenLayout& operator=(const OffscreenLayout&) = delete;
+
+    // One frame of the whole window, the mouse at (x, y) with its left button down or up.
+    void frame(inspect::Session& session, UiState& state, float mouse_x = -1.0f, float mouse_y = -1.0f,
+               bool mouse_down = false);
+
+private:
+    ImGuiContext* previous_;
+    ImGuiContext* context_;
+};
 
 }  // namespace impulse::gui

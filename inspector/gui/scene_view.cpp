@@ -335,9 +335,14 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     if (const ContactPreparation* c = inspect::preparation_of(frame, current)) {
         const ImVec2 p = project(c->point);
         draw->AddCircle(p, 9.0f, IM_COL32(255, 230, 60, 255), 0, 2.0f);
-        const Vec3 n = project.view * c->normal;
-        arrow(draw, p, ImVec2(p.x + static_cast<float>(n.x()) * 45.0f, p.y - static_cast<float>(n.y()) * 45.0f),
-              IM_COL32(90, 225, 120, 255), 2.0f);
+        // The normal, unless a lesson's open question hides it (which way the engine turned a contact).
+        explain::Row normal_row;
+        normal_row.key = "normal";
+        if (!mask.hides_row(*v.cursor, normal_row)) {
+            const Vec3 n = project.view * c->normal;
+            arrow(draw, p, ImVec2(p.x + static_cast<float>(n.x()) * 45.0f, p.y - static_cast<float>(n.y()) * 45.0f),
+                  IM_COL32(90, 225, 120, 255), 2.0f);
+        }
         if (v.cursor->stage == inspect::Stage::velocity) {
             const VelocityIteration& it = frame.velocity.iterations[static_cast<std::size_t>(v.cursor->item)];
             explain::Row impulse_row;

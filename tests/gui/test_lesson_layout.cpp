@@ -4,6 +4,7 @@
 
 #include "gui/layout_check.hpp"
 #include "lessons/lesson.hpp"
+#include "lessons/lesson_run.hpp"
 
 #include <doctest/doctest.h>
 
@@ -25,6 +26,32 @@ TEST_CASE("every step of every lesson fits the lesson panel at 1024x768, 1280x80
         }
     }
     MESSAGE(states << " step states and " << items << " items checked");
+}
+
+}  // namespace impulse::test
+
+namespace impulse::test {
+
+TEST_CASE("dragging the border beside the lesson widens its panel, and the layout keeps the new width") {
+    lessons::PreparedLesson lesson =
+        lessons::prepare_lesson(lessons::read_lesson(lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons").front()));
+    gui::OffscreenLayout layout(1280, 800);
+    gui::UiState state;
+    state.lesson.emplace(
+        gui::LessonState{lessons::LessonRun(lesson, nullptr, std::nullopt), {}, -1, true, {}, -1, true});
+    state.record_layout = true;
+    layout.frame(lesson.session, state);
+    // The default: 36 % of 1280 px.
+    const float before = state.lesson_panel[2];
+    CHECK(before == doctest::Approx(1280 * 0.36f).epsilon(0.01));
+    // Press on the border, move 100 px right over a few frames, release.
+    layout.frame(lesson.session, state, before, 300, false);
+    layout.frame(lesson.session, state, before, 300, true);
+    for (float x = before; x <= before + 100; x += 25) layout.frame(lesson.session, state, x, 300, true);
+    layout.frame(lesson.session, state, before + 100, 300, false);
+    layout.frame(lesson.session, state);
+    CHECK(state.lesson_panel[2] == doctest::Approx(before + 100).epsilon(0.02));
+    CHECK(state.sizes.lesson_width == doctest::Approx(before + 100).epsilon(0.02));
 }
 
 }  // namespace impulse::test

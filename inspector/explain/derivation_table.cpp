@@ -235,7 +235,11 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
     Table velocity("contact_velocity", "contact_velocity — how the contact points move", basis);
     velocity.world_vectors("point_velocity", d.contact_velocity.point_velocity)
         .per_body("tangential_acceleration_velocity", d.contact_velocity.tangential_acceleration_velocity)
-        .contact_vector("contact_velocity", d.contact_velocity.contact_velocity);
+        .contact_vector("contact_velocity", d.contact_velocity.contact_velocity,
+                        // With the refinement on, last frame's sideways acceleration is in it too.
+                        d.contact_velocity.tangential_acceleration_velocity[0]
+                            ? "Cᵀ (v₀ − v₁) + tangential_acceleration_velocity₀ − …₁"
+                            : "");
     tables.push_back(velocity.done());
 
     tables.push_back(desired_table(d.desired_delta_velocity));
@@ -364,7 +368,11 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
         Table velocity("contact_velocity", "contact_velocity — as the resolver has it now", basis);
-        velocity.contact_vector("contact_velocity", r->contact_velocity);
+        // The book's resolver keeps it as bookkeeping (the prepared value, updated by each iteration that
+        // changed a body); the accumulating solvers read it from the bodies at every visit.
+        velocity.contact_vector("contact_velocity", r->contact_velocity,
+                                it.accumulated ? "Cᵀ (v₀ − v₁), read from the bodies at this visit"
+                                               : "as prepared, + the updates of the iterations before");
         tables.push_back(velocity.done());
         const bool accumulating = it.accumulated.has_value();
         const bool warm_start = it.sweep && it.sweep->stage == SolverStage::warm_start;

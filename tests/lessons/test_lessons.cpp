@@ -158,6 +158,16 @@ TEST_CASE("malformed lessons are rejected with the place of the problem") {
          "steps[0].question.value: no \"impulse_wrld\" here"},
         {lesson_text(no_match, "## a\nx\n"),
          "steps[0].question.options: no option equals the engine's value frictionless"},
+        {lesson_text(R"({"id": "a", "at": "phase=velocity", "question": {"kind": "predict", "prompt": "?",
+                       "value": "desired_delta_velocity", "tolerance": {"relative": 0.1},
+                       "reveals": ["impulse_contact", "angular_componet"]}})",
+                     "## a\nx\n"),
+         "steps[0].question.reveals[1]: \"angular_componet\" is not a quantity of the vocabulary "
+         "(docs/trace-format.md); did you mean \"angular_component\"?"},
+        {lesson_text(R"({"id": "a", "at": "phase=preparation", "question": {"kind": "predict", "prompt": "?",
+                       "value": "origin.features[0].index", "tolerance": {"relative": 0.1}}})",
+                     "## a\nx\n"),
+         "steps[0].question.value: \"origin.features[0].index\" names no quantity of the vocabulary"},
     };
     for (const Case& c : cases) {
         const std::string error = lesson_error(c.text);

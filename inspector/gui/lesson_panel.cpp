@@ -270,7 +270,6 @@ void draw_lesson(inspect::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     handle_keys(session, state);
     const lessons::Lesson& lesson = l.run.lesson().lesson;
-    const auto index = static_cast<std::size_t>(l.run.step());
     const lessons::Step& step = l.run.current();
     if (state.record_layout) {
         const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
@@ -297,10 +296,9 @@ void draw_lesson(inspect::Session& session, UiState& state) {
     record_item(state, "button Next");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The next step (→, Page Down, or Enter once answered)");
     // The student stepped away with the inspector's buttons: one click brings the step's place back.
-    const lessons::Step& s = step;
     std::optional<inspect::Cursor> place;
     try {
-        place = inspect::resolve_goto(session.trace(), inspect::parse_goto(s.at, "at"), "at");
+        place = inspect::resolve_goto(session.trace(), inspect::parse_goto(step.at, "at"), "at");
     } catch (const io::InputError&) {
     }
     if (place && session.cursor() && !(*session.cursor() == *place)) {
@@ -330,7 +328,6 @@ void draw_lesson(inspect::Session& session, UiState& state) {
     } else {
         draw_question(session, state);
     }
-    (void)index;
 }
 
 }  // namespace impulse::gui

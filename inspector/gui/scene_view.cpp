@@ -359,7 +359,10 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
                 ? "contact " + std::to_string(current)
                 : "contact " + std::to_string(current) + " · penetration " +
                       explain::number(current_penetration, std::abs(c->penetration)) + " m";
-        draw->AddText(ImVec2(p.x + 12, p.y - 22), IM_COL32(255, 230, 60, 255), label.c_str());
+        // Beside the point, or to its left where the canvas ends.
+        const float label_width = ImGui::CalcTextSize(label.c_str()).x;
+        const float x = p.x + 12 + label_width > bottom_right.x - 4 ? p.x - 12 - label_width : p.x + 12;
+        draw->AddText(ImVec2(std::max(x, top_left.x + 4), p.y - 22), IM_COL32(255, 230, 60, 255), label.c_str());
     }
 
     draw_scale_bar(draw, ImVec2(top_left.x + 12, bottom_right.y - 14), project.scale);

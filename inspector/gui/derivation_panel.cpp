@@ -135,8 +135,8 @@ void draw_derivation(const inspect::Session& /*session*/, UiState& state) {
             " " + std::to_string(static_cast<int>(std::ceil(columns.width[static_cast<std::size_t>(c)] / 10.0f)));
     if (!ImGui::BeginTable(table_id.c_str(), static_cast<int>(columns.shown.size()), flags)) return;
     ImGui::TableSetupScrollFreeze(0, 1);
-    const char* names[6] = {"Quantity", "Value", "Other frame",
-                            columns.compact ? "Formula (eq.)" : "Formula", "Eq.", "Meaning"};
+    const char* names[6] = {"Quantity", "Value",  "Other frame", columns.compact ? "Formula (eq.)" : "Formula",
+                            "Eq.",      "Meaning"};
     for (int c : columns.shown)
         ImGui::TableSetupColumn(names[c], ImGuiTableColumnFlags_WidthFixed, columns.width[static_cast<std::size_t>(c)]);
     ImGui::TableHeadersRow();

@@ -27,8 +27,7 @@ bool begin_panel(const char* title, float x, float y, float w, float h, ImGuiWin
 
 // A border between two panels the user can drag: `value` moves with the mouse along x (vertical border)
 // or y, kept within [low, high]. Drawn after the panels, on top of them.
-void splitter(const char* id, float x, float y, float w, float h, bool vertical, float& value, float low,
-              float high) {
+void splitter(const char* id, float x, float y, float w, float h, bool vertical, float& value, float low, float high) {
     constexpr float grip = 6.0f;
     const float gx = vertical ? x - grip / 2 : x, gy = vertical ? y : y - grip / 2;
     ImGui::SetNextWindowPos(ImVec2(gx, gy));
@@ -142,8 +141,7 @@ void draw_inspector_layout(inspect::Session& session, UiState& state, inspect::A
 
     float left_edge = left, right_edge = left + middle, derivation_edge = derivation;
     splitter("##left|", left, toolbar_height, 0, body, true, left_edge, 160.0f, screen.x * 0.4f);
-    splitter("##right|", left + middle, toolbar_height, 0, body, true, right_edge, screen.x * 0.5f,
-             screen.x - 200.0f);
+    splitter("##right|", left + middle, toolbar_height, 0, body, true, right_edge, screen.x * 0.5f, screen.x - 200.0f);
     splitter("##derivation-", left, toolbar_height + derivation, middle, 0, false, derivation_edge, body * 0.2f,
              body * 0.8f);
     if (left_edge != left) sizes.left_width = left_edge;

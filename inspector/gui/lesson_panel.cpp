@@ -88,8 +88,8 @@ void check(inspect::Session& session, UiState& state) {
                             ? std::string(l.typed.data())
                             : (l.chosen >= 0 ? std::to_string(l.chosen + 1) : std::string());
     if (typed.empty()) {
-        state.message = q.kind == lessons::Question::Kind::predict ? "type your answer first"
-                                                                   : "pick an option first (Tab or ↑ ↓)";
+        state.message =
+            q.kind == lessons::Question::Kind::predict ? "type your answer first" : "pick an option first (Tab or ↑ ↓)";
         state.message_is_error = true;
         return;
     }
@@ -178,9 +178,9 @@ float question_height(const LessonState& l, float width) {
     const lessons::Question& q = *l.run.current().question;
     const ImGuiStyle& style = ImGui::GetStyle();
     const float gap = style.ItemSpacing.y, frame = ImGui::GetFrameHeight();
-    float h = gap * 2 + 1.0f;                                    // separator
-    h += ImGui::GetFontSize() + gap;                             // "Question"
-    h += wrapped_height(q.prompt, width) + gap;                  // the prompt
+    float h = gap * 2 + 1.0f;                    // separator
+    h += ImGui::GetFontSize() + gap;             // "Question"
+    h += wrapped_height(q.prompt, width) + gap;  // the prompt
     if (q.kind == lessons::Question::Kind::predict)
         h += frame + gap;
     else
@@ -222,9 +222,9 @@ void draw_question(inspect::Session& session, UiState& state) {
         const float frame = ImGui::GetFrameHeight();
         for (std::size_t o = 0; o < q.options.size(); ++o) {
             ImGui::PushID(static_cast<int>(o));
-            const bool picked = l.chosen == static_cast<int>(o) ||
-                                (!open && now == lessons::QuestionState::answered &&
-                                 static_cast<int>(o) == answer.correct_option && l.chosen < 0);
+            const bool picked =
+                l.chosen == static_cast<int>(o) || (!open && now == lessons::QuestionState::answered &&
+                                                    static_cast<int>(o) == answer.correct_option && l.chosen < 0);
             if (ImGui::RadioButton("##option", picked)) l.chosen = static_cast<int>(o);
             const std::string what = "option " + std::to_string(o + 1);
             record_item(state, what.c_str());

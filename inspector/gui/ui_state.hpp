@@ -51,8 +51,8 @@ struct CursorViews {
 struct LessonState {
     lessons::LessonRun run;
     std::array<char, 64> typed{};
-    int chosen = -1;             // a choose question's option, from 0; -1 none
-    bool focus_answer = true;    // give the answer field the keyboard at the next frame
+    int chosen = -1;           // a choose question's option, from 0; -1 none
+    bool focus_answer = true;  // give the answer field the keyboard at the next frame
     // Worked out on the session's trace; again when a setting re-runs it.
     std::vector<std::optional<lessons::QuestionReach>> reaches;
     int reaches_revision = -1;
@@ -62,16 +62,16 @@ struct LessonState {
 
 // The panels' sizes, as the user dragged the splitters (0: the default for the window's size).
 struct PanelSizes {
-    float lesson_width = 0.0f;       // a lesson's panel, pixels
-    float left_width = 0.0f;         // the inspector's navigator and settings column, pixels
-    float right_width = 0.0f;        // its contacts, bodies and plots column, pixels
-    float derivation_share = 0.0f;   // of the height below the toolbar, above the scene
-    float scene_share = 0.0f;        // with a lesson: of the width beside the lesson, left of the tabs
+    float lesson_width = 0.0f;      // a lesson's panel, pixels
+    float left_width = 0.0f;        // the inspector's navigator and settings column, pixels
+    float right_width = 0.0f;       // its contacts, bodies and plots column, pixels
+    float derivation_share = 0.0f;  // of the height below the toolbar, above the scene
+    float scene_share = 0.0f;       // with a lesson: of the width beside the lesson, left of the tabs
 };
 
 // One item of the lesson panel as ImGui laid it out, for the layout test.
 struct LaidOutItem {
-    std::string what;     // "text", "button Check", "option 2", "input", ...
+    std::string what;  // "text", "button Check", "option 2", "input", ...
     float min_x, min_y, max_x, max_y;
     // The visible region it was drawn in (the panel, or the scrolling text inside it), and whether that
     // region scrolls vertically (text below its bottom is then reached by scrolling).

@@ -21,17 +21,17 @@ using inspect::Stage;
 // What a value shows about itself only, never about a hidden change: indices, settings, what a contact is given.
 bool fixed_row(std::string_view key) {
     static const std::set<std::string_view, std::less<>> fixed{"iteration",
-                                                  "contact",
-                                                  "sweep",
-                                                  "epsilon",
-                                                  "pass",
-                                                  "restitution",
-                                                  "friction",
-                                                  "restitution_cutoff",
-                                                  "velocity_from_acceleration_applied",
-                                                  "rewind_time_limit",
-                                                  "angular_limit_policy",
-                                                  "angular_limit_factor"};
+                                                               "contact",
+                                                               "sweep",
+                                                               "epsilon",
+                                                               "pass",
+                                                               "restitution",
+                                                               "friction",
+                                                               "restitution_cutoff",
+                                                               "velocity_from_acceleration_applied",
+                                                               "rewind_time_limit",
+                                                               "angular_limit_policy",
+                                                               "angular_limit_factor"};
     return fixed.count(key) > 0;
 }
 
@@ -65,8 +65,8 @@ std::vector<std::string> paths_like(const json& item, const std::string& path) {
     const std::size_t close = path.find(']', open);
     if (close == std::string::npos || !item.contains(key) || !item[key].is_array()) return {path};
     const json& array = item[key];
-    const bool per_body = array.size() == 2 && (array[0].is_array() || array[0].is_number() || array[0].is_null() ||
-                                                array[1].is_null());
+    const bool per_body =
+        array.size() == 2 && (array[0].is_array() || array[0].is_number() || array[0].is_null() || array[1].is_null());
     if (!per_body && key != "updates") return {path};
     std::vector<std::string> paths;
     for (std::size_t i = 0; i < array.size(); ++i)
@@ -97,9 +97,9 @@ bool looks_ahead(const Trace& trace, const Cursor& place, std::string_view quant
     const std::vector<explain::StepTable> tables = inspect::step_tables(trace, place);
     const std::string_view step = explain::annotation(quantity).step;
     for (std::size_t t = 0; t < tables.size(); ++t) {
-        const bool computes = tables[t].step == step ||
-                              std::any_of(tables[t].rows.begin(), tables[t].rows.end(),
-                                          [&](const explain::Row& r) { return r.key == quantity; });
+        const bool computes =
+            tables[t].step == step || std::any_of(tables[t].rows.begin(), tables[t].rows.end(),
+                                                  [&](const explain::Row& r) { return r.key == quantity; });
         if (computes) return static_cast<int>(t) > place.step;
     }
     return false;
@@ -116,9 +116,9 @@ std::vector<double> numbers_in(const std::string& text) {
     std::vector<double> found;
     for (std::size_t i = 0; i < text.size();) {
         const char c = text[i];
-        const bool starts = std::isdigit(static_cast<unsigned char>(c)) ||
-                            ((c == '-' || c == '.') && i + 1 < text.size() &&
-                             std::isdigit(static_cast<unsigned char>(text[i + 1])));
+        const bool starts =
+            std::isdigit(static_cast<unsigned char>(c)) ||
+            ((c == '-' || c == '.') && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])));
         // A digit inside a name ("t₁", "contact 3" is text, not a value) is not a value's start.
         const bool inside_word = i > 0 && (std::isalpha(static_cast<unsigned char>(text[i - 1])) || text[i - 1] == '_');
         if (!starts || inside_word) {
@@ -182,8 +182,8 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
             const json* here = follow(item_json(*document, *place), q.value, problem);
             if (here && here->is_number()) {
                 const double value = here->get<double>();
-                const double allowed = std::max(q.tolerance.relative.value_or(0.0) * std::abs(value),
-                                                q.tolerance.absolute.value_or(0.0));
+                const double allowed =
+                    std::max(q.tolerance.relative.value_or(0.0) * std::abs(value), q.tolerance.absolute.value_or(0.0));
                 reach.answer = value;
                 reach.allowed = allowed;
                 reach.unit = explain::annotation(quantity).unit;
@@ -207,11 +207,10 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
                 if (item.stage == Stage::preparation) continue;
                 const int contact = inspect::contact_at(trace, item);
                 if (!reach.contacts.count(contact) || (contact == own && rank_in(trace, item) < from)) continue;
-                const bool resolved = item.stage == Stage::position
-                                          ? frame.position.iterations[static_cast<std::size_t>(item.item)]
-                                                .resolution.has_value()
-                                          : frame.velocity.iterations[static_cast<std::size_t>(item.item)]
-                                                .resolution.has_value();
+                const bool resolved =
+                    item.stage == Stage::position
+                        ? frame.position.iterations[static_cast<std::size_t>(item.item)].resolution.has_value()
+                        : frame.velocity.iterations[static_cast<std::size_t>(item.item)].resolution.has_value();
                 const ContactPreparation* p = inspect::preparation_of(frame, contact);
                 if (!resolved || !p) continue;
                 for (int body : p->bodies)
@@ -223,8 +222,7 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
     return reaches;
 }
 
-Mask::Mask(const std::vector<std::optional<QuestionReach>>& reaches, const std::vector<bool>& open,
-           const Trace& trace)
+Mask::Mask(const std::vector<std::optional<QuestionReach>>& reaches, const std::vector<bool>& open, const Trace& trace)
     : trace_(&trace) {
     for (std::size_t i = 0; i < reaches.size() && i < open.size(); ++i)
         if (open[i] && reaches[i]) reaches_.push_back(*reaches[i]);
@@ -269,8 +267,9 @@ bool Mask::hides_row(const Cursor& item, const explain::Row& row) const {
     }
     // Any value in it equal to an open answer (read only when an answer is in the row's unit).
     const explain::Annotation* a = explain::find_annotation(row.key);
-    if (a && !fixed_row(row.key) &&
-        std::any_of(reaches_.begin(), reaches_.end(), [&](const QuestionReach& r) { return r.answer && r.unit == a->unit; }))
+    if (a && !fixed_row(row.key) && std::any_of(reaches_.begin(), reaches_.end(), [&](const QuestionReach& r) {
+            return r.answer && r.unit == a->unit;
+        }))
         for (double v : numbers_in(row.exact))
             if (equals_an_answer(row.key, v)) return true;
     // Computed from a body a hidden change moved earlier: everything but what the item is given.

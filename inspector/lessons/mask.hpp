@@ -28,16 +28,16 @@ namespace impulse::lessons {
 
 // What one question hides while it is open, over one trace.
 struct QuestionReach {
-    int frame = -1;              // the frame index its place is in
-    std::set<int> contacts;      // its contact and those whose same quantity has the answer's value
+    int frame = -1;                           // the frame index its place is in
+    std::set<int> contacts;                   // its contact and those whose same quantity has the answer's value
     std::set<std::string, std::less<>> keys;  // vocabulary names hidden in those contacts' items
     // The bodies a hidden change moves, each with the first item (time order) that moves it: from there on
     // its state, and everything computed from it, is hidden.
     std::map<int, inspect::Cursor> bodies;
     // A predict question's answer, to hide any value equal to it.
     std::optional<double> answer;
-    double allowed = 0.0;                    // its tolerance
-    std::string unit;                        // its unit
+    double allowed = 0.0;                       // its tolerance
+    std::string unit;                           // its unit
     std::set<std::string, std::less<>> inputs;  // what it is computed from (directly or not): shown all the same
 };
 

@@ -26,7 +26,8 @@ const std::filesystem::path course = IMPULSE_SOURCE_DIR "/lessons";
 
 lessons::PreparedLesson lesson_number(int n) {
     for (const std::filesystem::path& file : lessons::lesson_files(course))
-        if (std::atoi(file.filename().string().c_str()) == n) return lessons::prepare_lesson(lessons::read_lesson(file));
+        if (std::atoi(file.filename().string().c_str()) == n)
+            return lessons::prepare_lesson(lessons::read_lesson(file));
     FAIL("no lesson " << n);
     throw std::logic_error("unreachable");
 }
@@ -36,9 +37,9 @@ std::vector<double> numbers_in(const std::string& text) {
     std::vector<double> found;
     for (std::size_t i = 0; i < text.size();) {
         const char c = text[i];
-        const bool starts = std::isdigit(static_cast<unsigned char>(c)) ||
-                            ((c == '-' || c == '.') && i + 1 < text.size() &&
-                             std::isdigit(static_cast<unsigned char>(text[i + 1])));
+        const bool starts =
+            std::isdigit(static_cast<unsigned char>(c)) ||
+            ((c == '-' || c == '.') && i + 1 < text.size() && std::isdigit(static_cast<unsigned char>(text[i + 1])));
         if (!starts) {
             ++i;
             continue;
@@ -128,7 +129,8 @@ Cells all_cells(const Trace& trace, const std::vector<Cursor>& places) {
         const inspect::BodiesAtCursor bodies = inspect::bodies_at(trace, item);
         for (std::size_t b = 0; b < bodies.after.size(); ++b)
             for (const bool after : {false, true})
-                cells.bodies.push_back({item, at + " · bodies, " + trace.scene.body_names[b] + (after ? " after" : " before"),
+                cells.bodies.push_back({item,
+                                        at + " · bodies, " + trace.scene.body_names[b] + (after ? " after" : " before"),
                                         static_cast<int>(b), after, after ? bodies.after[b] : bodies.before[b]});
     }
     return cells;
@@ -185,18 +187,18 @@ TEST_CASE("at every step of every lesson no value shown anywhere equals an open 
                 // An answer of 0 (within its tolerance) is not given away by a zero: they are everywhere.
                 if (std::abs(value) > allowed) open.push_back({q, &answer, value, allowed, upstream(answer.quantity)});
             }
-            for_each_shown(cells, mask, [&](const std::string& where, std::string_view key, std::string_view unit,
-                                            double shown) {
-                for (const Open& o : open) {
-                    if (unit != o.answer->unit || o.inputs.count(std::string(key)) ||
-                        std::abs(shown - o.value) > o.allowed)
-                        continue;
-                    FAIL_CHECK(file.filename().string()
-                               << " at step " << k + 1 << ": the answer of step " << o.step + 1 << " ("
-                               << o.answer->shown << ", " << o.answer->quantity << ") shows as " << shown << " in "
-                               << where);
-                }
-            });
+            for_each_shown(cells, mask,
+                           [&](const std::string& where, std::string_view key, std::string_view unit, double shown) {
+                               for (const Open& o : open) {
+                                   if (unit != o.answer->unit || o.inputs.count(std::string(key)) ||
+                                       std::abs(shown - o.value) > o.allowed)
+                                       continue;
+                                   FAIL_CHECK(file.filename().string()
+                                              << " at step " << k + 1 << ": the answer of step " << o.step + 1 << " ("
+                                              << o.answer->shown << ", " << o.answer->quantity << ") shows as " << shown
+                                              << " in " << where);
+                               }
+                           });
         }
     }
 }

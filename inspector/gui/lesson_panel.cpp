@@ -173,6 +173,13 @@ void handle_keys(inspect::Session& session, UiState& state) {
     state.pressed_keys.clear();
 }
 
+// What the verdict's line says before any answer.
+std::string hint(const lessons::Question& q) {
+    return q.kind == lessons::Question::Kind::predict
+               ? "Type a number and press Enter. Its value stays hidden everywhere until you answer."
+               : "Pick an option (Tab or ↑ ↓) and press Enter. The answer stays hidden until then.";
+}
+
 // The height the question takes below the text: prompt, input or options, the buttons and the verdict.
 float question_height(const LessonState& l, float width) {
     const lessons::Question& q = *l.run.current().question;
@@ -188,7 +195,7 @@ float question_height(const LessonState& l, float width) {
             h += std::max(frame, wrapped_height(o.label, width - frame - style.ItemInnerSpacing.x)) + gap;
     h += frame + gap;  // Check, Skip
     const std::string& said = l.run.feedback(l.run.step());
-    h += wrapped_height(said.empty() ? std::string(70, 'x') : said, width) + gap;
+    h += wrapped_height(said.empty() ? hint(q) : said, width) + gap;
     return h + style.WindowPadding.y;
 }
 
@@ -251,9 +258,7 @@ void draw_question(inspect::Session& session, UiState& state) {
     const std::string& said = l.run.feedback(l.run.step());
     if (said.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        wrapped_text(q.kind == lessons::Question::Kind::predict
-                         ? "Type a number and press Enter. Its value stays hidden everywhere until you answer."
-                         : "Pick an option (Tab or ↑ ↓) and press Enter. The answer stays hidden until then.");
+        wrapped_text(hint(q));
     } else {
         ImGui::PushStyleColor(ImGuiCol_Text, now == lessons::QuestionState::answered  ? right_colour
                                              : now == lessons::QuestionState::skipped ? skipped_colour

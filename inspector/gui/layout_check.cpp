@@ -92,9 +92,9 @@ LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int
     state.record_layout = true;
     LayoutReport report;
 
-    // Three frames: ImGui sizes tables and settles scrolling over the first ones, as a screenshot waits for.
+    // Two frames: the first one sizes what ImGui sizes from the frame before (a screenshot waits as long).
     const auto lay_out = [&] {
-        for (int frame = 0; frame < 3; ++frame) layout.frame(session, state);
+        for (int frame = 0; frame < 2; ++frame) layout.frame(session, state);
         ++report.states;
     };
     const int steps = state.lesson->run.step_count();

@@ -16,7 +16,8 @@ TEST_CASE("every step of every lesson fits the lesson panel at 1024x768, 1280x80
     int states = 0, items = 0;
     for (const std::filesystem::path& file : files) {
         lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(file));
-        for (const auto& [width, height] : {std::pair{1024, 768}, std::pair{1280, 800}, std::pair{1920, 1080}}) {
+        for (const std::pair<int, int>& size : {std::pair{1024, 768}, std::pair{1280, 800}, std::pair{1920, 1080}}) {
+            const int width = size.first, height = size.second;  // named, not bound: INFO captures them
             const gui::LayoutReport report = gui::check_lesson_layout(lesson, width, height);
             INFO(file.filename().string() << " at " << width << "x" << height);
             for (const std::string& problem : report.problems) FAIL_CHECK(problem);

@@ -101,24 +101,27 @@ struct Cells {
     std::vector<Body> bodies;
 };
 
-// `places`: the questions' items. Every item's tables are taken; in a frame of thousands of items (the brick
-// wall's 2700) the contacts list and the bodies are taken at the questions' items, the items next to them
-// and an even sample of the rest (60 in all), which is enough to see every rule at work and keeps the test
-// to seconds.
+// `places`: the questions' items. In a frame of a few hundred items everything is taken. In one of thousands
+// (the brick wall's 2700) the tables are taken at every prepared contact, the questions' items and the items
+// next to them, and an even sample of 200 iterations, and the contacts list and the bodies at 60 of those:
+// enough to see every rule at work, and the test stays at seconds (under AddressSanitizer too).
 Cells all_cells(const Trace& trace, const std::vector<Cursor>& places) {
     Cells cells;
     const std::vector<Cursor> items = all_items(trace);
+    const bool large = items.size() > 400;
+    const std::size_t tables_every = large ? items.size() / 200 : 1;
     const std::size_t every = std::max<std::size_t>(1, items.size() / 60);
     for (std::size_t n = 0; n < items.size(); ++n) {
         const Cursor& item = items[n];
+        const bool near_a_place = std::any_of(places.begin(), places.end(), [&](const Cursor& p) {
+            return p.frame == item.frame && p.stage == item.stage && std::abs(p.item - item.item) <= 1;
+        });
+        if (!near_a_place && item.stage != Stage::preparation && n % tables_every != 0) continue;
         const std::string at = "frame " + std::to_string(trace.frames[static_cast<std::size_t>(item.frame)].frame) +
                                " · " + std::string(inspect::stage_name(item.stage)) + " item " +
                                std::to_string(item.item);
         for (const explain::StepTable& table : inspect::step_tables(trace, item))
             for (const explain::Row& row : table.rows) cells.rows.push_back({item, at + " · " + row.quantity, row});
-        const bool near_a_place = std::any_of(places.begin(), places.end(), [&](const Cursor& p) {
-            return p.frame == item.frame && p.stage == item.stage && std::abs(p.item - item.item) <= 1;
-        });
         if (!near_a_place && n % every != 0) continue;
         for (const inspect::ContactRow& c : inspect::contact_rows(trace, item)) {
             const std::string where = at + " · contacts list, contact " + std::to_string(c.contact);

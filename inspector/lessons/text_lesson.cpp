@@ -129,8 +129,9 @@ void take_lesson(LessonRun& run, std::istream& in, std::ostream& out, int width)
     width = std::clamp(width, 40, 160);
     const auto reaches = question_reaches(prepared, prepared.session.trace());
     out << "Lesson " << lesson.number << " · " << lesson.title << '\n'
-        << run.step_count() << " steps, " << question_count(lesson) << " questions. Enter: next step · b: back · "
-        << "s: skip a question (shows its answer) · q: quit (your progress is kept)\n";
+        << run.step_count() << " steps, " << question_count(lesson)
+        << " questions. Enter: next step · b: back · t: this item's earlier tables · s: skip a question (shows "
+           "its answer) · q: quit (your progress is kept)\n";
     if (run.step() > 0) out << "Back at step " << run.step() + 1 << ", where you left off.\n";
 
     bool show = true;  // the step is to be written out (again)

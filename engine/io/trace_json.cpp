@@ -556,4 +556,16 @@ Trace read_trace_text(std::string_view text) {
     return read_trace(parse_json_text(text));
 }
 
+json item_json(const ContactPreparation& contact) {
+    return preparation_json(contact);
+}
+
+json item_json(const PositionIteration& iteration) {
+    return position_iteration_json(iteration);
+}
+
+json item_json(const VelocityIteration& iteration) {
+    return velocity_iteration_json(iteration);
+}
+
 }  // namespace impulse::io

@@ -92,9 +92,11 @@ LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int
     state.record_layout = true;
     LayoutReport report;
 
-    // Two frames: the first one sizes what ImGui sizes from the frame before (a screenshot waits as long).
+    // The lesson panel's items take their places within the frame that draws them (its sizes are measured,
+    // never carried over from the frame before), so one frame per state is enough once the windows exist.
+    layout.frame(session, state);
     const auto lay_out = [&] {
-        for (int frame = 0; frame < 2; ++frame) layout.frame(session, state);
+        layout.frame(session, state);
         ++report.states;
     };
     const int steps = state.lesson->run.step_count();
@@ -114,29 +116,22 @@ LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int
         check_items(state, width, height, where, needed, report);
         if (!step.question) continue;
 
-        // A wrong answer, then the right one; and, from open again, a skip.
+        // A wrong answer (its verdict is the longest a predict question gets), then, from open again, a skip
+        // (which shows the answer: for a choose question, its option's label).
         const lessons::Question& q = *step.question;
         const lessons::Answer& a = *lesson.answers[static_cast<std::size_t>(k)];
-        std::string wrong, right;
+        std::string wrong;
         if (q.kind == lessons::Question::Kind::predict) {
-            const double value = a.value.get<double>();
             char text[64];
-            std::snprintf(text, sizeof text, "%.6g", value * 1.5 + 1.0);
+            std::snprintf(text, sizeof text, "%.6g", a.value.get<double>() * 1.5 + 1.0);
             wrong = text;
-            std::snprintf(text, sizeof text, "%.17g", value);
-            right = text;
         } else {
             wrong = std::to_string((a.correct_option + 1) % static_cast<int>(q.options.size()) + 1);
-            right = std::to_string(a.correct_option + 1);
         }
         l.run.answer(wrong);
         refresh_mask(session, state);
         lay_out();
         check_items(state, width, height, where + " answered wrong", needed, report);
-        l.run.answer(right);
-        refresh_mask(session, state);
-        lay_out();
-        check_items(state, width, height, where + " answered right", needed, report);
         l.run.answered_before(k);
         l.run.skip();
         refresh_mask(session, state);

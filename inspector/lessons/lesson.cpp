@@ -249,7 +249,6 @@ PreparedLesson prepare_lesson(Lesson lesson) {
     }();
     PreparedLesson prepared{std::move(lesson), std::move(session), {}, {}};
     const Trace& trace = prepared.session.trace();
-    const json document = io::trace_json(trace);
 
     for (std::size_t i = 0; i < prepared.lesson.steps.size(); ++i) {
         const Step& step = prepared.lesson.steps[i];
@@ -264,7 +263,8 @@ PreparedLesson prepare_lesson(Lesson lesson) {
             }
             const Question& q = *step.question;
             std::string problem;
-            const json* value = follow(item_json(document, place), q.value, problem);
+            const json item = item_json(trace, place);
+            const json* value = follow(item, q.value, problem);
             if (!value) throw io::InputError(where + ".question.value", problem);
             Answer answer{*value, question_quantity(q, place.stage), {}, -1, {}};
             if (answer.quantity.empty())

@@ -137,7 +137,6 @@ std::vector<double> numbers_in(const std::string& text) {
 std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson& prepared, const Trace& trace) {
     const Lesson& lesson = prepared.lesson;
     std::vector<std::optional<QuestionReach>> reaches(lesson.steps.size());
-    std::optional<json> document;
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const Step& step = lesson.steps[i];
         if (!step.question || !prepared.answers[i]) continue;
@@ -177,9 +176,9 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
         // Contacts whose same quantity has the answer's value: the same answer, shown elsewhere.
         const std::vector<Cursor> items = items_of(trace, place->frame);
         if (q.kind == Question::Kind::predict) {
-            if (!document) document = io::trace_json(trace);
             std::string problem;
-            const json* here = follow(item_json(*document, *place), q.value, problem);
+            const json own_item = item_json(trace, *place);
+            const json* here = follow(own_item, q.value, problem);
             if (here && here->is_number()) {
                 const double value = here->get<double>();
                 const double allowed =
@@ -187,8 +186,15 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
                 reach.answer = value;
                 reach.allowed = allowed;
                 reach.unit = explain::annotation(quantity).unit;
+                // Only the kinds of item that hold the quantity (the brick wall's 2000 velocity iterations hold
+                // no relaxation amount).
+                const std::string_view kinds = explain::annotation(quantity).items;
                 for (const Cursor& item : items) {
-                    const json& j = item_json(*document, item);
+                    const char kind = item.stage == Stage::preparation ? 'C'
+                                      : item.stage == Stage::position  ? 'P'
+                                                                       : 'V';
+                    if (kinds.find(kind) == std::string_view::npos) continue;
+                    const json j = item_json(trace, item);
                     for (const std::string& path : paths_like(j, q.value)) {
                         const json* other = follow(j, path, problem);
                         if (other && other->is_number() && std::abs(other->get<double>() - value) <= allowed)

@@ -1,5 +1,7 @@
 #include "lessons/trace_path.hpp"
 
+#include "io/trace_json.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <stdexcept>
@@ -46,13 +48,18 @@ const json* follow(const json& item, std::string_view path, std::string& problem
     return at;
 }
 
-const json& item_json(const json& trace, const inspect::Cursor& c) {
-    const json& frame = trace["frames"][static_cast<std::size_t>(c.frame)];
-    if (c.stage == inspect::Stage::preparation) return frame["contacts"][static_cast<std::size_t>(c.item)];
-    for (const json& phase : frame["phases"])
-        if (phase["phase"] == inspect::stage_name(c.stage))
-            return phase["iterations"][static_cast<std::size_t>(c.item)];
-    throw std::logic_error("a cursor's phase is missing from the trace JSON");
+json item_json(const Trace& trace, const inspect::Cursor& c) {
+    const FrameRecord& frame = trace.frames[static_cast<std::size_t>(c.frame)];
+    const auto i = static_cast<std::size_t>(c.item);
+    switch (c.stage) {
+        case inspect::Stage::preparation:
+            return io::item_json(frame.contacts[i]);
+        case inspect::Stage::position:
+            return io::item_json(frame.position.iterations[i]);
+        case inspect::Stage::velocity:
+            return io::item_json(frame.velocity.iterations[i]);
+    }
+    throw std::logic_error("a cursor in no stage");
 }
 
 }  // namespace impulse::lessons

@@ -11,8 +11,9 @@
 
 namespace impulse::lessons {
 
-// The trace JSON of the item a cursor stands on: frames[f].contacts[k] or frames[f].phases[p].iterations[i].
-const nlohmann::ordered_json& item_json(const nlohmann::ordered_json& trace_document, const inspect::Cursor& c);
+// The trace JSON of the item a cursor stands on, as frames[f].contacts[k] or frames[f].phases[p].iterations[i]
+// holds it (written for that item alone).
+nlohmann::ordered_json item_json(const Trace& trace, const inspect::Cursor& c);
 
 // Follows "key.key[i][j]" inside `item`; null when a part is missing, and `problem` says which.
 const nlohmann::ordered_json* follow(const nlohmann::ordered_json& item, std::string_view path, std::string& problem);

@@ -1,5 +1,5 @@
 // The lesson window fits: every step of every lesson, laid out at 1024x768, 1280x800 and 1920x1080 as the
-// student meets it, after a wrong answer, the right one and a skip, has every text and control of the lesson
+// student meets it, after a wrong answer and after a skip, has every text and control of the lesson
 // panel inside the window, read from ImGui's own item rectangles.
 
 #include "gui/layout_check.hpp"

@@ -8,6 +8,7 @@
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
+#include "io/trace_json.hpp"
 #include "lessons/lesson.hpp"
 
 #include <algorithm>
@@ -53,21 +54,17 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
         return exit_non_finite;
     }
     const Trace& trace = session.trace();
+    const io::json document = io::trace_json(trace);
     std::vector<inspect::Cursor> places;
     if (!options.steps.empty())
         places = coursework::places_from_specs(trace, options.steps, "--steps");
-    else if (lesson) {
-        for (const inspect::Cursor& place : lesson->places) try {
-                coursework::make_worksheet(session, {place});
-                places.push_back(place);
-            } catch (const io::InputError&) {
-                // nothing to fill in at this step
-            }
-    } else
+    else if (lesson)
+        places = coursework::places_with_cells(session, lesson->places, &document);  // a choice has no cells
+    else
         places = coursework::default_places(trace);
     if (places.empty())
         throw FileError{options.file, "", "the recording has no contact, so there is nothing to fill in"};
-    const coursework::Worksheet sheet = coursework::make_worksheet(session, places);
+    const coursework::Worksheet sheet = coursework::make_worksheet(session, places, &document);
 
     io::write_file_atomically(
         options.out, csv ? coursework::worksheet_csv(sheet) : io::format_json(coursework::worksheet_json(sheet)),

@@ -180,10 +180,13 @@ void add_diff(CLI::App& app, DiffOptions& o) {
     CLI::App* diff = app.add_subcommand(
         "diff",
         "Compare traces or filled worksheets with a reference, value by value; the first divergence is marked.\n"
-        "Several files (or a folder) give a class summary. Exit 0 all match, 1 mismatches or blanks, 2 bad input.\n"
-        "Example: impulse-lab diff scenes/cases/ruler.json submissions/ --format csv --out grades.csv");
+        "Several files (or a folder) give a class summary; --out DIR writes the class report (summary.csv,\n"
+        "cells.csv, a feedback page per student). Exit 0 all match, 1 mismatches or blanks, 2 bad input.\n"
+        "Example: impulse-lab diff lessons/07-calculating-and-applying-the-impulse.md submissions/ --rtol 1e-4 "
+        "--out report/");
     diff->add_option("REFERENCE", o.reference,
-                     "Trace; case or scene (run as inspect runs it); or a worksheet (re-run as it was made)")
+                     "Lesson (run as worksheet runs it); worksheet (re-run as it was made); case or scene (run as "
+                     "inspect runs it); or a trace")
         ->required();
     diff->add_option("OTHER", o.others, "Traces or filled worksheets (.json, .csv), or folders of them")->required();
     diff->add_option("--rtol", o.rtol,
@@ -191,7 +194,9 @@ void add_diff(CLI::App& app, DiffOptions& o) {
     diff->add_option("--atol", o.atol, "Absolute tolerance (default 1e-12)");
     diff->add_option("--format", o.format, "Report as text (default), json or csv")
         ->check(CLI::IsMember({"text", "json", "csv"}));
-    diff->add_option("--out", o.out, "Also write the report to this file, atomically");
+    diff->add_option("--out", o.out,
+                     "One file: also write the report to this file. A class: the folder of the class report. "
+                     "Written atomically");
     add_open_options(*diff, o.open, "a case or scene reference");
 }
 

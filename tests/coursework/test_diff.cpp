@@ -386,3 +386,17 @@ TEST_CASE("a CSV answer that is not a number is graded wrong, and a row cut shor
     CHECK(report["findings"][0]["found"] == "minus three");
     CHECK(report["findings"][0]["relative_error"].is_null());
 }
+
+TEST_CASE("a velocity iteration's wrong contact velocity is the first divergence, not the desired change after it") {
+    // The iteration's record writes desired_delta_velocity before contact_velocity; the derivation computes
+    // them the other way round, and so must the first divergence be chosen.
+    TempDir dir;
+    io::json document = filled_worksheet("cases/ruler");
+    cell_at(document, "frames[0].phases[1].iterations[0].contact_velocity")[0] = -2.9;
+    cell_at(document, "frames[0].phases[1].iterations[0].desired_delta_velocity") = 4.35;  // −(1 + 0.5)·(−2.9)
+    const io::json report = diff_json(ruler, write_json(dir, "student.json", document), 1);
+    REQUIRE(report["findings"].size() == 2);
+    CHECK(report["findings"][0]["path"] == "frames[0].phases[1].iterations[0].contact_velocity[0]");
+    CHECK(report["findings"][0]["first_divergence"] == true);
+    CHECK(report["findings"][1]["path"] == "frames[0].phases[1].iterations[0].desired_delta_velocity");
+}

@@ -53,8 +53,8 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
 
     const auto start = std::chrono::steady_clock::now();
     inspect::Session session = inspect::Session::open(options.file, options.open);
-    if (session.recording_stopped_at())
-        err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
+    if (const auto note = session.recording_note())
+        err << "impulse-lab: note: " << *note << "; raise --max-trace-mb or narrow --record to see later frames\n";
     // Shown up to the frame before it: the frames that led there are what there is to debug.
     if (session.broken_run())
         err << "impulse-lab: note: the run stopped at "

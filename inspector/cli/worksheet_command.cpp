@@ -45,8 +45,8 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
         lesson.emplace(lessons::prepare_lesson(lessons::read_lesson(options.file)));
     }
     const inspect::Session session = lesson ? lesson->session : inspect::Session::open(options.file, options.open);
-    if (session.recording_stopped_at())
-        err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
+    if (const auto note = session.recording_note())
+        err << "impulse-lab: note: " << *note << "; raise --max-trace-mb or narrow --record to see later frames\n";
     // A worksheet's numbers must be re-made exactly by diff; a run that broke is not coursework.
     if (session.broken_run()) {
         err << "impulse-lab: " << inspect::broken_run_text(session.trace().scene, *session.broken_run())

@@ -129,6 +129,8 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
     if (session.broken_run()) {
         state.message = "the run stopped at " + inspect::broken_run_text(session.trace().scene, *session.broken_run());
         state.message_is_error = true;
+    } else if (const auto note = session.recording_note()) {
+        state.message = *note;  // which frames there are to step through
     }
     if (run.lesson) {
         state.lesson = LessonState{run.lesson, 0, {}, {}, run.progress, run.progress_file};
@@ -190,6 +192,12 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
             action.line > 0 ? run.script_name + ": line " + std::to_string(action.line) : std::string("--screenshot");
         try {
             inspect::perform(session, action, where, &host);
+            // A re-run says what it gave, in the window and (for a script) on the terminal when the recording
+            // was cut short: the frames a later goto can reach.
+            if (action.kind == inspect::ActionKind::set) {
+                state.message = inspect::rerun_text(session, action.argument, &state.message_is_error);
+                if (session.recording_note()) err << "impulse-lab: note: " << where << ": " << state.message << '\n';
+            }
         } catch (const io::InputError& e) {
             err << "impulse-lab: " << e.what() << '\n';
             return 2;

@@ -141,6 +141,15 @@ std::vector<Action> parse_script(std::string_view text) {
     return actions;
 }
 
+std::string rerun_text(const Session& session, std::string_view assignment, bool* is_error) {
+    std::string text = "re-ran with " + std::string(assignment);
+    if (is_error) *is_error = session.broken_run().has_value();
+    if (session.broken_run())
+        return text + ": the run stopped at " + broken_run_text(session.trace().scene, *session.broken_run());
+    if (const auto note = session.recording_note()) return text + ": " + *note;
+    return text;
+}
+
 std::string exported_trace(const Session& session) {
     return io::format_json(io::trace_json(session.trace()));
 }

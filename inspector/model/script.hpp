@@ -67,6 +67,11 @@ public:
 // throws io::InputError(where, ...) and changes nothing.
 void perform(Session& session, const Action& action, std::string_view where, ActionHost* host);
 
+// What a re-run with `assignment` ("restitution_cutoff=0") gave, for the window's status line and a script's
+// terminal: "re-ran with …", then where the run stopped if a body became non-finite, or which frames it recorded
+// if the trace budget cut the recording short. Whether it is an error (the run broke) goes in `is_error`.
+std::string rerun_text(const Session& session, std::string_view assignment, bool* is_error = nullptr);
+
 // The file an export writes: the trace as JSON, or the derivation table at the cursor as CSV.
 std::string exported_trace(const Session& session);
 std::string exported_table(const Session& session);

@@ -280,7 +280,7 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
                                              : "") +
                       ".";
             if (const std::string slip = likely_slip(first->expected, first->found); !slip.empty())
-                md += " That is " + slip;
+                md += " That is " + slip + (slip.ends_with('?') ? "" : ".");
             else
                 md += std::string(finding_kind_name(first->kind)) + ".";
             if (!first->formula.empty())
@@ -314,9 +314,11 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
 
     md += "## Your answers, step by step\n";
     std::string place = "\x01";
+    std::string slips_named;  // in this step's table: a likely slip is named once, at its first number
     for (const GradedNumber& g : r.graded) {
         if (g.place != place) {
             place = g.place;
+            slips_named.clear();
             md += "\n### " + (place.empty() ? std::string("elsewhere") : place) +
                   "\n\n|  | quantity | unit | expected | yours | verdict |\n|---|---|---|---|---|---|\n";
         }
@@ -327,7 +329,11 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
                 verdict += ": this worksheet does not ask for it";
             else if (const std::string far = how_far(g.relative_error, g.expected, g.unit); !far.empty())
                 verdict += ", " + far;
-            if (const std::string slip = likely_slip(g.expected, g.found); !slip.empty()) verdict += " — " + slip;
+            if (const std::string slip = likely_slip(g.expected, g.found);
+                !slip.empty() && slips_named.find(slip) == std::string::npos) {
+                verdict += " — " + slip;
+                slips_named += slip + "\n";
+            }
             if (f && !f->formula.empty())
                 verdict += " — " + f->formula + (f->equation.empty() ? "" : " " + f->equation);
         }

@@ -48,9 +48,12 @@ struct Worksheet {
 
 // The worksheet of `places` (inspector cursors into session.trace()), in the order given, repeats left out.
 // A step's inputs are the item's givens, the settings its steps use up to this one, the values its earlier
-// steps computed, the bodies' mass properties (and, for a contact, their state before the frame), and for an
-// iteration the chosen contact as prepared; an input that is also a cell somewhere on the sheet is not given
-// away. Throws io::InputError("--steps", ...) for a place whose step computes nothing to fill in.
+// steps computed, the bodies' mass properties (and, for a contact, their state before the frame), for an
+// iteration the chosen contact as prepared, and what the step's formula needs from outside the item (the
+// frame's duration and last-frame accelerations, the chosen contact's value as earlier iterations left it, an
+// updated contact's geometry: coursework/worksheet_inputs.cpp), so every cell can be worked out from the sheet;
+// an input that is also a cell somewhere on the sheet is not given away, and inputs are rounded for work by hand.
+// Throws io::InputError("--steps", ...) for a place whose step computes nothing to fill in.
 // `document`, when given, is io::trace_json(session.trace()) made already (a big frame's takes a while).
 Worksheet make_worksheet(const inspect::Session& session, const std::vector<inspect::Cursor>& places,
                          const io::json* document = nullptr);

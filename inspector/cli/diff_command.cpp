@@ -4,6 +4,7 @@
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
+#include "cli/outputs.hpp"
 #include "coursework/diff_report.hpp"
 #include "coursework/worksheet.hpp"
 #include "io/atomic_file.hpp"
@@ -27,11 +28,19 @@ bool is_csv(const std::string& file) {
     return extension == ".csv";
 }
 
+// A worksheet on standard input has no name to tell CSV by: JSON starts with "{".
+bool is_csv_text(const std::string& file, const std::string& text) {
+    if (file != standard_stream) return is_csv(file);
+    const std::size_t first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+    return first == std::string::npos || text[first] != '{';
+}
+
 coursework::DiffReport diff_file(const io::json& reference, const std::string& file,
                                  const coursework::Tolerance& tolerance) {
     const std::string text = read_input_file(file);
     try {
-        if (is_csv(file)) return coursework::diff_worksheet(reference, coursework::read_worksheet_csv(text), tolerance);
+        if (is_csv_text(file, text))
+            return coursework::diff_worksheet(reference, coursework::read_worksheet_csv(text), tolerance);
         const io::json document = io::parse_json_text(text);
         if (coursework::is_worksheet(document))
             return coursework::diff_worksheet(reference, coursework::read_worksheet_json(document), tolerance);
@@ -46,7 +55,7 @@ coursework::DiffReport diff_file(const io::json& reference, const std::string& f
                                  std::string(coursework::worksheet_format_name) + "\")" +
                                  (has_format ? ", got " + document["format"].dump() : ""));
     } catch (const io::InputError& e) {
-        throw FileError{file, e.where(), e.problem()};
+        throw FileError{input_name(file), e.where(), e.problem()};
     }
 }
 
@@ -90,9 +99,9 @@ inspect::Session open_reference(const DiffOptions& o) {
         }
     } catch (const io::InputError& e) {
         if (e.where().starts_with("--")) throw;
-        throw FileError{o.reference, e.where(), e.problem()};
+        throw FileError{input_name(o.reference), e.where(), e.problem()};
     }
-    return inspect::Session::open(o.reference, o.open);
+    return inspect::Session::open_text(text, o.reference, o.open);
 }
 
 void check_tolerance(double value, const char* flag) {
@@ -106,7 +115,9 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     check_tolerance(options.rtol, "--rtol");
     check_tolerance(options.atol, "--atol");
     const coursework::Tolerance tolerance{options.rtol, options.atol};
-    if (options.out) io::check_writable(*options.out, "--out");
+    // The report goes to standard output anyway: `--out -` (or /dev/stdout) asks for nothing more.
+    const bool out_is_file = options.out && !names_standard_output(*options.out, out);
+    if (out_is_file) io::check_writable(*options.out, "--out");
 
     const inspect::Session session = open_reference(options);
     const io::json reference = io::trace_json(session.trace());
@@ -118,31 +129,31 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     if (files.size() == 1 && !folder) {
         // One file: its every mismatch; a file that cannot be read is bad input.
         const coursework::DiffReport r = diff_file(reference, files.front(), tolerance);
-        const coursework::DiffSubject subject{options.reference, files.front(), tolerance};
+        const coursework::DiffSubject subject{input_name(options.reference), input_name(files.front()), tolerance};
         report = options.format == "json"  ? coursework::report_json(r, subject)
                  : options.format == "csv" ? coursework::report_csv(r)
                                            : coursework::report_text(r, subject);
-        code = r.all_match() ? exit_ok : exit_failure;
+        code = r.all_match() ? exit_ok : exit_verdict;
     } else {
         // A class: one row per file; a file that cannot be read gets its row (and a line here) and does not stop
         // the others.
         std::vector<coursework::ClassRow> rows;
         for (const std::string& file : files) {
             try {
-                rows.push_back({file, diff_file(reference, file, tolerance), ""});
-                if (!rows.back().report->all_match()) code = exit_failure;
+                rows.push_back({input_name(file), diff_file(reference, file, tolerance), ""});
+                if (!rows.back().report->all_match()) code = exit_verdict;
             } catch (const FileError& e) {
                 const std::string error = (e.where.empty() ? "" : e.where + ": ") + e.problem;
                 err << "impulse-lab: " << e.file << ": " << error << '\n';
-                rows.push_back({file, std::nullopt, error});
-                code = exit_failure;
+                rows.push_back({input_name(file), std::nullopt, error});
+                code = exit_verdict;
             }
         }
-        report = options.format == "json"  ? coursework::summary_json(rows, options.reference, tolerance)
+        report = options.format == "json"  ? coursework::summary_json(rows, input_name(options.reference), tolerance)
                  : options.format == "csv" ? coursework::summary_csv(rows)
-                                           : coursework::summary_text(rows, options.reference, tolerance);
+                                           : coursework::summary_text(rows, input_name(options.reference), tolerance);
     }
-    if (options.out) io::write_file_atomically(*options.out, report, "--out");
+    if (out_is_file) io::write_file_atomically(*options.out, report, "--out");
     out << report;
     return code;
 }

@@ -2,6 +2,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
+#include "cli/outputs.hpp"
 #include "gui/display.hpp"
 #include "gui/inspector_app.hpp"
 #include "io/input_error.hpp"
@@ -16,7 +17,7 @@ std::vector<inspect::Action> read_script_file(const std::string& path) {
     try {
         return inspect::parse_script(read_input_file(path, max_text_input_bytes));
     } catch (const io::InputError& e) {
-        throw FileError{path, e.where(), e.problem()};
+        throw FileError{input_name(path), e.where(), e.problem()};
     }
 }
 
@@ -36,7 +37,13 @@ std::pair<int, int> parse_window_size(const std::string& text) {
 }
 
 int inspect_command(const InspectOptions& options, std::ostream& out, std::ostream& err) {
+    // A picture on standard output: only where it is not a terminal; what the command says goes to stderr then.
+    const bool picture_to_standard_output = options.screenshot && names_standard_output(*options.screenshot, out);
+    if (picture_to_standard_output && is_terminal(out))
+        throw io::InputError("--screenshot", "standard output is a terminal; redirect it to a file or a pipe");
+    std::ostream& report = picture_to_standard_output ? err : out;
     gui::InspectorRun run;
+    if (picture_to_standard_output) run.standard_output = &out;
     run.headless = options.headless;
     if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
     if (run.headless && !options.screenshot && !options.script && !options.bench_frames)
@@ -66,7 +73,7 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
             inspect::resolve_goto(session.trace(), inspect::parse_goto(*options.go_to, "--goto"), "--goto"));
     run.screenshot = options.screenshot;
     run.bench_frames = options.bench_frames;
-    return gui::run_inspector(session, run, out, err);
+    return gui::run_inspector(session, run, report, err);
 }
 
 }  // namespace impulse::cli

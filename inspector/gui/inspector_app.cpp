@@ -104,7 +104,8 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
             if (a.kind == inspect::ActionKind::screenshot || a.kind == inspect::ActionKind::export_trace ||
                 a.kind == inspect::ActionKind::export_table)
                 io::check_writable(a.argument, run.script_name + ": line " + std::to_string(a.line));
-        if (run.screenshot) io::check_writable(*run.screenshot, "--screenshot");
+        if (run.screenshot && !(run.standard_output && *run.screenshot == "-"))
+            io::check_writable(*run.screenshot, "--screenshot");
     } catch (const io::InputError& e) {
         err << "impulse-lab: " << e.what() << '\n';
         return 2;
@@ -167,7 +168,11 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
         if (capture) {
             const std::string path = host.take();
             try {
-                io::write_file_atomically(path, encode_png(pixels), path);
+                const std::string png = encode_png(pixels);
+                if (run.standard_output && path == "-")
+                    run.standard_output->write(png.data(), static_cast<std::streamsize>(png.size())).flush();
+                else
+                    io::write_file_atomically(path, png, path);
             } catch (const std::exception& e) {
                 // A script's or --screenshot's failure ends the run; the window's button reports it and goes on.
                 if (close_when_done || !queue.empty()) {

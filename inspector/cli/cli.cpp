@@ -289,8 +289,9 @@ std::vector<HelpSection> manual_sections() {
     sections.push_back({"Standard streams",
                         {{"-",
                           "As a file argument: standard input for a file read (a scene, case, trace, worksheet or "
-                          "script), standard output for a file written (a trace, states, worksheet, report or "
-                          "screenshot). At most one argument of a command reads standard input and one writes "
+                          "script), standard output for a file written (a trace, states, worksheet, report, a script's "
+                          "exported table or trace, or a screenshot). At most one argument of a command reads standard "
+                          "input and one writes "
                           "standard output; when standard output carries a file, the command's report goes to "
                           "standard error."},
                          {"/dev/stdout",

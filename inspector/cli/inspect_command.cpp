@@ -37,13 +37,7 @@ std::pair<int, int> parse_window_size(const std::string& text) {
 }
 
 int inspect_command(const InspectOptions& options, std::ostream& out, std::ostream& err) {
-    // A picture on standard output: only where it is not a terminal; what the command says goes to stderr then.
-    const bool picture_to_standard_output = options.screenshot && names_standard_output(*options.screenshot, out);
-    if (picture_to_standard_output && is_terminal(out))
-        throw io::InputError("--screenshot", "standard output is a terminal; redirect it to a file or a pipe");
-    std::ostream& report = picture_to_standard_output ? err : out;
     gui::InspectorRun run;
-    if (picture_to_standard_output) run.standard_output = &out;
     run.headless = options.headless;
     if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
     if (run.headless && !options.screenshot && !options.script && !options.bench_frames)
@@ -54,9 +48,29 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
                              "there is no display to open a window on (DISPLAY is not set); add "
                              "--headless with --screenshot or --script to render PNG files instead");
     if (options.script) {
-        run.script_name = *options.script;
+        run.script_name = input_name(*options.script);
         run.script = read_script_file(*options.script);
     }
+    // One output may go to standard output: --screenshot -, or a script's export or screenshot to "-". A picture
+    // only where that is not a terminal. What the command says goes to stderr then.
+    std::optional<std::string> standard_output_by;
+    const auto claim = [&](const std::string& path, const std::string& by, bool picture) {
+        if (!names_standard_output(path, out)) return;
+        if (standard_output_by)
+            throw io::InputError(by, "standard output (\"-\") already carries " + *standard_output_by +
+                                         "; only one output can go there");
+        if (picture && is_terminal(out))
+            throw io::InputError(by, "standard output is a terminal; redirect it to a file or a pipe for a PNG");
+        standard_output_by = by;
+    };
+    for (const inspect::Action& a : run.script)
+        if (a.kind == inspect::ActionKind::screenshot || a.kind == inspect::ActionKind::export_trace ||
+            a.kind == inspect::ActionKind::export_table)
+            claim(a.argument, run.script_name + ": line " + std::to_string(a.line),
+                  a.kind == inspect::ActionKind::screenshot);
+    if (options.screenshot) claim(*options.screenshot, "--screenshot", true);
+    if (standard_output_by) run.standard_output = &out;
+    std::ostream& report = standard_output_by ? err : out;
 
     const auto start = std::chrono::steady_clock::now();
     inspect::Session session = inspect::Session::open(options.file, options.open);

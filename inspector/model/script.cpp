@@ -113,21 +113,13 @@ Action parse_action(std::string_view text, int line) {
                                  "expected lesson step N with N from 1, got \"" + std::string(trim(text)) + "\"");
         return {ActionKind::lesson_step, std::to_string(step), 1, line};
     }
-    // A script's files are files: standard output belongs to the command (inspect --screenshot - for a picture).
-    const auto file = [&where](std::string_view name) {
-        if (name == "-")
-            throw io::InputError(where,
-                                 "a script writes files, and \"-\" is not one (inspect --screenshot - puts "
-                                 "the final picture on standard output)");
-        return std::string(name);
-    };
     if (w[0] == "screenshot") {
         needs(2, "screenshot FILE.png");
-        return {ActionKind::screenshot, file(w[1]), 1, line};
+        return {ActionKind::screenshot, std::string(w[1]), 1, line};
     }
     if (w[0] == "export") {
-        if (w.size() == 3 && w[1] == "trace") return {ActionKind::export_trace, file(w[2]), 1, line};
-        if (w.size() == 3 && w[1] == "table") return {ActionKind::export_table, file(w[2]), 1, line};
+        if (w.size() == 3 && w[1] == "trace") return {ActionKind::export_trace, std::string(w[2]), 1, line};
+        if (w.size() == 3 && w[1] == "table") return {ActionKind::export_table, std::string(w[2]), 1, line};
         throw io::InputError(where, "\"" + std::string(trim(text)) +
                                         "\": expected export trace FILE or export table "
                                         "FILE");
@@ -189,18 +181,28 @@ void perform(Session& session, const Action& action, std::string_view where, Act
             session.set(action.argument, at);
             return;
         case ActionKind::export_trace:
-            io::write_file_atomically(action.argument, exported_trace(session), at);
+        case ActionKind::export_table: {
+            const std::string text =
+                action.kind == ActionKind::export_trace ? exported_trace(session) : exported_table(session);
+            if (action.argument != "-") {
+                io::write_file_atomically(action.argument, text, at);
+                return;
+            }
+            // "-": the command's standard output (cli/outputs.hpp).
+            std::ostream* out = host ? host->standard_output() : nullptr;
+            if (!out) throw io::InputError(at, "standard output (\"-\") is not available here; name a file");
+            out->write(text.data(), static_cast<std::streamsize>(text.size())).flush();
             return;
-        case ActionKind::export_table:
-            io::write_file_atomically(action.argument, exported_table(session), at);
-            return;
+        }
         case ActionKind::screenshot:
         case ActionKind::view:
         case ActionKind::lesson_step:
         case ActionKind::quit:
             if (!host) throw io::InputError(at, "only the inspector's window or --headless renderer can do this");
             if (action.kind == ActionKind::screenshot) {
-                // The picture is taken a few frames later. ("-" comes only from --screenshot: standard output.)
+                // The picture is taken a few frames later; "-" is standard output.
+                if (action.argument == "-" && !host->standard_output())
+                    throw io::InputError(at, "standard output (\"-\") is not available here; name a file");
                 if (action.argument != "-") io::check_writable(action.argument, at);
                 host->screenshot(action.argument);
             } else if (action.kind == ActionKind::view)

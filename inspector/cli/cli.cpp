@@ -312,6 +312,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     CLI::App app{"Impulse Lab: step through rigid-body collision resolution (Millington, ch. 14)", "impulse-lab"};
     app.set_version_flag("--version", version_text);
     app.footer(footer_text());
+    // Words a user reads; the commands share the program's formatter.
+    app.get_formatter()->label("REQUIRED", "(required)");
+    app.get_formatter()->label("SUBCOMMAND", "COMMAND");
     app.require_subcommand(1);
     FlagCatalog catalog;
     ResolveOptions resolve;
@@ -335,6 +338,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         commands.push_back(sub->get_name());
     std::string help_command, completion_shell;
     add_help_and_completion(app, catalog, commands, help_command, completion_shell);
+    for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) command->group("Commands");
     // Answered before parsing (below); a flag here so that the help and the completion list it.
     bool help_all = false;
     app.add_flag("--help-all", help_all, "Print the help of every command (the manual page is made from it)");
@@ -364,6 +368,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         return exit_ok;
     }
     if (args[0] == "help") {
+        if (args.size() == 2 && (args[1] == "--help" || args[1] == "-h")) {
+            out << command_named("help")->help("impulse-lab");
+            return exit_ok;
+        }
         if (args.size() > 2)
             err << "impulse-lab: help: takes one command, got " << args.size() - 1
                 << " arguments; see impulse-lab help\n";

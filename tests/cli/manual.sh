@@ -6,7 +6,7 @@ set -uo pipefail
 program=$1
 manual=$2
 failures=0
-commands=$("$program" --help | sed -n '/^Subcommands:/,/^$/p' | grep -E '^  [a-z]' | awk '{print $1}')
+commands=$("$program" --help | sed -n '/^Commands:/,/^$/p' | grep -E '^  [a-z]' | awk '{print $1}')
 test -n "$commands" || { echo "no commands in impulse-lab --help"; exit 1; }
 for command in $commands; do
   grep -q "^\.SS \"impulse-lab $command[ :]" "$manual" || { echo "no subsection for $command"; failures=$((failures + 1)); }

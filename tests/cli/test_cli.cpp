@@ -84,6 +84,36 @@ TEST_CASE("--version and --help answer with exit code 0") {
     CHECK(validate_help.code == 0);
 }
 
+TEST_CASE("impulse-lab help [COMMAND] prints the program's or the command's help") {
+    const CliResult all = run_cli({"help"});
+    CHECK(all.code == 0);
+    for (const char* command : {"resolve", "run", "inspect", "lesson", "validate", "worksheet", "diff", "bench"})
+        CHECK_MESSAGE(all.out.find(std::string("\n  ") + command + " ") != std::string::npos, command);
+    CHECK(all.out.find("Exit codes: 0 done; 1 a verdict;") != std::string::npos);
+    const CliResult run = run_cli({"help", "run"});
+    CHECK(run.code == 0);
+    CHECK(run.out.find("Usage: impulse-lab run [OPTIONS] SCENE") != std::string::npos);
+    CHECK(run.out == run_cli({"run", "--help"}).out);
+    const CliResult unknown = run_cli({"help", "rnu"});
+    CHECK(unknown.code == 2);
+    CHECK(unknown.err.rfind("impulse-lab: unknown command \"rnu\" (did you mean run?)", 0) == 0);
+}
+
+TEST_CASE("the help says every value in words, never in CLI11's type names") {
+    // Regression: the help showed "--frames INT:INT in 1 to 10000000", "--dt FLOAT:NUMBER in 1e-06 to 10" and
+    // "--preset TEXT:{book,...}".
+    const CliResult all = run_cli({"--help-all"});
+    CHECK(all.code == 0);
+    for (const std::string jargon : {"INT:", " INT ", "FLOAT", "TEXT", ":{", "REQUIRED"})
+        CHECK_MESSAGE(all.out.find(jargon) == std::string::npos, jargon);
+    CHECK(all.out.find("--frames N                  Frames to simulate (default: the scene's settings.frames, 600); "
+                       "a whole number from 1 to 10000000") != std::string::npos);
+    CHECK(all.out.find("--preset PRESET") != std::string::npos);
+    CHECK(all.out.find("one of book, chapter, sweep, pgs, pgs_split, soft_step") != std::string::npos);
+    for (const std::string command : {"resolve", "run", "inspect", "lesson", "validate", "worksheet", "diff", "bench"})
+        CHECK_MESSAGE(all.out.find("\nimpulse-lab " + command) != std::string::npos, command);
+}
+
 TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
     struct BadFlag {
         std::vector<std::string> args;

@@ -289,15 +289,14 @@ std::vector<HelpSection> manual_sections() {
     sections.push_back({"Standard streams",
                         {{"-",
                           "As a file argument: standard input for a file read (a scene, case, trace, worksheet or "
-                          "script), standard output for a file written (a trace, states, worksheet, report, a script's "
-                          "exported table or trace, or a screenshot). At most one argument of a command reads standard "
-                          "input and one writes "
-                          "standard output; when standard output carries a file, the command's report goes to "
-                          "standard error."},
+                          "script), standard output for a file written (a trace, states, worksheet, report, a "
+                          "script's exported table or trace, or a screenshot). At most one argument of a command "
+                          "reads standard input and one writes standard output; when standard output carries a "
+                          "file, the command's report goes to standard error."},
                          {"/dev/stdout",
-                          "The same as -. Any other output is written atomically (a temporary file "
-                          "renamed over it); a symbolic link is followed and its target replaced; a "
-                          "FIFO, a terminal or a device is written in place."}}});
+                          "The same as -. Any other output is written atomically (a temporary file renamed over "
+                          "it); a symbolic link is followed and its target replaced; a FIFO, a terminal or a device "
+                          "is written in place."}}});
     sections.push_back({"Exit status", exit_codes});
     sections.push_back({"Files",
                         {{"$XDG_CONFIG_HOME/impulse-lab/progress.json",

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cstdlib>
-#include <set>
 
 namespace impulse::cli {
 
@@ -43,11 +42,7 @@ std::string unknown_flag(const CLI::App& app, const CLI::App* command, const std
     const CLI::App& scope = command ? *command : app;
     std::string text = flag + ": unknown flag";
     if (command) text += " of " + command->get_name();
-    std::vector<std::string> candidates = flag_names(scope);
-    candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
-                                    [](const std::string& c) { return c.size() < 2 || c[0] != '-'; }),
-                     candidates.end());
-    if (const auto meant = io::closest_name(flag, candidates)) return text + " (did you mean " + *meant + "?)";
+    if (const auto meant = io::closest_name(flag, flag_names(scope))) return text + " (did you mean " + *meant + "?)";
     std::vector<std::string> owners;
     for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
         if (sub != command && sub->get_option_no_throw(flag)) owners.push_back(sub->get_name());

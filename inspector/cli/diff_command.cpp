@@ -5,6 +5,7 @@
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
+#include "cli/outputs.hpp"
 #include "coursework/class_report.hpp"
 #include "coursework/worksheet.hpp"
 #include "io/atomic_file.hpp"
@@ -33,6 +34,13 @@ std::string lowered_extension(const std::string& file) {
 
 bool is_csv(const std::string& file) {
     return lowered_extension(file) == ".csv";
+}
+
+// A worksheet on standard input has no name to tell CSV by: JSON starts with "{".
+bool is_csv_text(const std::string& file, const std::string& text) {
+    if (file != standard_stream) return is_csv(file);
+    const std::size_t first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+    return first == std::string::npos || text[first] != '{';
 }
 
 // What the class is graded against: the reference run, its trace document, and — when the reference is a lesson
@@ -84,9 +92,9 @@ Reference open_reference(const DiffOptions& o) {
         }
     } catch (const io::InputError& e) {
         if (e.where().starts_with("--")) throw;
-        throw FileError{o.reference, e.where(), e.problem()};
+        throw FileError{input_name(o.reference), e.where(), e.problem()};
     }
-    inspect::Session session = inspect::Session::open(o.reference, o.open);
+    inspect::Session session = inspect::Session::open_text(text, o.reference, o.open);
     io::json trace = io::trace_json(session.trace());
     const std::string what = session.kind() == inspect::SourceKind::case_file    ? "case"
                              : session.kind() == inspect::SourceKind::scene_file ? "scene"
@@ -100,7 +108,7 @@ coursework::DiffReport diff_file(const Reference& reference, const std::string& 
     try {
         coursework::DiffReport report;
         const std::vector<std::string>* asked = reference.asked ? &*reference.asked : nullptr;
-        if (is_csv(file)) {
+        if (is_csv_text(file, text)) {
             report =
                 coursework::diff_worksheet(reference.document, coursework::read_worksheet_csv(text), tolerance, asked);
         } else {
@@ -124,7 +132,7 @@ coursework::DiffReport diff_file(const Reference& reference, const std::string& 
         coursework::word_findings(report, reference.session.trace(), reference.document);
         return report;
     } catch (const io::InputError& e) {
-        throw FileError{file, e.where(), e.problem()};
+        throw FileError{input_name(file), e.where(), e.problem()};
     }
 }
 
@@ -173,6 +181,10 @@ void check_tolerance(double value, const char* flag) {
 void check_report_folder(const fs::path& folder) {
     std::error_code error;
     if (folder.empty()) throw io::InputError("--out", "empty folder name");
+    if (folder == standard_stream)
+        throw io::InputError("--out",
+                             "with several files --out is a folder for summary.csv, cells.csv and the feedback "
+                             "pages, and '-' (standard output) is not a folder (--format csv prints the summary)");
     if (fs::exists(folder, error) && !fs::is_directory(folder, error))
         throw io::InputError("--out",
                              "with several files --out is a folder for summary.csv, cells.csv and the "
@@ -222,10 +234,12 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     bool folder = false;
     const std::vector<Submission> files = files_named(options.others, folder);
     const bool whole_class = files.size() > 1 || folder;
+    // One file's report goes to standard output anyway: `--out -` (or /dev/stdout) asks for nothing more.
+    const bool out_is_file = options.out && !whole_class && !names_standard_output(*options.out, out);
     if (options.out) {
         if (whole_class)
             check_report_folder(*options.out);
-        else
+        else if (out_is_file)
             io::check_writable(*options.out, "--out");
     }
 
@@ -233,13 +247,14 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     if (!whole_class) {
         // One file: its every mismatch; a file that cannot be read is bad input.
         const coursework::DiffReport r = diff_file(reference, files.front().file, tolerance);
-        const coursework::DiffSubject subject{options.reference, files.front().file, tolerance};
+        const coursework::DiffSubject subject{input_name(options.reference), input_name(files.front().file),
+                                              tolerance};
         const std::string report = options.format == "json"  ? coursework::report_json(r, subject)
                                    : options.format == "csv" ? coursework::report_csv(r)
                                                              : coursework::report_text(r, subject);
-        if (options.out) io::write_file_atomically(*options.out, report, "--out");
+        if (out_is_file) io::write_file_atomically(*options.out, report, "--out");
         out << report;
-        return r.all_match() ? exit_ok : exit_failure;
+        return r.all_match() ? exit_ok : exit_verdict;
     }
 
     // A class: one row per file; a file that cannot be read gets its row (and a line here) and does not stop
@@ -249,16 +264,16 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     for (const Submission& s : files) {
         try {
             if (!s.not_read.empty()) throw FileError{s.file, "", s.not_read};
-            rows.push_back({s.file, diff_file(reference, s.file, tolerance), ""});
-            if (!rows.back().report->all_match()) code = exit_failure;
+            rows.push_back({input_name(s.file), diff_file(reference, s.file, tolerance), ""});
+            if (!rows.back().report->all_match()) code = exit_verdict;
         } catch (const FileError& e) {
             const std::string error = (e.where.empty() ? "" : e.where + ": ") + e.problem;
             err << "impulse-lab: " << e.file << ": " << error << '\n';
-            rows.push_back({s.file, std::nullopt, error});
-            code = exit_failure;
+            rows.push_back({input_name(s.file), std::nullopt, error});
+            code = exit_verdict;
         }
     }
-    const coursework::ClassSubject subject{options.reference, reference.what, tolerance};
+    const coursework::ClassSubject subject{input_name(options.reference), reference.what, tolerance};
     if (options.out) write_class_report(*options.out, rows, subject);
     out << (options.format == "json"  ? coursework::summary_json(rows, subject)
             : options.format == "csv" ? coursework::summary_csv(rows)

@@ -12,6 +12,7 @@
 
 #include "model/session.hpp"
 
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -61,6 +62,8 @@ public:
     virtual void view(const std::string& plane) = 0;  // front, top, side or 3d
     virtual void lesson_step(int step) = 0;           // from 0; throws io::InputError when there is none
     virtual void quit() = 0;
+    // Where an export or screenshot named "-" goes (the command's standard output), or null when nowhere.
+    virtual std::ostream* standard_output() { return nullptr; }
 };
 
 // Carries out one action. A move that would leave the trace, a bad goto or setting, or an unwritable file

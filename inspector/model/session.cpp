@@ -22,11 +22,15 @@ bool is_trace(const nlohmann::ordered_json& document) {
 }  // namespace
 
 Session Session::open(const std::string& path, const OpenOptions& options) {
+    return open_text(cli::read_input_file(path), path, options);
+}
+
+Session Session::open_text(const std::string& text, const std::string& path, const OpenOptions& options) {
     Session s;
-    s.path_ = path;
+    s.path_ = cli::input_name(path);
     nlohmann::ordered_json document;
     try {
-        document = io::parse_json_text(cli::read_input_file(path));
+        document = io::parse_json_text(text);
         if (is_trace(document)) {
             s.kind_ = SourceKind::trace_file;
             s.trace_ = io::read_trace(document);
@@ -35,7 +39,7 @@ Session Session::open(const std::string& path, const OpenOptions& options) {
             s.kind_ = s.scene_.contacts.empty() ? SourceKind::scene_file : SourceKind::case_file;
         }
     } catch (const io::InputError& e) {
-        throw cli::FileError{path, e.where(), e.problem()};
+        throw cli::FileError{s.path_, e.where(), e.problem()};
     }
     document = {};
 

@@ -56,6 +56,8 @@ public:
     // Reads, checks and runs the file. Throws cli::FileError for a bad file and io::InputError for a bad
     // flag, before anything is shown.
     static Session open(const std::string& path, const OpenOptions& options);
+    // The same for a file already read (standard input, or a file a caller looked into first); `path` names it.
+    static Session open_text(const std::string& text, const std::string& path, const OpenOptions& options);
     // A session over a trace already in memory (tests, lessons).
     static Session from_trace(Trace trace, SourceKind kind, std::string path);
 

@@ -294,7 +294,8 @@ TEST_CASE("worksheet refuses a bad --out or --steps in one line, exit code 2 and
     const std::string ruler = cases + "ruler.json";
     const std::vector<std::pair<std::vector<std::string>, std::string>> table{
         {{"worksheet", ruler, "--out", dir.file("sheet.txt").string()},
-         "impulse-lab: --out: must end in .json or .csv, got \"" + dir.file("sheet.txt").string() + "\""},
+         "impulse-lab: --out: must end in .json or .csv (or be - for standard output), got \"" +
+             dir.file("sheet.txt").string() + "\""},
         {{"worksheet", ruler, "--out", dir.file("no/dir/s.csv").string()},
          "impulse-lab: --out: cannot write '" + dir.file("no/dir/s.csv").string() + "': No such file or directory"},
         {{"worksheet", ruler, "--out", dir.file("s.csv").string(), "--steps", "phase=sideways"},

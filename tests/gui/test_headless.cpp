@@ -327,4 +327,22 @@ TEST_CASE("inspect says which frames it recorded when the trace budget cut it, a
                        "reached --max-trace-mb 0.1 at frame 1)\n");
 }
 
+TEST_CASE("a script's export table - and --screenshot - put the table and the picture on standard output") {
+    // The same bytes as the files the same script and flag write; what inspect says goes to stderr then.
+    TempDir dir;
+    const auto to_file = dir.write(
+        "to-file.txt", "goto phase=velocity,step=impulse\nexport table " + dir.file("table.csv").string() + "\n");
+    REQUIRE(run_cli({"inspect", ruler, "--headless", "--script", to_file.string()}).code == 0);
+    const auto to_stdout = dir.write("to-stdout.txt", "goto phase=velocity,step=impulse\nexport table -\n");
+    const CliResult table = run_cli({"inspect", ruler, "--headless", "--script", to_stdout.string()});
+    CHECK(table.code == 0);
+    CHECK(table.out == read(dir.file("table.csv")));
+
+    REQUIRE(run_cli({"inspect", ruler, "--headless", "--screenshot", dir.file("shot.png").string()}).code == 0);
+    const CliResult picture = run_cli({"inspect", ruler, "--headless", "--screenshot", "-"});
+    CHECK(picture.code == 0);
+    CHECK(picture.out == read(dir.file("shot.png")));
+    CHECK(dir.entries() == 4);  // two scripts, the table and the picture: no file named "-"
+}
+
 }  // namespace impulse::test

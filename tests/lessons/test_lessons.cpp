@@ -232,7 +232,7 @@ TEST_CASE("validate checks a lesson file with its run") {
     CHECK(ok.out == good.string() + ": valid lesson 1 (2 steps, 1 question)\n");
     const auto bad = dir.write("02-bad.md", lesson_text(R"({"id": "a", "at": "phase=position"})", "## a\nx\n"));
     const CliResult r = run_cli({"validate", bad.string()});
-    CHECK(r.code == 2);
+    CHECK(r.code == 1);  // the verdict asked for: invalid
     CHECK(r.err == "impulse-lab: " + bad.string() + ": steps[0].at: frame 0 has no position iterations\n");
 }
 

@@ -2,7 +2,7 @@
 
 #include "collision/broad_phase.hpp"
 #include "collision/collision.hpp"
-#include "methods/soft_step.hpp"
+#include "methods/method_table.hpp"
 #include "world/integrate.hpp"
 
 #include <algorithm>
@@ -91,12 +91,12 @@ StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& re
     report.frame = frame;
     const double dt = scene.settings.duration;
 
-    // Soft step integrates the bodies itself, sub-step by sub-step: it takes the contacts at the current positions
-    // and the forces, and its integration counts as resolution time.
-    const bool soft_step = scene.settings.velocity_method == VelocityMethod::soft_step;
+    // A method that owns the whole step (soft step) integrates the bodies itself, sub-step by sub-step: it takes
+    // the contacts at the current positions and the forces, and its integration counts as resolution time.
+    const bool integrates_itself = method_row(scene.settings.velocity_method).scope == MethodScope::whole_step;
     auto start = Clock::now();
     const Damping damping{scene.world.linear_damping, scene.world.angular_damping};
-    if (!soft_step)
+    if (!integrates_itself)
         for (RigidBody& body : bodies)
             integrate(body, scene.world.gravity, dt, damping, scene.settings.orientation_update);
     report.times.integrate = seconds_since(start);
@@ -109,9 +109,8 @@ StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& re
 
     start = Clock::now();
     LastTouch touch(recorder, detection.contacts, bodies.size());
-    report.resolution = soft_step ? solve_soft_step(bodies, detection.contacts, scene.settings,
-                                                    {scene.world.gravity, damping}, touch, frame, memory)
-                                  : resolve_contacts(bodies, detection.contacts, scene.settings, touch, frame, memory);
+    report.resolution = resolve_contacts(bodies, detection.contacts, scene.settings, touch, frame, memory,
+                                         Forces{scene.world.gravity, damping});
     report.times.resolve = seconds_since(start);
 
     report.non_finite = first_non_finite(bodies, touch);

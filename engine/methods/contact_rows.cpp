@@ -1,26 +1,17 @@
 #include "methods/contact_rows.hpp"
 
-#include "derivation/impulse.hpp"
 #include "methods/solver_common.hpp"
-
-#include <unordered_set>
 
 namespace impulse {
 
-std::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const PreparedContact> contacts) {
+std::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass) {
     std::vector<SolverBody> solver(bodies.size());
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         solver[b].velocity = bodies[b].velocity;
         solver[b].angular_velocity = bodies[b].angular_velocity;
+        solver[b].inverse_mass = mass[b].inverse_mass;
+        solver[b].inverse_inertia = mass[b].inverse_inertia_world;
     }
-    // The mass as the contacts were prepared with (mass_properties: the world inverse inertia of the frame).
-    for (const PreparedContact& c : contacts)
-        for (int i = 0; i < 2; ++i)
-            if (c.mass[i]) {
-                SolverBody& body = solver[static_cast<std::size_t>(c.derivation.bodies[i])];
-                body.inverse_mass = c.mass[i]->inverse_mass;
-                body.inverse_inertia = c.mass[i]->inverse_inertia_world;
-            }
     return solver;
 }
 
@@ -31,9 +22,33 @@ void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>
     }
 }
 
-ContactRow contact_row(int index, const PreparedContact& contact, bool friction_rows) {
+void project_on_cone(const std::array<double, 3>& k, double& x, double& y, double limit) {
+    const double wx = k[0] * x + k[1] * y, wy = k[1] * x + k[2] * y;  // w = K_tt free
+    double nu = 0.0;
+    for (int step = 0; step < 16; ++step) {
+        const double size_squared = x * x + y * y;
+        const double size = std::sqrt(size_squared);
+        if (size <= limit * (1.0 + 1e-13)) break;
+        // (K + nu 1)^-1 by its adjugate: [[k22 + nu, -k12], [-k12, k11 + nu]] / det.
+        const double a = k[0] + nu, b = k[1], c = k[2] + nu;
+        const double inverse_det = 1.0 / (a * c - b * b);
+        const double mx = (c * x - b * y) * inverse_det, my = (a * y - b * x) * inverse_det;
+        // phi = 1/|lambda| - 1/limit,  dphi/dnu = lambda . (K + nu 1)^-1 lambda / |lambda|^3
+        const double slope = (x * mx + y * my) / (size_squared * size);
+        nu -= (1.0 / size - 1.0 / limit) / slope;
+        const double a2 = k[0] + nu, c2 = k[2] + nu;
+        const double inverse_det2 = 1.0 / (a2 * c2 - b * b);
+        x = (c2 * wx - b * wy) * inverse_det2;
+        y = (a2 * wy - b * wx) * inverse_det2;
+    }
+    const double scale = limit / std::sqrt(x * x + y * y);  // exactly on the circle
+    x *= scale;
+    y *= scale;
+}
+
+void fill_contact_row(ContactRow& row, int index, const PreparedContact& contact, const SolverBody* bodies,
+                      bool friction_rows) {
     const ContactPreparation& d = contact.derivation;
-    ContactRow row;
     row.contact = index;
     for (int i = 0; i < 2; ++i) {
         row.body[i] = d.bodies[i] == world_body ? -1 : d.bodies[i];
@@ -42,48 +57,55 @@ ContactRow contact_row(int index, const PreparedContact& contact, bool friction_
     row.normal = d.basis.normal;
     row.tangent1 = d.basis.tangent1;
     row.tangent2 = d.basis.tangent2;
-    row.normal_mass = 1.0 / d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;  // 1 / d
+    row.normal_response = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;  // d (step 3)
+    row.normal_mass = 1.0 / row.normal_response;
     row.friction = friction_rows ? d.friction : 0.0;
     if (row.friction != 0.0) {
-        const Mat3 k = delta_velocity_matrix(d.basis, d.relative_position, contact.mass);
-        row.normal_to_tangent = k.block<2, 1>(1, 0);
-        row.tangent_response = k.block<2, 2>(1, 1);
-        row.tangent_invertible = row.tangent_response.determinant() > 0.0;
+        // K_ab = sum over bodies of m^-1 (a . b) + (r x a) . I^-1 (r x b): derivation/impulse.hpp's
+        // delta_velocity_matrix entry by entry (C^T (m^-1 1 - [r]x I^-1 [r]x) C), for the four entries the
+        // friction rows need.
+        double k_1n = 0.0, k_2n = 0.0, k_11 = 0.0, k_12 = 0.0, k_22 = 0.0;
+        for (int i = 0; i < 2; ++i) {
+            if (row.body[i] < 0) continue;
+            const SolverBody& m = bodies[row.body[i]];
+            const Vec3& r = row.anchor[i];
+            const Vec3 u_n = r.cross(row.normal), u_1 = r.cross(row.tangent1), u_2 = r.cross(row.tangent2);
+            // I^-1 is symmetric, so (r x t) . I^-1 (r x n) = (r x n) . I^-1 (r x t): two products serve all five.
+            const Vec3 j_1 = times(m.inverse_inertia, u_1), j_2 = times(m.inverse_inertia, u_2);
+            k_1n += m.inverse_mass * row.tangent1.dot(row.normal) + u_n.dot(j_1);
+            k_2n += m.inverse_mass * row.tangent2.dot(row.normal) + u_n.dot(j_2);
+            k_11 += m.inverse_mass + u_1.dot(j_1);
+            k_12 += m.inverse_mass * row.tangent1.dot(row.tangent2) + u_1.dot(j_2);
+            k_22 += m.inverse_mass + u_2.dot(j_2);
+        }
+        row.normal_to_tangent = {k_1n, k_2n};
+        row.tangent_response = {k_11, k_12, k_22};
+        const double det = k_11 * k_22 - k_12 * k_12;
+        row.tangent_invertible = det > 0.0;
         if (row.tangent_invertible) {
-            row.tangent_mass = row.tangent_response.inverse();
+            row.tangent_mass = {k_22 / det, -k_12 / det, k_11 / det};
         } else {
             // Singular (a body that turns about one axis only): solve each tangent row on its own.
-            for (int t = 0; t < 2; ++t)
-                if (row.tangent_response(t, t) > 0.0) row.tangent_mass(t, t) = 1.0 / row.tangent_response(t, t);
+            row.tangent_mass = {k_11 > 0.0 ? 1.0 / k_11 : 0.0, 0.0, k_22 > 0.0 ? 1.0 / k_22 : 0.0};
         }
     }
-    return row;
 }
 
-std::vector<std::optional<AccumulatedImpulse>> remembered_totals(std::span<const ContactRow> rows,
-                                                                 std::span<const PreparedContact> contacts,
-                                                                 const ContactMemory& memory) {
-    std::vector<std::optional<AccumulatedImpulse>> totals(rows.size());
-    if (memory.size() == 0) return totals;
-    std::unordered_set<ContactKey, ContactKeyHash> seen;
-    for (std::size_t r = 0; r < rows.size(); ++r) {
-        const ContactPreparation& d = contacts[static_cast<std::size_t>(rows[r].contact)].derivation;
-        const ContactKey key = contact_key(d);
-        if (!seen.insert(key).second) continue;
-        if (const std::optional<Vec3> remembered = memory.recall(key))
-            totals[r] = within_limits(to_contact(d.basis, *remembered), d.friction);
-    }
-    return totals;
+std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const ContactKey& key) {
+    if (memory_.size() == 0) return std::nullopt;
+    const std::ptrdiff_t slot = memory_.slot_of(key);
+    if (slot < 0 || taken_[static_cast<std::size_t>(slot)]) return std::nullopt;
+    taken_[static_cast<std::size_t>(slot)] = 1;
+    const Vec3& g = memory_.impulse_at(slot);  // world; C^T g in this frame's basis
+    return within_limits({row.normal.dot(g), row.tangent1.dot(g), row.tangent2.dot(g)}, row.friction);
 }
 
-void remember_totals(std::span<const ContactRow> rows, std::span<const PreparedContact> contacts,
-                     ContactMemory& memory) {
+void remember_totals(std::span<const ContactRow> rows, std::span<const ContactKey> keys, ContactMemory& memory) {
     std::vector<std::pair<ContactKey, Vec3>> totals;
     totals.reserve(rows.size());
-    for (const ContactRow& row : rows)
-        totals.emplace_back(contact_key(contacts[static_cast<std::size_t>(row.contact)].derivation),
-                            world_impulse(row, row.total_impulse));
-    memory.remember(totals);
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        totals.emplace_back(keys[r], world_impulse(rows[r], rows[r].total_impulse));
+    memory.remember(std::move(totals));
 }
 
 }  // namespace impulse

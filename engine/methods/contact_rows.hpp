@@ -6,8 +6,10 @@
 //
 // The hot loop reads plain data (Box2D's contact constraint structs): a ContactRow per contact holding what a
 // visit needs, copied once per frame from the contact's preparation, and a SolverBody per body holding its
-// velocities and mass. The recorder sees the same numbers through the same functions: a method runs one loop
-// templated on whether it records, so recording costs nothing when off and changes no bit when on.
+// velocities and mass. The row functions compute in plain doubles, component by component (Eigen's packed
+// arithmetic on 3-vectors mixes 16- and 8-byte loads and stores of the same values, which stalls the loop).
+// The recorder sees the same numbers through the same functions: a method runs one loop templated on whether
+// it records, so recording costs nothing when off and changes no bit when on.
 //
 // The normal row (K = the 3x3 velocity change per unit impulse in contact coordinates, K_nn = d of step 3):
 //   delta lambda_n = normal_mass mass_scale (target - v_n) - impulse_scale lambda_n,   normal_mass = 1 / d
@@ -63,7 +65,28 @@
 #include <type_traits>
 #include <vector>
 
+// The row functions are small and called from every visit of every sweep: they are always inlined, so a sweep
+// compiles to one loop (GCC and clang would otherwise keep some of them out of line at -O2).
+#define IMPULSE_ROW_FUNCTION [[gnu::always_inline]] inline
+
 namespace impulse {
+
+// Three numbers along a contact's axes, (normal, tangent 1, tangent 2): a velocity or an impulse in contact
+// coordinates, as the row functions carry them.
+struct Axes {
+    double n = 0.0;
+    double t1 = 0.0;
+    double t2 = 0.0;
+
+    bool operator==(const Axes&) const = default;
+};
+
+inline Vec3 vector_of(const Axes& a) {
+    return {a.n, a.t1, a.t2};
+}
+inline Axes axes_of(const Vec3& v) {
+    return {v.x(), v.y(), v.z()};
+}
 
 // A body as the solver loop sees it (Box2D's b2BodyState): its velocities and its mass for the frame.
 struct SolverBody {
@@ -73,33 +96,42 @@ struct SolverBody {
     Mat3 inverse_inertia = Mat3::Zero();   // I^-1, world axes, as prepared
 };
 
-// The solver's bodies for a frame: velocities and mass copied from `bodies` and `contacts`' preparation.
-std::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const PreparedContact> contacts);
+// The solver's bodies for a frame: velocities from `bodies`, mass as the contacts were prepared with.
+std::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass);
 
 // Copies the solver's velocities back to the bodies.
 void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>& bodies);
 
+// m v, written out: Eigen's 3x3 product is a call at -O2.
+IMPULSE_ROW_FUNCTION Vec3 times(const Mat3& m, const Vec3& v) {
+    return {m(0, 0) * v.x() + m(0, 1) * v.y() + m(0, 2) * v.z(), m(1, 0) * v.x() + m(1, 1) * v.y() + m(1, 2) * v.z(),
+            m(2, 0) * v.x() + m(2, 1) * v.y() + m(2, 2) * v.z()};
+}
+
 // One contact's rows: what a visit reads, fixed for the frame, and the total it accumulates.
 struct ContactRow {
-    int contact = 0;                 // index in the prepared list
-    std::array<int, 2> body{0, -1};  // solver bodies; -1 = the world (body 1 only)
-    Vec3 normal;                     // contact x, world
-    Vec3 tangent1;                   // contact y
-    Vec3 tangent2;                   // contact z
-    std::array<Vec3, 2> anchor;      // r_i: contact point minus body centre (step 2); zero for the world
-    double normal_mass = 0.0;        // 1 / d: impulse per unit change of normal velocity (step 3)
-    Eigen::Vector2d normal_to_tangent = Eigen::Vector2d::Zero();  // K_tn: slip velocity per unit normal impulse
-    Eigen::Matrix2d tangent_response = Eigen::Matrix2d::Zero();   // K_tt: slip velocity per unit friction impulse
-    Eigen::Matrix2d tangent_mass = Eigen::Matrix2d::Zero();       // K_tt^-1 (its diagonal's inverse if singular)
-    bool tangent_invertible = false;                              // K_tt is invertible
-    double friction = 0.0;                                        // mu
-    Eigen::Vector2d slip_offset = Eigen::Vector2d::Zero();        // a constant added to v_t (see above)
-    Vec3 total_impulse = Vec3::Zero();                            // lambda, contact coordinates (N s)
+    int contact = 0;                  // index in the prepared list
+    std::array<int, 2> body{0, -1};   // solver bodies; -1 = the world (body 1 only)
+    Vec3 normal;                      // contact x, world
+    Vec3 tangent1;                    // contact y
+    Vec3 tangent2;                    // contact z
+    std::array<Vec3, 2> anchor;       // r_i: contact point minus body centre (step 2); zero for the world
+    double normal_mass = 0.0;         // 1 / d: impulse per unit change of normal velocity (step 3)
+    double normal_response = 0.0;     // d = K_nn: normal velocity per unit normal impulse
+    double friction = 0.0;            // mu
+    bool tangent_invertible = false;  // K_tt is invertible
+    std::array<double, 2> normal_to_tangent{0.0, 0.0};      // K_tn: slip velocity per unit normal impulse
+    std::array<double, 3> tangent_response{0.0, 0.0, 0.0};  // K_tt (11, 12, 22): slip per unit friction impulse
+    std::array<double, 3> tangent_mass{0.0, 0.0, 0.0};      // K_tt^-1 (11, 12, 22) (its diagonal's inverse if singular)
+    std::array<double, 2> slip_offset{0.0, 0.0};            // a constant added to v_t (see above)
+    Axes total_impulse;                                     // lambda (N s)
 };
 
-// The rows of a prepared contact (K from derivation/impulse.hpp's delta_velocity_matrix); without
-// `friction_rows` (the split impulse's pushes) only the normal row is filled.
-ContactRow contact_row(int index, const PreparedContact& contact, bool friction_rows = true);
+// Fills `row` with the rows of a prepared contact, with its bodies' mass from `bodies` (K as
+// derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes) only the
+// normal row is filled. (In place: a row is 300 bytes, and a frame builds one per contact.)
+void fill_contact_row(ContactRow& row, int index, const PreparedContact& contact, const SolverBody* bodies,
+                      bool friction_rows = true);
 
 // What the normal row aims for in one visit.
 struct NormalTarget {
@@ -108,185 +140,212 @@ struct NormalTarget {
     double impulse_scale = 0.0;  // share of the total given back per visit (soft contact: > 0)
 };
 
+// Body `slot`'s point velocity at the row's anchor, v + w x r (9.5), world, added to `out` with `sign`.
+IMPULSE_ROW_FUNCTION void add_point_velocity(const SolverBody& b, const Vec3& r, double sign, double* out) {
+    const Vec3& v = b.velocity;
+    const Vec3& w = b.angular_velocity;
+    out[0] += sign * (v.x() + (w.y() * r.z() - w.z() * r.y()));
+    out[1] += sign * (v.y() + (w.z() * r.x() - w.x() * r.z()));
+    out[2] += sign * (v.z() + (w.x() * r.y() - w.y() * r.x()));
+}
+
+IMPULSE_ROW_FUNCTION double along(const Vec3& axis, const double* v) {
+    return axis.x() * v[0] + axis.y() * v[1] + axis.z() * v[2];
+}
+
 // Step 4 for the row: the contact velocity (v_n, v_t1, v_t2) from the bodies as they are now, plus slip_offset.
-inline Vec3 row_velocity(const ContactRow& row, const SolverBody* bodies) {
-    const SolverBody& a = bodies[row.body[0]];
-    Vec3 relative = a.velocity + a.angular_velocity.cross(row.anchor[0]);  // (9.5)
-    if (row.body[1] >= 0) {
-        const SolverBody& b = bodies[row.body[1]];
-        relative -= b.velocity + b.angular_velocity.cross(row.anchor[1]);
-    }
-    return {row.normal.dot(relative), row.tangent1.dot(relative) + row.slip_offset.x(),
-            row.tangent2.dot(relative) + row.slip_offset.y()};
+IMPULSE_ROW_FUNCTION Axes row_velocity(const ContactRow& row, const SolverBody* bodies) {
+    double relative[3] = {0.0, 0.0, 0.0};
+    add_point_velocity(bodies[row.body[0]], row.anchor[0], 1.0, relative);
+    if (row.body[1] >= 0) add_point_velocity(bodies[row.body[1]], row.anchor[1], -1.0, relative);
+    return {along(row.normal, relative), along(row.tangent1, relative) + row.slip_offset[0],
+            along(row.tangent2, relative) + row.slip_offset[1]};
 }
 
 // The normal velocity alone (the split impulse's push rows).
-inline double row_normal_velocity(const ContactRow& row, const SolverBody* bodies) {
-    const SolverBody& a = bodies[row.body[0]];
-    double v = row.normal.dot(a.velocity + a.angular_velocity.cross(row.anchor[0]));
-    if (row.body[1] >= 0) {
-        const SolverBody& b = bodies[row.body[1]];
-        v -= row.normal.dot(b.velocity + b.angular_velocity.cross(row.anchor[1]));
-    }
-    return v;
+IMPULSE_ROW_FUNCTION double row_normal_velocity(const ContactRow& row, const SolverBody* bodies) {
+    double relative[3] = {0.0, 0.0, 0.0};
+    add_point_velocity(bodies[row.body[0]], row.anchor[0], 1.0, relative);
+    if (row.body[1] >= 0) add_point_velocity(bodies[row.body[1]], row.anchor[1], -1.0, relative);
+    return along(row.normal, relative);
 }
 
-// lambda_n after the normal row: the unclamped total first, then push only. True when the clamp acted.
-inline double normal_row(double total, double normal_velocity, double normal_mass, const NormalTarget& target,
-                         double& unclamped) {
+// lambda_n after the normal row; `unclamped` receives the total before the push-only clamp.
+IMPULSE_ROW_FUNCTION double normal_row(double total, double normal_velocity, double normal_mass,
+                                       const NormalTarget& target, double& unclamped) {
     unclamped =
         total + normal_mass * target.mass_scale * (target.velocity - normal_velocity) - target.impulse_scale * total;
     return unclamped < 0.0 ? 0.0 : unclamped;
 }
 
-// The point of the disc |lambda_t| <= limit nearest `free` in K_tt's metric, for `free` outside it (see the
-// header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt free, Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
-inline Eigen::Vector2d project_on_cone(const Eigen::Matrix2d& k, const Eigen::Vector2d& free, double limit) {
-    const Eigen::Vector2d w = k * free;
-    Eigen::Vector2d lambda = free;
-    double nu = 0.0;
-    for (int step = 0; step < 16; ++step) {
-        const double size_squared = lambda.squaredNorm();
-        const double size = std::sqrt(size_squared);
-        if (size <= limit * (1.0 + 1e-13)) break;
-        // (K + nu 1)^-1 by its adjugate: [[k11 + nu, -k01], [-k10, k00 + nu]] / det.
-        const double a = k(0, 0) + nu, b = k(0, 1), c = k(1, 1) + nu;
-        const double inverse_det = 1.0 / (a * c - b * b);
-        const Eigen::Vector2d m_lambda((c * lambda.x() - b * lambda.y()) * inverse_det,
-                                       (a * lambda.y() - b * lambda.x()) * inverse_det);
-        // phi = 1/|lambda| - 1/limit,  dphi/dnu = lambda . (K + nu 1)^-1 lambda / |lambda|^3
-        const double slope = lambda.dot(m_lambda) / (size_squared * size);
-        nu -= (1.0 / size - 1.0 / limit) / slope;
-        const double a2 = k(0, 0) + nu, c2 = k(1, 1) + nu;
-        const double inverse_det2 = 1.0 / (a2 * c2 - b * b);
-        lambda = Eigen::Vector2d((c2 * w.x() - b * w.y()) * inverse_det2, (a2 * w.y() - b * w.x()) * inverse_det2);
+// The point of the disc |lambda_t| <= limit nearest (x, y) in K_tt's metric, for (x, y) outside it (see the
+// header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt (x, y), Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
+// `k` is K_tt as (11, 12, 22). Returns the point in (x, y).
+void project_on_cone(const std::array<double, 3>& k, double& x, double& y, double limit);
+
+// One visit's three rows, as plain numbers: the total before, unclamped and after, and the clamps that acted.
+struct RowVisit {
+    Axes before;
+    Axes unclamped;
+    Axes after;
+    bool pushed_only = false;  // the normal total would have pulled
+    bool sliding = false;      // the friction total left the cone
+
+    ImpulseClamp clamp() const {
+        return pushed_only && sliding ? ImpulseClamp::both
+               : pushed_only          ? ImpulseClamp::push_only
+               : sliding              ? ImpulseClamp::friction
+                                      : ImpulseClamp::none;
     }
-    return lambda * (limit / std::sqrt(lambda.squaredNorm()));  // exactly on the circle
+    Axes increment() const { return {after.n - before.n, after.t1 - before.t1, after.t2 - before.t2}; }
+    // As the trace records it.
+    AccumulatedImpulse accumulated() const {
+        return {vector_of(before), vector_of(unclamped), vector_of(after), clamp()};
+    }
+};
+
+// The friction rows (see the header) on the slip (s1, s2) once the normal change acts, the cone's radius
+// mu lambda_n: fills v.unclamped and v.after's tangential parts and v.sliding.
+IMPULSE_ROW_FUNCTION void friction_rows(const ContactRow& row, double s1, double s2, double limit, RowVisit& v) {
+    const std::array<double, 3>& m = row.tangent_mass;
+    double x = v.before.t1 - (m[0] * s1 + m[1] * s2);  // lambda_t,free = lambda_t - K_tt^-1 v_t'
+    double y = v.before.t2 - (m[1] * s1 + m[2] * s2);
+    v.unclamped.t1 = x;
+    v.unclamped.t2 = y;
+    v.sliding = x * x + y * y > limit * limit;
+    if (v.sliding) {
+        if (limit <= 0.0) {
+            x = y = 0.0;
+        } else if (row.tangent_invertible) {
+            project_on_cone(row.tangent_response, x, y, limit);
+        } else {
+            const double scale = limit / std::sqrt(x * x + y * y);
+            x *= scale;
+            y *= scale;
+        }
+    }
+    v.after.t1 = x;
+    v.after.t2 = y;
 }
 
-// lambda_t after the friction rows (see the header), from the total before, the slip v_t' once the normal
-// change acts, and the cone's radius mu lambda_n. `unclamped` receives lambda_t,free; returns whether the
-// contact slides (the cone clamped).
-inline bool friction_rows(const ContactRow& row, const Eigen::Vector2d& total, const Eigen::Vector2d& slip,
-                          double limit, Eigen::Vector2d& unclamped, Eigen::Vector2d& after) {
-    unclamped = total - row.tangent_mass * slip;
-    if (unclamped.squaredNorm() <= limit * limit) {
-        after = unclamped;
-        return false;
-    }
-    if (limit <= 0.0) {
-        after = Eigen::Vector2d::Zero();
-    } else if (row.tangent_invertible) {
-        after = project_on_cone(row.tangent_response, unclamped, limit);
-    } else {
-        after = unclamped * (limit / std::sqrt(unclamped.squaredNorm()));
-    }
-    return true;
-}
-
-inline ImpulseClamp clamp_of(bool push_only, bool friction) {
-    return push_only && friction ? ImpulseClamp::both
-           : push_only           ? ImpulseClamp::push_only
-           : friction            ? ImpulseClamp::friction
-                                 : ImpulseClamp::none;
-}
-
-// One visit's three rows on the velocity `velocity` (row_velocity): the total before, unclamped and after,
-// and which clamp acted. The row's total is not changed here (apply_increment does, with the bodies).
-inline AccumulatedImpulse solve_rows(const ContactRow& row, const Vec3& velocity, const NormalTarget& target) {
-    AccumulatedImpulse a;
-    a.before = row.total_impulse;
-    double unclamped_normal;
-    const double normal = normal_row(a.before.x(), velocity.x(), row.normal_mass, target, unclamped_normal);
-    a.unclamped.x() = unclamped_normal;
-    a.after.x() = normal;
-    bool sliding = false;
+// One visit's three rows on the velocity `velocity` (row_velocity). The row's total is not changed here.
+IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& velocity, const NormalTarget& target) {
+    RowVisit v;
+    v.before = row.total_impulse;
+    v.after.n = normal_row(v.before.n, velocity.n, row.normal_mass, target, v.unclamped.n);
+    v.pushed_only = v.unclamped.n < 0.0;
     if (row.friction != 0.0) {
-        const Eigen::Vector2d slip = velocity.tail<2>() + row.normal_to_tangent * (normal - a.before.x());
-        Eigen::Vector2d unclamped, after;
-        sliding = friction_rows(row, a.before.tail<2>(), slip, row.friction * normal, unclamped, after);
-        a.unclamped.tail<2>() = unclamped;
-        a.after.tail<2>() = after;
+        // The slip once the normal change acts: v_t' = v_t + K_tn (lambda_n after - before).
+        const double change = v.after.n - v.before.n;
+        friction_rows(row, velocity.t1 + row.normal_to_tangent[0] * change,
+                      velocity.t2 + row.normal_to_tangent[1] * change, row.friction * v.after.n, v);
     } else {
-        a.unclamped.tail<2>() = a.before.tail<2>();
-        a.after.tail<2>() = Eigen::Vector2d::Zero();
+        v.unclamped.t1 = v.before.t1;
+        v.unclamped.t2 = v.before.t2;
     }
-    a.clamp = clamp_of(unclamped_normal < 0.0, sliding);
-    return a;
+    return v;
 }
 
 // The normal row alone (soft step's restitution, the split impulse's pushes): tangential totals unchanged.
-inline AccumulatedImpulse solve_normal_row(const ContactRow& row, double normal_velocity, const NormalTarget& target) {
-    AccumulatedImpulse a;
-    a.before = a.unclamped = a.after = row.total_impulse;
-    double unclamped;
-    a.after.x() = normal_row(a.before.x(), normal_velocity, row.normal_mass, target, unclamped);
-    a.unclamped.x() = unclamped;
-    a.clamp = clamp_of(unclamped < 0.0, false);
-    return a;
+IMPULSE_ROW_FUNCTION RowVisit solve_normal_row(const ContactRow& row, double normal_velocity,
+                                               const NormalTarget& target) {
+    RowVisit v;
+    v.before = v.unclamped = v.after = row.total_impulse;
+    v.after.n = normal_row(v.before.n, normal_velocity, row.normal_mass, target, v.unclamped.n);
+    v.pushed_only = v.unclamped.n < 0.0;
+    return v;
 }
 
 // A total from elsewhere (last frame's, re-projected on this frame's basis) put inside the limits a total
 // obeys: lambda_n >= 0 and |lambda_t| <= mu lambda_n (scaled back: there is no slip to oppose yet).
-inline AccumulatedImpulse within_limits(const Vec3& total, double friction) {
-    AccumulatedImpulse a;
-    a.before = Vec3::Zero();
-    a.unclamped = a.after = total;
-    const bool pulled = total.x() < 0.0;
-    if (pulled) a.after.x() = 0.0;
-    const double limit = friction * a.after.x();
-    const double tangential = a.after.tail<2>().squaredNorm();
-    const bool coned = tangential > limit * limit;
-    if (coned) a.after.tail<2>() *= tangential > 0.0 ? limit / std::sqrt(tangential) : 0.0;
-    a.clamp = clamp_of(pulled, coned);
-    return a;
+inline RowVisit within_limits(const Vec3& total, double friction) {
+    RowVisit v;
+    v.unclamped = v.after = axes_of(total);
+    v.pushed_only = total.x() < 0.0;
+    if (v.pushed_only) v.after.n = 0.0;
+    const double limit = friction * v.after.n;
+    const double tangential = v.after.t1 * v.after.t1 + v.after.t2 * v.after.t2;
+    v.sliding = tangential > limit * limit;
+    if (v.sliding) {
+        const double scale = tangential > 0.0 ? limit / std::sqrt(tangential) : 0.0;
+        v.after.t1 *= scale;
+        v.after.t2 *= scale;
+    }
+    return v;
 }
 
-// The impulse `increment` (contact coordinates) in world coordinates, g = C increment.
-inline Vec3 world_impulse(const ContactRow& row, const Vec3& increment) {
-    return row.normal * increment.x() + row.tangent1 * increment.y() + row.tangent2 * increment.z();
+// The impulse `a` (contact coordinates) in world coordinates, g = C a.
+IMPULSE_ROW_FUNCTION Vec3 world_impulse(const ContactRow& row, const Axes& a) {
+    return {row.normal.x() * a.n + row.tangent1.x() * a.t1 + row.tangent2.x() * a.t2,
+            row.normal.y() * a.n + row.tangent1.y() * a.t1 + row.tangent2.y() * a.t2,
+            row.normal.z() * a.n + row.tangent1.z() * a.t1 + row.tangent2.z() * a.t2};
 }
 
-// Step 7: applies g (world) to the row's bodies, +g to body 0 and -g to body 1. With `Change` a VelocityChange,
+// Step 7: applies g (world) to the row's bodies, +g to body 0 and -g to body 1. With `Change` a VelocityChange*,
 // also records exactly what was added; with std::nullptr_t, records nothing.
+// Step 7 for one body: adds g m^-1 and I^-1 (r x g) to it; with `Change` a VelocityChange*, records exactly what
+// was added as its body `slot`'s values.
 template <typename Change>
-inline void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse, Change change) {
-    for (int i = 0; i < 2; ++i) {
-        if (row.body[i] < 0) continue;
-        SolverBody& body = bodies[row.body[i]];
-        const Vec3 g = i == 0 ? impulse : Vec3(-impulse);
-        const Vec3 torque = row.anchor[i].cross(g);                  // u = q_rel x g  (14.2)
-        const Vec3 velocity_change = g * body.inverse_mass;          // (7.5)
-        const Vec3 rotation_change = body.inverse_inertia * torque;  // I^-1 u  (14.1)
-        body.velocity += velocity_change;
-        body.angular_velocity += rotation_change;
-        if constexpr (!std::is_same_v<Change, std::nullptr_t>) {
-            change->impulsive_torque[i] = torque;
-            change->velocity_change[i] = velocity_change;
-            change->rotation_change[i] = rotation_change;
-        }
+IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, double gx, double gy, double gz, int slot,
+                                        Change change) {
+    const double ux = r.y() * gz - r.z() * gy, uy = r.z() * gx - r.x() * gz,
+                 uz = r.x() * gy - r.y() * gx;   // u = q_rel x g  (14.2)
+    const double m = body.inverse_mass;          // (7.5)
+    const Mat3& inertia = body.inverse_inertia;  // I^-1 u  (14.1)
+    const double wx = inertia(0, 0) * ux + inertia(0, 1) * uy + inertia(0, 2) * uz;
+    const double wy = inertia(1, 0) * ux + inertia(1, 1) * uy + inertia(1, 2) * uz;
+    const double wz = inertia(2, 0) * ux + inertia(2, 1) * uy + inertia(2, 2) * uz;
+    body.velocity.x() += gx * m;
+    body.velocity.y() += gy * m;
+    body.velocity.z() += gz * m;
+    body.angular_velocity.x() += wx;
+    body.angular_velocity.y() += wy;
+    body.angular_velocity.z() += wz;
+    if constexpr (!std::is_same_v<Change, std::nullptr_t>) {
+        change->impulsive_torque[slot] = Vec3(ux, uy, uz);
+        change->velocity_change[slot] = Vec3(gx * m, gy * m, gz * m);
+        change->rotation_change[slot] = Vec3(wx, wy, wz);
     }
 }
 
-// |K (after - before)|: how much a visit changed its own contact's velocity (m/s), squared. A norm, so the
-// early stop of a sweeping method does not depend on the tangent basis.
-inline double velocity_change_squared(const ContactRow& row, const Vec3& increment) {
-    const double k_nn = 1.0 / row.normal_mass;
-    const Eigen::Vector2d t = increment.tail<2>();
-    const double normal = k_nn * increment.x() + row.normal_to_tangent.dot(t);
-    const Eigen::Vector2d tangential = row.normal_to_tangent * increment.x() + row.tangent_response * t;
-    return normal * normal + tangential.squaredNorm();
+// Step 7: applies g (world) to the row's bodies, +g to body 0 and -g to body 1. With `Change` a VelocityChange*,
+// also records exactly what was added; with std::nullptr_t, records nothing.
+template <typename Change>
+IMPULSE_ROW_FUNCTION void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse, Change change) {
+    apply_to_body(bodies[row.body[0]], row.anchor[0], impulse.x(), impulse.y(), impulse.z(), 0, change);
+    if (row.body[1] >= 0)
+        apply_to_body(bodies[row.body[1]], row.anchor[1], -impulse.x(), -impulse.y(), -impulse.z(), 1, change);
 }
 
-// Contacts of a frame that share a memory key (hand-written contacts carry no features): only the first is
-// warm started, since the memory keeps the first one's total. For each row, last frame's total re-projected
-// on its basis and put within its limits, or nothing.
-std::vector<std::optional<AccumulatedImpulse>> remembered_totals(std::span<const ContactRow> rows,
-                                                                 std::span<const PreparedContact> contacts,
-                                                                 const ContactMemory& memory);
+// |K (after - before)|^2: how much a visit changed its own contact's velocity (m/s), squared. A norm, so the
+// early stop of a sweeping method does not depend on the tangent basis.
+IMPULSE_ROW_FUNCTION double velocity_change_squared(const ContactRow& row, const Axes& d) {
+    const std::array<double, 2>& k_tn = row.normal_to_tangent;
+    const std::array<double, 3>& k_tt = row.tangent_response;
+    const double n = row.normal_response * d.n + k_tn[0] * d.t1 + k_tn[1] * d.t2;
+    const double t1 = k_tn[0] * d.n + k_tt[0] * d.t1 + k_tt[1] * d.t2;
+    const double t2 = k_tn[1] * d.n + k_tt[1] * d.t1 + k_tt[2] * d.t2;
+    return n * n + t1 * t1 + t2 * t2;
+}
 
-// Stores every row's total, in world coordinates, as this frame's memory.
-void remember_totals(std::span<const ContactRow> rows, std::span<const PreparedContact> contacts,
-                     ContactMemory& memory);
+// Last frame's totals for this frame's rows, each remembered impulse given to one contact only: contacts of a
+// frame that share a memory key (hand-written contacts carry no features) leave it to the first, since the
+// memory kept the first one's total.
+class RememberedTotals {
+public:
+    explicit RememberedTotals(const ContactMemory& memory) : memory_(memory), taken_(memory.size(), 0) {}
+
+    // The remembered total of the row whose contact has `key` (contact_key), re-projected on this frame's basis
+    // and put within the row's limits, or nothing.
+    std::optional<RowVisit> of(const ContactRow& row, const ContactKey& key);
+
+private:
+    const ContactMemory& memory_;
+    std::vector<char> taken_;
+};
+
+// Stores every row's total, in world coordinates, under its contact's key (keys[r] for rows[r]), as this
+// frame's memory.
+void remember_totals(std::span<const ContactRow> rows, std::span<const ContactKey> keys, ContactMemory& memory);
 
 }  // namespace impulse

@@ -14,6 +14,7 @@
 #include "resolver/settings.hpp"
 #include "world/integrate.hpp"
 
+#include <span>
 #include <vector>
 
 namespace impulse {
@@ -29,6 +30,7 @@ struct Forces {
 struct FrameContext {
     std::vector<RigidBody>& bodies;          // changed in place
     std::vector<PreparedContact>& contacts;  // steps 1-5 and the bookkeeping the book's loops update
+    std::span<const MassProperties> mass;    // per body, as the contacts were prepared with
     const ResolverSettings& settings;
     Recorder& recorder;
     ContactMemory* memory;  // warm-starting methods' impulses from last frame, replaced at the end (may be null)

@@ -35,6 +35,7 @@
 // every contact sharing a body), but with desired delta v read in this method's terms, target - v_n.
 
 #include "methods/contact_rows.hpp"
+#include "methods/solver_common.hpp"
 #include "methods/method.hpp"
 #include "resolver/bookkeeping.hpp"
 #include "resolver/worst_first_selector.hpp"
@@ -54,19 +55,26 @@ ImpulseModel model_of(double friction, ImpulseClamp clamp) {
 class ProjectedGaussSeidel {
 public:
     explicit ProjectedGaussSeidel(FrameContext& frame)
-        : frame_(frame), bodies_(solver_bodies(frame.bodies, frame.contacts)) {
+        : frame_(frame), bodies_(solver_bodies(frame.bodies, frame.mass)) {
+        rows_.reserve(frame.contacts.size());
+        targets_.reserve(frame.contacts.size());
+        active_.reserve(frame.contacts.size());
+        keys_.reserve(frame.contacts.size());
         for (int i = 0; i < static_cast<int>(frame.contacts.size()); ++i) {
             const PreparedContact& c = frame.contacts[static_cast<std::size_t>(i)];
             const ContactPreparation& d = c.derivation;
             if (d.inert) continue;  // nothing can move it: no visits
-            ContactRow row = contact_row(i, c);
+            ContactRow& row = rows_.emplace_back();
+            fill_contact_row(row, i, c, bodies_.data());
             if (frame.settings.refinements.tangential_acceleration_velocity)
                 for (int b = 0; b < 2; ++b)
-                    if (const auto& term = d.contact_velocity.tangential_acceleration_velocity[b])
-                        row.slip_offset += body_sign(b) * term->tail<2>();
-            rows_.push_back(row);
+                    if (const auto& term = d.contact_velocity.tangential_acceleration_velocity[b]) {
+                        row.slip_offset[0] += body_sign(b) * term->y();
+                        row.slip_offset[1] += body_sign(b) * term->z();
+                    }
             targets_.push_back(d.desired_delta_velocity.separating_velocity +
                                d.desired_delta_velocity.desired_delta_velocity);
+            keys_.push_back(contact_key(d));
             active_.push_back(i);
         }
     }
@@ -76,14 +84,14 @@ public:
     // Last frame's totals, re-projected and clamped, applied before the first sweep. Returns how many.
     template <bool recording>
     int warm_start(const ContactMemory& memory) {
-        const std::vector<std::optional<AccumulatedImpulse>> remembered =
-            remembered_totals(rows_, frame_.contacts, memory);
+        RememberedTotals remembered(memory);
         int started = 0;
         for (std::size_t r = 0; r < rows_.size(); ++r) {
-            if (!remembered[r]) continue;
-            Vec3 velocity = Vec3::Zero();
+            const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]);
+            if (!total) continue;
+            Axes velocity;
             if constexpr (recording) velocity = row_velocity(rows_[r], bodies_.data());
-            visit<recording>(r, *remembered[r], SweepPlace{0, 0, SolverStage::warm_start}, velocity);
+            visit<recording>(r, *total, SweepPlace{0, 0, SolverStage::warm_start}, velocity);
             warm_started_.push_back(rows_[r].contact);
             ++started;
         }
@@ -97,11 +105,10 @@ public:
         double largest = 0.0;
         SolverBody* bodies = bodies_.data();
         for (std::size_t r = 0; r < rows_.size(); ++r) {
-            const ContactRow& row = rows_[r];
-            const Vec3 velocity = row_velocity(row, bodies);
-            const AccumulatedImpulse a = solve_rows(row, velocity, NormalTarget{targets_[r]});
-            largest = std::max(largest, velocity_change_squared(row, a.after - a.before));
-            visit<recording>(r, a, SweepPlace{0, pass, SolverStage::solve}, velocity);
+            const Axes velocity = row_velocity(rows_[r], bodies);
+            const RowVisit v = solve_rows(rows_[r], velocity, NormalTarget{targets_[r]});
+            largest = std::max(largest, velocity_change_squared(rows_[r], v.increment()));
+            visit<recording>(r, v, SweepPlace{0, pass, SolverStage::solve}, velocity);
         }
         return largest;
     }
@@ -109,7 +116,7 @@ public:
     // Writes the velocities back to the bodies, remembers the totals.
     void finish(ContactMemory* memory) {
         store_velocities(bodies_, frame_.bodies);
-        if (memory) remember_totals(rows_, frame_.contacts, *memory);
+        if (memory) remember_totals(rows_, keys_, *memory);
     }
 
     // The contacts of the last visits, in visit order: every sweep visits every active contact in index order.
@@ -119,25 +126,25 @@ public:
     int iterations() const { return iterations_; }
 
 private:
-    // Applies the change of row r's total, a.after - a.before, and (recording) reports the visit.
+    // Applies the change of row r's total, v.after - v.before, and (recording) reports the visit.
     template <bool recording>
-    void visit(std::size_t r, const AccumulatedImpulse& a, const SweepPlace& place, const Vec3& velocity) {
+    [[gnu::always_inline]] void visit(std::size_t r, const RowVisit& v, const SweepPlace& place, const Axes& velocity) {
         ContactRow& row = rows_[r];
-        const Vec3 increment = a.after - a.before;
+        const Axes increment = v.increment();
         const Vec3 impulse = world_impulse(row, increment);
-        row.total_impulse = a.after;
+        row.total_impulse = v.after;
         if constexpr (!recording) {
             apply_impulse(row, bodies_.data(), impulse, nullptr);
         } else {
             VelocityChange change;
             apply_impulse(row, bodies_.data(), impulse, &change);
-            record(r, a, place, velocity, increment, impulse, change);
+            record(r, v, place, vector_of(velocity), vector_of(increment), impulse, change);
         }
         ++iterations_;
     }
 
-    void record(std::size_t r, const AccumulatedImpulse& a, const SweepPlace& place, const Vec3& velocity,
-                const Vec3& increment, const Vec3& impulse, const VelocityChange& change) {
+    void record(std::size_t r, const RowVisit& v, const SweepPlace& place, const Vec3& velocity, const Vec3& increment,
+                const Vec3& impulse, const VelocityChange& change) {
         const int i = rows_[r].contact;
         const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(i)].derivation;
         VelocityResolution resolution;
@@ -145,7 +152,7 @@ private:
         resolution.desired_delta_velocity = d.desired_delta_velocity;
         resolution.desired_delta_velocity.separating_velocity = velocity.x();
         resolution.desired_delta_velocity.desired_delta_velocity = targets_[r] - velocity.x();
-        resolution.impulse.model = model_of(d.friction, a.clamp);
+        resolution.impulse.model = model_of(d.friction, v.clamp());
         resolution.impulse.impulse_contact = increment;
         resolution.impulse.impulse_world = impulse;
         resolution.velocity_change = change;
@@ -154,7 +161,7 @@ private:
                                     .desired_delta_velocity = targets_[r] - velocity.x(),
                                     .epsilon = frame_.settings.velocity_epsilon,
                                     .sweep = place,
-                                    .accumulated = a,
+                                    .accumulated = v.accumulated(),
                                     .resolution = resolution,
                                     .updates = {}};
         // The bookkeeping is never read by this method; it is kept up to date only to give the updates, with
@@ -180,6 +187,7 @@ private:
     std::vector<ContactRow> rows_;   // the active contacts, in index order
     std::vector<double> targets_;    // per row: the normal velocity it asks for (m/s)
     std::vector<int> active_;        // per row: its contact's index
+    std::vector<ContactKey> keys_;   // per row: its contact's key in the ContactMemory
     std::vector<int> warm_started_;  // the contacts warm started, in order
     int iterations_ = 0;
     // Only to give the recorder its updates:

@@ -5,6 +5,7 @@
 #include "methods/soft_step.hpp"
 
 #include "methods/contact_rows.hpp"
+#include "methods/solver_common.hpp"
 #include "world/integrate.hpp"
 
 #include <algorithm>
@@ -46,7 +47,7 @@ public:
           settings_(frame.settings),
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
-          bodies_(solver_bodies(frame.bodies, frame.contacts)) {
+          bodies_(solver_bodies(frame.bodies, frame.mass)) {
         for (const RigidBody& body : frame.bodies) {
             start_position_.push_back(body.position);
             start_orientation_.push_back(body.orientation);
@@ -54,23 +55,27 @@ public:
         moved_.assign(frame.bodies.size(), Vec3::Zero());
         turned_.assign(frame.bodies.size(), Mat3::Identity());
         const double cutoff = settings_.refinements.restitution_cutoff;
+        rows_.reserve(frame.contacts.size());
+        soft_.reserve(frame.contacts.size());
+        active_.reserve(frame.contacts.size());
         for (int i = 0; i < static_cast<int>(frame.contacts.size()); ++i) {
             const PreparedContact& p = frame.contacts[static_cast<std::size_t>(i)];
             const ContactPreparation& d = p.derivation;
             if (d.inert) continue;  // nothing can move it: no visits
-            rows_.push_back(contact_row(i, p));
+            fill_contact_row(rows_.emplace_back(), i, p, bodies_.data());
             SoftContact c;
             c.penetration = d.penetration;
             c.relative_velocity = d.contact_velocity.contact_velocity.x();
             c.bounces = d.restitution != 0.0 && c.relative_velocity < -cutoff;
             soft_.push_back(c);
             active_.push_back(i);
+            keys_.push_back(contact_key(d));
         }
         if (settings_.warm_start && frame.memory) {
-            const std::vector<std::optional<AccumulatedImpulse>> remembered =
-                remembered_totals(rows_, frame.contacts, *frame.memory);
+            RememberedTotals remembered(*frame.memory);
             for (std::size_t r = 0; r < rows_.size(); ++r)
-                if (remembered[r]) rows_[r].total_impulse = remembered[r]->after;
+                if (const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]))
+                    rows_[r].total_impulse = total->after;
         }
     }
 
@@ -105,16 +110,16 @@ public:
         store_velocities(bodies_, frame_.bodies);
     }
 
-    void remember(ContactMemory& memory) const { remember_totals(rows_, frame_.contacts, memory); }
+    void remember(ContactMemory& memory) const { remember_totals(rows_, keys_, memory); }
 
     int visits() const { return visits_; }
 
 private:
-    // One visit before it is applied: the accumulated impulse and, for the record, what it aimed at.
+    // One visit before it is applied: the rows' totals and, for the record, what it aimed at.
     struct Visit {
-        AccumulatedImpulse impulse;
-        Vec3 contact_velocity = Vec3::Zero();  // when visited (kept for the record only by the warm start)
-        double desired_delta_velocity = 0.0;   // target - current normal velocity (see the header)
+        RowVisit impulse;
+        Axes contact_velocity;                // when visited (kept for the record only by the warm start)
+        double desired_delta_velocity = 0.0;  // target - current normal velocity (see the header)
         std::optional<double> position_bias;
     };
 
@@ -143,7 +148,7 @@ private:
             if (row.body[i] < 0) continue;
             const auto b = static_cast<std::size_t>(row.body[i]);
             const Vec3& anchor = row.anchor[i];
-            separated += body_sign(i) * (moved_[b] + (turned_[b] * anchor - anchor));
+            separated += body_sign(i) * (moved_[b] + (times(turned_[b], anchor) - anchor));
         }
         return frame_.contacts[static_cast<std::size_t>(row.contact)].derivation.penetration -
                separated.dot(row.normal);
@@ -160,57 +165,57 @@ private:
     }
 
     template <bool recording>
-    Visit warm_start(std::size_t r) const {
+    [[gnu::always_inline]] Visit warm_start(std::size_t r) const {
         // The sub-step's velocities start without any contact impulse: the warm start applies all of lambda.
         const ContactRow& row = rows_[r];
         Visit v;
-        v.impulse.before = Vec3::Zero();
         v.impulse.unclamped = v.impulse.after = row.total_impulse;
         if constexpr (recording) {
             v.contact_velocity = row_velocity(row, bodies_.data());
-            const Vec3& total = row.total_impulse;
-            v.desired_delta_velocity = total.x() / row.normal_mass + row.normal_to_tangent.dot(total.tail<2>());
+            const Axes& total = row.total_impulse;
+            v.desired_delta_velocity = row.normal_response * total.n + row.normal_to_tangent[0] * total.t1 +
+                                       row.normal_to_tangent[1] * total.t2;  // (K lambda)_n
         }
         return v;
     }
 
-    Visit solve(std::size_t r, bool use_bias) const {
+    [[gnu::always_inline]] Visit solve(std::size_t r, bool use_bias) const {
         const ContactRow& row = rows_[r];
-        const Vec3 velocity = row_velocity(row, bodies_.data());
+        const Axes velocity = row_velocity(row, bodies_.data());
         const NormalTarget target = target_at(soft_[r].penetration, use_bias);
         Visit v;
         v.impulse = solve_rows(row, velocity, target);
         v.contact_velocity = velocity;
         v.position_bias = target.velocity;
-        v.desired_delta_velocity = target.velocity - velocity.x();
+        v.desired_delta_velocity = target.velocity - velocity.n;
         return v;
     }
 
     Visit restitution(std::size_t r) const {
         const ContactRow& row = rows_[r];
         const double c_used = frame_.contacts[static_cast<std::size_t>(row.contact)].derivation.restitution;
-        const Vec3 velocity = row_velocity(row, bodies_.data());
+        const Axes velocity = row_velocity(row, bodies_.data());
         // The target is -c v_n(before): delta lambda_n = -m_n (v_n + c v_n(before)), total kept >= 0.
         const NormalTarget target{-c_used * soft_[r].relative_velocity};
         Visit v;
-        v.impulse = solve_normal_row(row, velocity.x(), target);
+        v.impulse = solve_normal_row(row, velocity.n, target);
         v.contact_velocity = velocity;
-        v.desired_delta_velocity = target.velocity - velocity.x();
+        v.desired_delta_velocity = target.velocity - velocity.n;
         return v;
     }
 
     // Applies after - before to the bodies by step 7, keeps the total, and (recording) records the visit.
     template <bool recording>
-    void visit(std::size_t r, const SweepPlace& place, const Visit& v) {
+    [[gnu::always_inline]] void visit(std::size_t r, const SweepPlace& place, const Visit& v) {
         ContactRow& row = rows_[r];
-        const Vec3 increment = v.impulse.after - v.impulse.before;
+        const Axes increment = v.impulse.increment();
         const Vec3 impulse = world_impulse(row, increment);
         row.total_impulse = v.impulse.after;
-        soft_[r].most_pushed = std::max(soft_[r].most_pushed, row.total_impulse.x());
+        soft_[r].most_pushed = std::max(soft_[r].most_pushed, row.total_impulse.n);
         if constexpr (recording) {
             VelocityChange change;
             apply_impulse(row, bodies_.data(), impulse, &change);
-            record(r, place, v, increment, impulse, change);
+            record(r, place, v, vector_of(increment), impulse, change);
         } else {
             apply_impulse(row, bodies_.data(), impulse, nullptr);
         }
@@ -222,10 +227,10 @@ private:
         const ContactRow& row = rows_[r];
         const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(row.contact)].derivation;
         const bool bouncing = place.stage == SolverStage::restitution;
-        const bool sliding = v.impulse.clamp == ImpulseClamp::friction || v.impulse.clamp == ImpulseClamp::both;
+        const bool sliding = v.impulse.sliding;
         VelocityResolution resolution;
-        resolution.contact_velocity = v.contact_velocity;
-        resolution.desired_delta_velocity = {.separating_velocity = v.contact_velocity.x(),
+        resolution.contact_velocity = vector_of(v.contact_velocity);
+        resolution.desired_delta_velocity = {.separating_velocity = v.contact_velocity.n,
                                              .restitution = d.restitution,
                                              .restitution_cutoff = settings_.refinements.restitution_cutoff,
                                              .restitution_cutoff_applied = d.restitution != 0.0 && !soft_[r].bounces,
@@ -247,7 +252,7 @@ private:
                                           .desired_delta_velocity = v.desired_delta_velocity,
                                           .epsilon = 0.0,
                                           .sweep = place,
-                                          .accumulated = v.impulse,
+                                          .accumulated = v.impulse.accumulated(),
                                           .resolution = resolution,
                                           .updates = {}};
         frame_.recorder.velocity_iteration(iteration);
@@ -261,6 +266,7 @@ private:
     std::vector<ContactRow> rows_;   // the active contacts, in index order
     std::vector<SoftContact> soft_;  // beside each row
     std::vector<int> active_;        // each row's contact
+    std::vector<ContactKey> keys_;   // each row's contact's key in the ContactMemory
     std::vector<Vec3> start_position_;
     std::vector<Quat> start_orientation_;
     std::vector<Vec3> moved_;   // per body: its move since the frame began

@@ -53,7 +53,7 @@ PhaseOutcome push_apart(FrameContext& frame) {
     std::vector<PreparedContact>& contacts = frame.contacts;
     const double h = settings.duration;
     // The pseudo velocities: zero at the start of every frame, with the bodies' mass as prepared.
-    std::vector<SolverBody> pseudo = solver_bodies(frame.bodies, contacts);
+    std::vector<SolverBody> pseudo = solver_bodies(frame.bodies, frame.mass);
     for (SolverBody& p : pseudo) p.velocity = p.angular_velocity = Vec3::Zero();
     std::vector<ContactRow> rows;
     std::vector<double> targets;
@@ -61,7 +61,7 @@ PhaseOutcome push_apart(FrameContext& frame) {
     for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
         const PreparedContact& c = contacts[static_cast<std::size_t>(i)];
         if (c.derivation.inert) continue;
-        rows.push_back(contact_row(i, c, false));
+        fill_contact_row(rows.emplace_back(), i, c, pseudo.data(), false);
         targets.push_back(position_bias(c.derivation.penetration, settings.position_bias, h));
         active.push_back(i);
     }
@@ -77,14 +77,13 @@ PhaseOutcome push_apart(FrameContext& frame) {
         double largest = 0.0;
         for (std::size_t r = 0; r < rows.size(); ++r) {
             ContactRow& row = rows[r];
-            const AccumulatedImpulse a =
-                solve_normal_row(row, row_normal_velocity(row, pseudo.data()), NormalTarget{targets[r]});
-            row.total_impulse = a.after;
-            const double push = a.after.x() - a.before.x();
+            const RowVisit v = solve_normal_row(row, row_normal_velocity(row, pseudo.data()), NormalTarget{targets[r]});
+            row.total_impulse = v.after;
+            const double push = v.after.n - v.before.n;
             largest = std::max(largest, std::abs(push) / row.normal_mass);
 
             VelocityChange change;
-            apply_impulse(row, pseudo.data(), row.normal * push, &change);
+            apply_impulse(row, pseudo.data(), Vec3(row.normal * push), &change);
             PositionChange moves;
             for (int b = 0; b < 2; ++b) {
                 if (row.body[b] < 0) continue;

@@ -13,7 +13,7 @@ ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<con
     std::vector<PreparedContact> prepared = prepare_contacts(contacts, bodies, mass, settings);
     recorder.contacts_prepared(prepared);
 
-    FrameContext context{bodies, prepared, settings, recorder, memory, forces};
+    FrameContext context{bodies, prepared, mass, settings, recorder, memory, forces};
     const MethodRow<VelocityMethod>& velocities = method_row(settings.velocity_method);
     const MethodRow<PositionMethod>& positions = method_row(position_method_in_effect(settings));
     ResolutionSummary summary;

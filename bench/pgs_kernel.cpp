@@ -66,19 +66,19 @@ inline double dot(const double* a, const double* b) {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// The disc point nearest `free` in K_tt's metric (the same Newton iteration as methods/contact_rows.hpp).
-inline void project(const double* k, double& x, double& y, double limit) {
+// The disc point nearest `free` in K_tt's metric (the same Newton iteration as methods/contact_rows.cpp).
+inline void project(const double* k, const double* k_inverse, double& x, double& y, double limit) {
     const double wx = k[0] * x + k[1] * y, wy = k[1] * x + k[2] * y;
-    double nu = 0.0;
+    const double inverse_limit = 1.0 / limit;
+    double m00 = k_inverse[0], m01 = k_inverse[1], m11 = k_inverse[2], nu = 0.0;
     for (int step = 0; step < 16; ++step) {
         const double s2 = x * x + y * y, s = std::sqrt(s2);
         if (s <= limit * (1.0 + 1e-13)) break;
+        nu += s2 * (s * inverse_limit - 1.0) / (x * (m00 * x + m01 * y) + y * (m01 * x + m11 * y));
         const double a = k[0] + nu, c = k[2] + nu, inv = 1.0 / (a * c - k[1] * k[1]);
-        const double mx = (c * x - k[1] * y) * inv, my = (a * y - k[1] * x) * inv;
-        nu -= (1.0 / s - 1.0 / limit) / ((x * mx + y * my) / (s2 * s));
-        const double a2 = k[0] + nu, c2 = k[2] + nu, inv2 = 1.0 / (a2 * c2 - k[1] * k[1]);
-        x = (c2 * wx - k[1] * wy) * inv2;
-        y = (a2 * wy - k[1] * wx) * inv2;
+        m00 = c * inv, m01 = -k[1] * inv, m11 = a * inv;
+        x = m00 * wx + m01 * wy;
+        y = m01 * wx + m11 * wy;
     }
     const double scale = limit / std::sqrt(x * x + y * y);
     x *= scale;
@@ -125,7 +125,7 @@ int lean_sweeps(std::vector<LeanBody>& bodies, std::vector<LeanContact>& contact
                     if (limit <= 0.0)
                         x = y = 0.0;
                     else
-                        project(c.k_tt, x, y, limit);
+                        project(c.k_tt, c.k_tt_inv, x, y, limit);
                 }
                 d1 = x - c.lambda[1];
                 d2 = y - c.lambda[2];

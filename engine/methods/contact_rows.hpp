@@ -180,8 +180,9 @@ IMPULSE_ROW_FUNCTION double normal_row(double total, double normal_velocity, dou
 
 // The point of the disc |lambda_t| <= limit nearest (x, y) in K_tt's metric, for (x, y) outside it (see the
 // header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt (x, y), Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
-// `k` is K_tt as (11, 12, 22). Returns the point in (x, y).
-void project_on_cone(const std::array<double, 3>& k, double& x, double& y, double limit);
+// `k` is K_tt as (11, 12, 22), `k_inverse` its inverse. Returns the point in (x, y).
+void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse, double& x, double& y,
+                     double limit);
 
 // One visit's three rows, as plain numbers: the total before, unclamped and after, and the clamps that acted.
 struct RowVisit {
@@ -204,46 +205,50 @@ struct RowVisit {
     }
 };
 
-// The friction rows (see the header) on the slip (s1, s2) once the normal change acts, the cone's radius
-// mu lambda_n: fills v.unclamped and v.after's tangential parts and v.sliding.
-IMPULSE_ROW_FUNCTION void friction_rows(const ContactRow& row, double s1, double s2, double limit, RowVisit& v) {
+// The friction rows (see the header) on the slip (s1, s2) once the normal change acts, from the tangential total
+// (x, y) before, and the cone's radius mu lambda_n: (x, y) becomes lambda_t,free in (free_x, free_y) and the total
+// after in (x, y); returns whether the contact slides (the cone clamped). Plain doubles in and out, so the caller's
+// values stay in registers.
+IMPULSE_ROW_FUNCTION bool friction_rows(const ContactRow& row, double s1, double s2, double limit, double& free_x,
+                                        double& free_y, double& x, double& y) {
     const std::array<double, 3>& m = row.tangent_mass;
-    double x = v.before.t1 - (m[0] * s1 + m[1] * s2);  // lambda_t,free = lambda_t - K_tt^-1 v_t'
-    double y = v.before.t2 - (m[1] * s1 + m[2] * s2);
-    v.unclamped.t1 = x;
-    v.unclamped.t2 = y;
-    v.sliding = x * x + y * y > limit * limit;
-    if (v.sliding) {
-        if (limit <= 0.0) {
-            x = y = 0.0;
-        } else if (row.tangent_invertible) {
-            project_on_cone(row.tangent_response, x, y, limit);
-        } else {
-            const double scale = limit / std::sqrt(x * x + y * y);
-            x *= scale;
-            y *= scale;
-        }
+    free_x = x - (m[0] * s1 + m[1] * s2);  // lambda_t,free = lambda_t - K_tt^-1 v_t'
+    free_y = y - (m[1] * s1 + m[2] * s2);
+    x = free_x;
+    y = free_y;
+    if (x * x + y * y <= limit * limit) return false;
+    if (limit <= 0.0) {
+        x = y = 0.0;
+    } else if (row.tangent_invertible) {
+        double px = x, py = y;  // (a copy whose address the out-of-line projection may take)
+        project_on_cone(row.tangent_response, row.tangent_mass, px, py, limit);
+        x = px;
+        y = py;
+    } else {
+        const double scale = limit / std::sqrt(x * x + y * y);
+        x *= scale;
+        y *= scale;
     }
-    v.after.t1 = x;
-    v.after.t2 = y;
+    return true;
 }
 
 // One visit's three rows on the velocity `velocity` (row_velocity). The row's total is not changed here.
 IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& velocity, const NormalTarget& target) {
-    RowVisit v;
-    v.before = row.total_impulse;
-    v.after.n = normal_row(v.before.n, velocity.n, row.normal_mass, target, v.unclamped.n);
-    v.pushed_only = v.unclamped.n < 0.0;
+    const Axes before = row.total_impulse;
+    double unclamped_n;
+    const double n = normal_row(before.n, velocity.n, row.normal_mass, target, unclamped_n);
+    double free_x = before.t1, free_y = before.t2, x = 0.0, y = 0.0;
+    bool sliding = false;
     if (row.friction != 0.0) {
         // The slip once the normal change acts: v_t' = v_t + K_tn (lambda_n after - before).
-        const double change = v.after.n - v.before.n;
-        friction_rows(row, velocity.t1 + row.normal_to_tangent[0] * change,
-                      velocity.t2 + row.normal_to_tangent[1] * change, row.friction * v.after.n, v);
-    } else {
-        v.unclamped.t1 = v.before.t1;
-        v.unclamped.t2 = v.before.t2;
+        const double change = n - before.n;
+        x = before.t1;
+        y = before.t2;
+        sliding =
+            friction_rows(row, velocity.t1 + row.normal_to_tangent[0] * change,
+                          velocity.t2 + row.normal_to_tangent[1] * change, row.friction * n, free_x, free_y, x, y);
     }
-    return v;
+    return RowVisit{before, {unclamped_n, free_x, free_y}, {n, x, y}, unclamped_n < 0.0, sliding};
 }
 
 // The normal row alone (soft step's restitution, the split impulse's pushes): tangential totals unchanged.
@@ -281,8 +286,6 @@ IMPULSE_ROW_FUNCTION Vec3 world_impulse(const ContactRow& row, const Axes& a) {
             row.normal.z() * a.n + row.tangent1.z() * a.t1 + row.tangent2.z() * a.t2};
 }
 
-// Step 7: applies g (world) to the row's bodies, +g to body 0 and -g to body 1. With `Change` a VelocityChange*,
-// also records exactly what was added; with std::nullptr_t, records nothing.
 // Step 7 for one body: adds g m^-1 and I^-1 (r x g) to it; with `Change` a VelocityChange*, records exactly what
 // was added as its body `slot`'s values.
 template <typename Change>
@@ -312,9 +315,17 @@ IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, double 
 // also records exactly what was added; with std::nullptr_t, records nothing.
 template <typename Change>
 IMPULSE_ROW_FUNCTION void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse, Change change) {
-    apply_to_body(bodies[row.body[0]], row.anchor[0], impulse.x(), impulse.y(), impulse.z(), 0, change);
-    if (row.body[1] >= 0)
-        apply_to_body(bodies[row.body[1]], row.anchor[1], -impulse.x(), -impulse.y(), -impulse.z(), 1, change);
+    const double gx = impulse.x(), gy = impulse.y(), gz = impulse.z();
+    apply_to_body(bodies[row.body[0]], row.anchor[0], gx, gy, gz, 0, change);
+    if (row.body[1] >= 0) apply_to_body(bodies[row.body[1]], row.anchor[1], -gx, -gy, -gz, 1, change);
+}
+
+// Keeps `after` as the row's total, field by field (a copy of the struct can become one 16-byte load of values
+// just stored 8 bytes at a time, which the processor cannot forward).
+IMPULSE_ROW_FUNCTION void keep_total(ContactRow& row, const Axes& after) {
+    row.total_impulse.n = after.n;
+    row.total_impulse.t1 = after.t1;
+    row.total_impulse.t2 = after.t2;
 }
 
 // |K (after - before)|^2: how much a visit changed its own contact's velocity (m/s), squared. A norm, so the

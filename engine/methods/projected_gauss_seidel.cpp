@@ -132,7 +132,7 @@ private:
         ContactRow& row = rows_[r];
         const Axes increment = v.increment();
         const Vec3 impulse = world_impulse(row, increment);
-        row.total_impulse = v.after;
+        keep_total(row, v.after);
         if constexpr (!recording) {
             apply_impulse(row, bodies_.data(), impulse, nullptr);
         } else {

@@ -34,10 +34,12 @@ namespace {
 
 // What soft step keeps per contact beside its rows.
 struct SoftContact {
-    double penetration = 0.0;        // p for the coming solve or relax (see the header)
-    double relative_velocity = 0.0;  // v_n when the frame began (step 4), which restitution reverses
-    bool bounces = false;            // c > 0 and it closed faster than the restitution cut-off
-    double most_pushed = 0.0;        // the largest lambda_n this frame: restitution needs a contact that pushed
+    double prepared_penetration = 0.0;  // p0: the penetration when the frame began
+    NormalTarget solve;                 // what the coming solve asks, from p (see the header)
+    NormalTarget relax;                 // what the coming relax asks
+    double relative_velocity = 0.0;     // v_n when the frame began (step 4), which restitution reverses
+    bool bounces = false;               // c > 0 and it closed faster than the restitution cut-off
+    double most_pushed = 0.0;           // the largest lambda_n this frame: restitution needs a contact that pushed
 };
 
 class SoftStep {
@@ -58,13 +60,16 @@ public:
         rows_.reserve(frame.contacts.size());
         soft_.reserve(frame.contacts.size());
         active_.reserve(frame.contacts.size());
+        keys_.reserve(frame.contacts.size());
         for (int i = 0; i < static_cast<int>(frame.contacts.size()); ++i) {
             const PreparedContact& p = frame.contacts[static_cast<std::size_t>(i)];
             const ContactPreparation& d = p.derivation;
             if (d.inert) continue;  // nothing can move it: no visits
             fill_contact_row(rows_.emplace_back(), i, p, bodies_.data());
             SoftContact c;
-            c.penetration = d.penetration;
+            c.prepared_penetration = d.penetration;
+            c.solve = target_at(d.penetration, true);
+            c.relax = target_at(d.penetration, false);
             c.relative_velocity = d.contact_velocity.contact_velocity.x();
             c.bounces = d.restitution != 0.0 && c.relative_velocity < -cutoff;
             soft_.push_back(c);
@@ -86,24 +91,21 @@ public:
         for (int substep = 0; substep < substeps; ++substep) {
             for (RigidBody& body : frame_.bodies) integrate_velocity(body, f.gravity, substep_, f.damping);
             load_velocities();
-            for (std::size_t r = 0; r < rows_.size(); ++r)
-                visit<recording>(r, {substep, 0, SolverStage::warm_start}, warm_start<recording>(r));
+            warm_start<recording>(substep);
             for (int pass = 0; pass < settings_.sweeps; ++pass)
-                for (std::size_t r = 0; r < rows_.size(); ++r)
-                    visit<recording>(r, {substep, pass, SolverStage::solve}, solve(r, true));
+                sweep<recording, true>({substep, pass, SolverStage::solve});
             store_velocities(bodies_, frame_.bodies);
             for (RigidBody& body : frame_.bodies) integrate_position(body, substep_, settings_.orientation_update);
             track_moves();
             for (int pass = 0; pass < settings_.sweeps; ++pass)
-                for (std::size_t r = 0; r < rows_.size(); ++r)
-                    visit<recording>(r, {substep, pass, SolverStage::relax}, solve(r, false));
+                sweep<recording, false>({substep, pass, SolverStage::relax});
             store_velocities(bodies_, frame_.bodies);
         }
         if constexpr (!recording) frame_.recorder.contacts_visited(active_);
         std::vector<int> bounced;
         for (std::size_t r = 0; r < rows_.size(); ++r)
             if (soft_[r].bounces && soft_[r].most_pushed > 0.0) {
-                visit<recording>(r, {substeps - 1, 0, SolverStage::restitution}, restitution(r));
+                restitution<recording>(r, {substeps - 1, 0, SolverStage::restitution});
                 bounced.push_back(rows_[r].contact);
             }
         if constexpr (!recording) frame_.recorder.contacts_visited(bounced);
@@ -115,10 +117,9 @@ public:
     int visits() const { return visits_; }
 
 private:
-    // One visit before it is applied: the rows' totals and, for the record, what it aimed at.
-    struct Visit {
-        RowVisit impulse;
-        Axes contact_velocity;                // when visited (kept for the record only by the warm start)
+    // What a visit aimed at, for the record only.
+    struct Aim {
+        Axes contact_velocity;                // when visited
         double desired_delta_velocity = 0.0;  // target - current normal velocity (see the header)
         std::optional<double> position_bias;
     };
@@ -130,14 +131,19 @@ private:
         }
     }
 
-    // After the positions moved: each body's move and turn since the frame began, then each contact's p.
+    // After the positions moved: each body's move and turn since the frame began, then each contact's p and what
+    // it asks of this sub-step's relax and the next one's solve.
     void track_moves() {
         for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
             const RigidBody& body = frame_.bodies[b];
             moved_[b] = body.position - start_position_[b];
             turned_[b] = (body.orientation * start_orientation_[b].conjugate()).toRotationMatrix();
         }
-        for (std::size_t r = 0; r < rows_.size(); ++r) soft_[r].penetration = penetration(r);
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
+            const double p = penetration(r);
+            soft_[r].solve = target_at(p, true);
+            soft_[r].relax = target_at(p, false);
+        }
     }
 
     // p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)]: the anchors turn with their bodies.
@@ -150,8 +156,7 @@ private:
             const Vec3& anchor = row.anchor[i];
             separated += body_sign(i) * (moved_[b] + (times(turned_[b], anchor) - anchor));
         }
-        return frame_.contacts[static_cast<std::size_t>(row.contact)].derivation.penetration -
-               separated.dot(row.normal);
+        return soft_[r].prepared_penetration - separated.dot(row.normal);
     }
 
     // The soft bias of a point at penetration p for one visit (contact_solver.c's three cases), as the normal
@@ -164,81 +169,86 @@ private:
                 softness_.mass_scale, softness_.impulse_scale};
     }
 
+    // Every contact's lambda applied again: the sub-step's velocities start without any contact impulse.
     template <bool recording>
-    [[gnu::always_inline]] Visit warm_start(std::size_t r) const {
-        // The sub-step's velocities start without any contact impulse: the warm start applies all of lambda.
-        const ContactRow& row = rows_[r];
-        Visit v;
-        v.impulse.unclamped = v.impulse.after = row.total_impulse;
-        if constexpr (recording) {
-            v.contact_velocity = row_velocity(row, bodies_.data());
-            const Axes& total = row.total_impulse;
-            v.desired_delta_velocity = row.normal_response * total.n + row.normal_to_tangent[0] * total.t1 +
-                                       row.normal_to_tangent[1] * total.t2;  // (K lambda)_n
+    void warm_start(int substep) {
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
+            const ContactRow& row = rows_[r];
+            RowVisit v;
+            v.unclamped = v.after = row.total_impulse;
+            Aim aim;
+            if constexpr (recording) {
+                aim.contact_velocity = row_velocity(row, bodies_.data());
+                const Axes& total = row.total_impulse;
+                aim.desired_delta_velocity = row.normal_response * total.n + row.normal_to_tangent[0] * total.t1 +
+                                             row.normal_to_tangent[1] * total.t2;  // (K lambda)_n
+            }
+            apply<recording>(r, v, {substep, 0, SolverStage::warm_start}, aim);
         }
-        return v;
     }
 
-    [[gnu::always_inline]] Visit solve(std::size_t r, bool use_bias) const {
-        const ContactRow& row = rows_[r];
-        const Axes velocity = row_velocity(row, bodies_.data());
-        const NormalTarget target = target_at(soft_[r].penetration, use_bias);
-        Visit v;
-        v.impulse = solve_rows(row, velocity, target);
-        v.contact_velocity = velocity;
-        v.position_bias = target.velocity;
-        v.desired_delta_velocity = target.velocity - velocity.n;
-        return v;
+    // One sweep of solve (with the soft bias) or relax (without).
+    template <bool recording, bool biased>
+    void sweep(const SweepPlace& place) {
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
+            const ContactRow& row = rows_[r];
+            const Axes velocity = row_velocity(row, bodies_.data());
+            const NormalTarget& target = biased ? soft_[r].solve : soft_[r].relax;
+            const RowVisit v = solve_rows(row, velocity, target);
+            Aim aim;
+            if constexpr (recording) aim = {velocity, target.velocity - velocity.n, target.velocity};
+            apply<recording>(r, v, place, aim);
+        }
     }
 
-    Visit restitution(std::size_t r) const {
+    template <bool recording>
+    void restitution(std::size_t r, const SweepPlace& place) {
         const ContactRow& row = rows_[r];
         const double c_used = frame_.contacts[static_cast<std::size_t>(row.contact)].derivation.restitution;
         const Axes velocity = row_velocity(row, bodies_.data());
         // The target is -c v_n(before): delta lambda_n = -m_n (v_n + c v_n(before)), total kept >= 0.
         const NormalTarget target{-c_used * soft_[r].relative_velocity};
-        Visit v;
-        v.impulse = solve_normal_row(row, velocity.n, target);
-        v.contact_velocity = velocity;
-        v.desired_delta_velocity = target.velocity - velocity.n;
-        return v;
+        const RowVisit v = solve_normal_row(row, velocity.n, target);
+        Aim aim;
+        if constexpr (recording) aim = {velocity, target.velocity - velocity.n, std::nullopt};
+        apply<recording>(r, v, place, aim);
     }
 
     // Applies after - before to the bodies by step 7, keeps the total, and (recording) records the visit.
     template <bool recording>
-    [[gnu::always_inline]] void visit(std::size_t r, const SweepPlace& place, const Visit& v) {
+    [[gnu::always_inline]] void apply(std::size_t r, const RowVisit& v, const SweepPlace& place, const Aim& aim) {
         ContactRow& row = rows_[r];
-        const Axes increment = v.impulse.increment();
+        const Axes increment = v.increment();
         const Vec3 impulse = world_impulse(row, increment);
-        row.total_impulse = v.impulse.after;
-        soft_[r].most_pushed = std::max(soft_[r].most_pushed, row.total_impulse.n);
+        keep_total(row, v.after);
+        soft_[r].most_pushed = std::max(soft_[r].most_pushed, v.after.n);
         if constexpr (recording) {
             VelocityChange change;
             apply_impulse(row, bodies_.data(), impulse, &change);
-            record(r, place, v, vector_of(increment), impulse, change);
+            record(r, place, v, aim, vector_of(increment), impulse, change);
         } else {
             apply_impulse(row, bodies_.data(), impulse, nullptr);
         }
         ++visits_;
     }
 
-    void record(std::size_t r, const SweepPlace& place, const Visit& v, const Vec3& increment, const Vec3& impulse,
-                const VelocityChange& change) {
+    void record(std::size_t r, const SweepPlace& place, const RowVisit& v, const Aim& aim, const Vec3& increment,
+                const Vec3& impulse, const VelocityChange& change) {
         const ContactRow& row = rows_[r];
         const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(row.contact)].derivation;
         const bool bouncing = place.stage == SolverStage::restitution;
-        const bool sliding = v.impulse.sliding;
+        const bool sliding = v.sliding;
         VelocityResolution resolution;
-        resolution.contact_velocity = vector_of(v.contact_velocity);
-        resolution.desired_delta_velocity = {.separating_velocity = v.contact_velocity.n,
+        resolution.contact_velocity = vector_of(aim.contact_velocity);
+        resolution.desired_delta_velocity = {.separating_velocity = aim.contact_velocity.n,
                                              .restitution = d.restitution,
                                              .restitution_cutoff = settings_.refinements.restitution_cutoff,
                                              .restitution_cutoff_applied = d.restitution != 0.0 && !soft_[r].bounces,
                                              .restitution_used = bouncing ? d.restitution : 0.0,
                                              .velocity_from_acceleration_applied = false,
                                              .velocity_from_acceleration = 0.0,
-                                             .position_bias = v.position_bias,
-                                             .desired_delta_velocity = v.desired_delta_velocity};
+                                             .position_bias = aim.position_bias,
+                                             .desired_delta_velocity = aim.desired_delta_velocity};
         const bool tangential = d.friction != 0.0 && !bouncing;
         resolution.impulse = {.model = !tangential ? ImpulseModel::frictionless
                                        : sliding   ? ImpulseModel::sliding_friction
@@ -249,10 +259,10 @@ private:
         resolution.velocity_change = change;
         const VelocityIteration iteration{.iteration = visits_,
                                           .contact = row.contact,
-                                          .desired_delta_velocity = v.desired_delta_velocity,
+                                          .desired_delta_velocity = aim.desired_delta_velocity,
                                           .epsilon = 0.0,
                                           .sweep = place,
-                                          .accumulated = v.impulse.accumulated(),
+                                          .accumulated = v.accumulated(),
                                           .resolution = resolution,
                                           .updates = {}};
         frame_.recorder.velocity_iteration(iteration);

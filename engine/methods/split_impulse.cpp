@@ -78,7 +78,7 @@ PhaseOutcome push_apart(FrameContext& frame) {
         for (std::size_t r = 0; r < rows.size(); ++r) {
             ContactRow& row = rows[r];
             const RowVisit v = solve_normal_row(row, row_normal_velocity(row, pseudo.data()), NormalTarget{targets[r]});
-            row.total_impulse = v.after;
+            keep_total(row, v.after);
             const double push = v.after.n - v.before.n;
             largest = std::max(largest, std::abs(push) / row.normal_mass);
 

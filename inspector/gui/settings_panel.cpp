@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace impulse::gui {
@@ -123,10 +124,14 @@ void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHos
                                           "baumgarte",
                                           "position_bias.factor",
                                           "position_bias.slop"};
-    const bool split = position_method_in_effect(s) == PositionMethod::split_impulse;
+    // The bias's factor and slop matter to a velocity method only through step 5's Baumgarte term: shown when it
+    // is on, or when the position method pushes with them.
+    const auto& position_reads = method_row(position_method_in_effect(s)).reads;
+    const bool position_biased =
+        std::find(position_reads.begin(), position_reads.end(), "position_bias.factor") != position_reads.end();
     for (const std::string_view key : shown) {
         if (!reads_setting(s, key)) continue;
-        if (key.starts_with("position_bias.") && !s.baumgarte && !split) continue;
+        if (key.starts_with("position_bias.") && !s.baumgarte && !position_biased) continue;
         method_setting(session, state, host, key, s);
     }
     number_field(session, state, host, "restitution cut-off", "restitution_cutoff", s.refinements.restitution_cutoff);

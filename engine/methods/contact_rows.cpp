@@ -67,25 +67,40 @@ void fill_contact_row(ContactRow& row, int index, const PreparedContact& contact
         // delta_velocity_matrix entry by entry (C^T (m^-1 1 - [r]x I^-1 [r]x) C), for the four entries the
         // friction rows need.
         double k_1n = 0.0, k_2n = 0.0, k_11 = 0.0, k_12 = 0.0, k_22 = 0.0;
+        const Vec3 &n = row.normal, &t1 = row.tangent1, &t2 = row.tangent2;
+        const double linear_1n = t1.dot(n), linear_2n = t2.dot(n), linear_12 = t1.dot(t2);  // 0 up to rounding
         for (int i = 0; i < 2; ++i) {
             if (row.body[i] < 0) continue;
             const SolverBody& m = bodies[row.body[i]];
             const Vec3& r = row.anchor[i];
-            const Vec3 u_n = r.cross(row.normal), u_1 = r.cross(row.tangent1), u_2 = r.cross(row.tangent2);
+            // u_a = r x a (written out: the row's other functions keep to plain doubles too)
+            const double unx = r.y() * n.z() - r.z() * n.y(), uny = r.z() * n.x() - r.x() * n.z(),
+                         unz = r.x() * n.y() - r.y() * n.x();
+            const double u1x = r.y() * t1.z() - r.z() * t1.y(), u1y = r.z() * t1.x() - r.x() * t1.z(),
+                         u1z = r.x() * t1.y() - r.y() * t1.x();
+            const double u2x = r.y() * t2.z() - r.z() * t2.y(), u2y = r.z() * t2.x() - r.x() * t2.z(),
+                         u2z = r.x() * t2.y() - r.y() * t2.x();
             // I^-1 is symmetric, so (r x t) . I^-1 (r x n) = (r x n) . I^-1 (r x t): two products serve all five.
-            const Vec3 j_1 = times(m.inverse_inertia, u_1), j_2 = times(m.inverse_inertia, u_2);
-            k_1n += m.inverse_mass * row.tangent1.dot(row.normal) + u_n.dot(j_1);
-            k_2n += m.inverse_mass * row.tangent2.dot(row.normal) + u_n.dot(j_2);
-            k_11 += m.inverse_mass + u_1.dot(j_1);
-            k_12 += m.inverse_mass * row.tangent1.dot(row.tangent2) + u_1.dot(j_2);
-            k_22 += m.inverse_mass + u_2.dot(j_2);
+            const Mat3& inertia = m.inverse_inertia;
+            const double j1x = inertia(0, 0) * u1x + inertia(0, 1) * u1y + inertia(0, 2) * u1z,
+                         j1y = inertia(1, 0) * u1x + inertia(1, 1) * u1y + inertia(1, 2) * u1z,
+                         j1z = inertia(2, 0) * u1x + inertia(2, 1) * u1y + inertia(2, 2) * u1z;
+            const double j2x = inertia(0, 0) * u2x + inertia(0, 1) * u2y + inertia(0, 2) * u2z,
+                         j2y = inertia(1, 0) * u2x + inertia(1, 1) * u2y + inertia(1, 2) * u2z,
+                         j2z = inertia(2, 0) * u2x + inertia(2, 1) * u2y + inertia(2, 2) * u2z;
+            k_1n += m.inverse_mass * linear_1n + (unx * j1x + uny * j1y + unz * j1z);
+            k_2n += m.inverse_mass * linear_2n + (unx * j2x + uny * j2y + unz * j2z);
+            k_11 += m.inverse_mass + (u1x * j1x + u1y * j1y + u1z * j1z);
+            k_12 += m.inverse_mass * linear_12 + (u1x * j2x + u1y * j2y + u1z * j2z);
+            k_22 += m.inverse_mass + (u2x * j2x + u2y * j2y + u2z * j2z);
         }
         row.normal_to_tangent = {k_1n, k_2n};
         row.tangent_response = {k_11, k_12, k_22};
         const double det = k_11 * k_22 - k_12 * k_12;
         row.tangent_invertible = det > 0.0;
         if (row.tangent_invertible) {
-            row.tangent_mass = {k_22 / det, -k_12 / det, k_11 / det};
+            const double inverse_det = 1.0 / det;
+            row.tangent_mass = {k_22 * inverse_det, -k_12 * inverse_det, k_11 * inverse_det};
         } else {
             // Singular (a body that turns about one axis only): solve each tangent row on its own.
             row.tangent_mass = {k_11 > 0.0 ? 1.0 / k_11 : 0.0, 0.0, k_22 > 0.0 ? 1.0 / k_22 : 0.0};

@@ -23,9 +23,9 @@ Placement placement_of(const RigidBody& body) {
 }
 
 // Gives the contacts a pair test just appended (from `first` on) the combined material of the two surfaces.
-void stamp_material(std::vector<Contact>& contacts, std::size_t first, const Scene& scene, const std::string& a,
-                    const std::string& b) {
-    const Material m = combine(scene.materials.at(a), scene.materials.at(b));
+void stamp_material(std::vector<Contact>& contacts, std::size_t first, const Material& a, const Material& b) {
+    if (first == contacts.size()) return;  // no contact: nothing to combine
+    const Material m = combine(a, b);
     for (std::size_t k = first; k < contacts.size(); ++k) {
         contacts[k].restitution = m.restitution;
         contacts[k].friction = m.friction;
@@ -42,13 +42,20 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
     std::vector<Placement> placements;
     placements.reserve(bodies.size());
     for (const RigidBody& body : bodies) placements.push_back(placement_of(body));
+    // Each body's material looked up by name once, not once per pair tested.
+    std::vector<const Material*> materials;
+    materials.reserve(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) materials.push_back(&scene.materials.at(scene.body_materials[i]));
+    // Room for four contacts a body (a box resting on a face), so the list rarely regrows.
+    out.reserve(4 * bodies.size());
 
     if (scene.ground) {
+        const Material& ground = scene.materials.at(scene.ground->material);
         for (std::size_t i = 0; i < bodies.size(); ++i) {
             if (!scene.shapes[i] || is_immovable(bodies[i])) continue;
             const std::size_t first = out.size();
             collide_with_ground(*scene.shapes[i], placements[i], static_cast<int>(i), scene.ground->plane, out);
-            stamp_material(out, first, scene, scene.body_materials[i], scene.ground->material);
+            stamp_material(out, first, *materials[i], ground);
         }
     }
 
@@ -68,7 +75,7 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
         const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
         const std::size_t first = out.size();
         collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out);
-        stamp_material(out, first, scene, scene.body_materials[ui], scene.body_materials[uj]);
+        stamp_material(out, first, *materials[ui], *materials[uj]);
     }
     if (times) {
         times->broad_phase += broad;

@@ -3,6 +3,7 @@
 #include "explain/format.hpp"
 #include "io/input_error.hpp"
 #include "io/suggest.hpp"
+#include "methods/method_table.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -49,10 +50,12 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
 }
 
 // A position iteration's pass, as the choice table words it.
-std::string pass_text(const PositionIteration& it) {
+std::string pass_text(const PositionIteration& it, const ResolverSettings& settings) {
     if (!it.pass) return "";
-    const bool pushes = it.resolution && it.resolution->method == PositionMethod::split_impulse;
-    return (pushes ? " (push sweep " : " (relaxation pass ") + std::to_string(*it.pass) + ")";
+    // The method's word for a pass (methods/method_table.hpp), from the record or, filtered out, the settings.
+    const std::string_view name =
+        method_row(it.resolution ? it.resolution->method : position_method_in_effect(settings)).pass_name;
+    return " (" + std::string(name.empty() ? "pass" : name) + " " + std::to_string(*it.pass) + ")";
 }
 
 int steps_in(const Trace& trace, const Cursor& c) {
@@ -212,7 +215,7 @@ std::vector<StepTable> step_tables(const Trace& trace, const Cursor& c) {
     if (c.stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[item];
         tables.push_back(choice_table("penetration", it.iteration, it.contact, it.penetration, it.epsilon, "m",
-                                      pass_text(it), std::nullopt, trace.scene.settings));
+                                      pass_text(it, trace.scene.settings), std::nullopt, trace.scene.settings));
         for (StepTable& t : explain::position_iteration_tables(it, basis)) tables.push_back(std::move(t));
     } else {
         const VelocityIteration& it = frame.velocity.iterations[item];

@@ -131,7 +131,7 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
          "pgs_split, soft_step, got \"bok\" (did you mean book?)"},
         {{"resolve", ruler, "--set", "position_method=teleport"},
          "impulse-lab: --set position_method: must be one of \"linear_projection\", \"nonlinear_projection\", "
-         "\"velocity_based\", \"relaxation\", \"baumgarte\", \"split_impulse\"; got \"teleport\""},
+         "\"velocity_based\", \"relaxation\", \"split_impulse\", \"none\"; got \"teleport\""},
         {{"resolve", ruler, "--set", "angular_limit.factor=-1"},
          "impulse-lab: --set angular_limit.factor: must be >= 0, got -1"},
         {{"resolve", ruler, "--set", "position_epsilon"},

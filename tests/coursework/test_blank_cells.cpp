@@ -148,6 +148,13 @@ private:
     }
     bool has(const std::string& path) const { return known_.count(path) == 1 || out_.count(path) == 1; }
     double number(const std::string& path) const { return k(path).get<double>(); }
+    // The sheet's settings block names the sliding model (the trace names it only when it is not the
+    // reference engine's).
+    SlidingFriction sliding_friction() const {
+        const io::json& settings = sheet_["settings"];
+        return settings.contains("sliding_friction") ? named(sliding_friction_names, settings["sliding_friction"])
+                                                     : SlidingFriction::reference;
+    }
 
     void put(const std::string& path, io::json value) { out_[path] = std::move(value); }
 
@@ -471,7 +478,8 @@ private:
             const Impulse g =
                 calculate_impulse(basis_of(k(at(c, "basis"))), relative_positions(c, bodies), masses(bodies),
                                   vec(k(at(v, "contact_velocity"))), number(at(v, "desired_delta_velocity")),
-                                  number(at(c, "delta_velocity_per_unit_impulse")), number(at(c, "friction")));
+                                  number(at(c, "delta_velocity_per_unit_impulse")), number(at(c, "friction")),
+                                  sliding_friction());
             put(at(v, "impulse_model"), name(impulse_model_names, g.model));
             if (g.friction) {
                 const FrictionSolve& s = *g.friction;

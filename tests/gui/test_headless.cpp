@@ -236,7 +236,7 @@ TEST_CASE("every lesson runs headless: annotated text, its trace and one screens
     TempDir dir;
     ::setenv("XDG_CONFIG_HOME", dir.file("cfg").c_str(), 1);
     const std::vector<std::filesystem::path> files = lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
-    REQUIRE(files.size() == 12);
+    REQUIRE(files.size() == 13);
     for (const std::filesystem::path& file : files) {
         const lessons::Lesson lesson = lessons::read_lesson(file);
         const std::string number = std::to_string(lesson.number);

@@ -488,11 +488,15 @@ TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accu
     CHECK(first.sweep->stage == SolverStage::warm_start);
     const Cursor at{2, Stage::velocity, 0, 0};
     CHECK(step_names(trace, at) == std::vector<std::string>{"choice", "contact_velocity", "desired_delta_velocity",
-                                                            "position_bias", "accumulated_impulse", "impulse",
-                                                            "velocity_change", "updates"});
+                                                            "accumulated_impulse", "impulse", "velocity_change",
+                                                            "updates"});
     const explain::StepTable choice = step_tables(trace, at)[0];
     CHECK(choice.title == "Sweep · warm_start visits contact " + std::to_string(first.contact));
-    const explain::StepTable total = step_tables(trace, at)[4];
+    // Baumgarte's bias is a row of step 5.
+    const explain::StepTable desired = step_tables(trace, at)[2];
+    CHECK(std::any_of(desired.rows.begin(), desired.rows.end(),
+                      [](const explain::Row& r) { return r.quantity == "position_bias"; }));
+    const explain::StepTable total = step_tables(trace, at)[3];
     REQUIRE(total.rows.size() == 4);
     CHECK(total.rows[0].quantity == "accumulated_before");
     CHECK(total.rows[2].quantity == "clamp");

@@ -270,10 +270,11 @@ int main(int argc, char** argv) {
     const ResolverSettings& settings = scene.settings;
 
     // The state at the start of `frame`, then that frame's integration and contacts, as the world step makes them.
-    std::vector<RigidBody> bodies = scene.bodies;
-    ContactMemory memory;
+    World world(scene);
+    while (world.frame() < frame) world.step();
+    std::vector<RigidBody> bodies = world.bodies();
+    const ContactMemory& memory = world.contact_memory();
     Recorder nobody;
-    for (int f = 0; f < frame; ++f) step(scene, bodies, nobody, f, &memory);
     for (RigidBody& b : bodies)
         integrate(b, scene.world.gravity, settings.duration, {scene.world.linear_damping, scene.world.angular_damping},
                   settings.orientation_update);

@@ -41,12 +41,10 @@ struct Figures {
 
 Figures simulate(const Scene& scene, int frames) {
     Figures f;
-    std::vector<RigidBody> bodies = scene.bodies;
-    Recorder nobody;
+    World world(scene);
     const std::size_t top = highest_body(scene);
-    ContactMemory memory;
     for (int frame = 0; frame < frames; ++frame) {
-        const StepReport r = step(scene, bodies, nobody, frame, &memory);
+        const StepReport r = world.step();
         f.stage_ms.integrate += r.times.integrate * 1e3 / frames;
         f.stage_ms.broad_phase += r.times.broad_phase * 1e3 / frames;
         f.stage_ms.narrow_phase += r.times.narrow_phase * 1e3 / frames;
@@ -55,7 +53,7 @@ Figures simulate(const Scene& scene, int frames) {
         f.pairs += static_cast<double>(r.pairs_tested) / frames;
         f.limited_frames += r.resolution.position.stop == StopReason::iteration_limit ||
                             r.resolution.velocity.stop == StopReason::iteration_limit;
-        const double drift = (bodies[top].position - scene.bodies[top].position).norm() * 1e3;
+        const double drift = (world.bodies()[top].position - scene.bodies[top].position).norm() * 1e3;
         f.drift_most_mm = std::max(f.drift_most_mm, drift);
         f.drift_end_mm = drift;
     }

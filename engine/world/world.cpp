@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 
 namespace impulse {
 
@@ -92,37 +93,52 @@ std::size_t highest_body(const Scene& scene) {
     return top;
 }
 
-StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame,
-                ContactMemory* memory) {
+World::World(Scene scene) : scene_(std::move(scene)), bodies_(scene_.bodies) {}
+
+void World::reset() {
+    bodies_ = scene_.bodies;
+    memory_.clear();
+    frame_ = 0;
+}
+
+StepReport World::step() {
+    Recorder nobody;
+    return step(nobody);
+}
+
+StepReport World::step(Recorder& recorder) {
     StepReport report;
-    report.frame = frame;
-    const double dt = scene.settings.duration;
+    report.frame = frame_;
+    const double dt = scene_.settings.duration;
 
     // A method that owns the whole step (soft step) integrates the bodies itself, sub-step by sub-step: it takes
     // the contacts at the current positions and the forces, and its integration counts as resolution time.
-    const bool integrates_itself = method_row(scene.settings.velocity_method).scope == MethodScope::whole_step;
+    const bool integrates_itself = method_row(scene_.settings.velocity_method).scope == MethodScope::whole_step;
     auto start = Clock::now();
-    const Damping damping{scene.world.linear_damping, scene.world.angular_damping};
+    const Damping damping{scene_.world.linear_damping, scene_.world.angular_damping};
     if (!integrates_itself)
-        for (RigidBody& body : bodies)
-            integrate(body, scene.world.gravity, dt, damping, scene.settings.orientation_update);
+        for (RigidBody& body : bodies_)
+            integrate(body, scene_.world.gravity, dt, damping, scene_.settings.orientation_update);
     report.times.integrate = seconds_since(start);
 
-    const Detection detection = detect_contacts(scene, bodies, &report.times);
+    const Detection detection = detect_contacts(scene_, bodies_, &report.times);
     report.pairs_tested = detection.pairs_tested;
     report.contacts = static_cast<int>(detection.contacts.size());
     for (const Contact& c : detection.contacts)
         report.deepest_penetration = std::max(report.deepest_penetration, c.penetration);
 
+    // The memory is the world's own: every step of a run recalls the last one's impulses, so warm starting is
+    // on whenever the settings ask for it.
     start = Clock::now();
-    LastTouch touch(recorder, detection.contacts, bodies.size());
-    report.resolution = resolve_contacts(bodies, detection.contacts, scene.settings, touch, frame, memory,
-                                         Forces{scene.world.gravity, damping});
+    LastTouch touch(recorder, detection.contacts, bodies_.size());
+    report.resolution = resolve_contacts(bodies_, detection.contacts, scene_.settings, touch, frame_, &memory_,
+                                         Forces{scene_.world.gravity, damping});
     report.times.resolve = seconds_since(start);
 
-    report.non_finite = first_non_finite(bodies, touch);
+    report.non_finite = first_non_finite(bodies_, touch);
 
-    for (const RigidBody& body : bodies) report.kinetic_energy += kinetic_energy(body);
+    for (const RigidBody& body : bodies_) report.kinetic_energy += kinetic_energy(body);
+    ++frame_;
     return report;
 }
 

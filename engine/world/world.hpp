@@ -1,13 +1,20 @@
 #pragma once
-// The world step, in the reference engine's demo order: integrate every body, detect contacts, resolve them.
-// Each stage is timed for the profile (never for traces, which must be byte-identical run to run).
+// The world: a scene's bodies, shapes, materials, ground, gravity and settings, and the contact memory that
+// carries warm-starting solvers' impulses from frame to frame, in one object that steps a frame at a time
+// (Box2D v3's b2World_Step, Jolt's PhysicsSystem::Update): create it from a scene, step it, read it. Every
+// caller that simulates frames (`run`, the inspector's runs, the bench, the world bench, the tests) steps a
+// World, so the frame's order exists once and no caller can forget the memory and silently start cold.
+//
+// A step, in the reference engine's demo order: integrate every body, detect contacts, resolve them (a method
+// that owns the whole step, soft step, integrates in its own sub-steps: detect, then resolve). Each stage is
+// timed for the profile (never for traces, which must be byte-identical run to run).
 
-#include "world/non_finite_check.hpp"
+#include "memory/contact_memory.hpp"
 #include "record/recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "scene/scene.hpp"
+#include "world/non_finite_check.hpp"
 
-#include <array>
 #include <optional>
 #include <span>
 #include <vector>
@@ -27,11 +34,13 @@ struct Detection {
 };
 
 // Every contact between shaped bodies and with the ground, with the materials combined. Bodies without a
-// shape take part in no test, and two immovable bodies are never tested against each other.
+// shape take part in no test, and two immovable bodies are never tested against each other. The world's
+// step calls it; the bench's accuracy metrics and `resolve` (a scene without written contacts) call it alone.
 Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times = nullptr);
 
+// What one step did.
 struct StepReport {
-    int frame = 0;
+    int frame = 0;  // the frame stepped, from 0
     int pairs_tested = 0;
     int contacts = 0;
     double deepest_penetration = 0.0;  // m, before resolution (0 without contacts)
@@ -44,12 +53,35 @@ struct StepReport {
 // The body that starts highest against gravity (the top of a stack): whose drift measures a stack's hold.
 std::size_t highest_body(const Scene& scene);
 
-// One frame of `scene.settings.duration` seconds: integrate -> detect -> resolve (soft step: detect -> soft step,
-// which integrates the bodies in its sub-steps). `bodies` is the state,
-// changed in place; the scene gives shapes, materials, the ground and the settings. `memory` keeps
-// warm-starting solvers' impulses between frames; pass the same one every frame of a run. A body left with a
-// NaN or infinity is reported in `non_finite` with the contact that last touched it; the caller must stop.
-StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& recorder, int frame,
-                ContactMemory* memory = nullptr);
+class World {
+public:
+    // The scene's bodies at their start (frame 0, time 0) and an empty contact memory. Contacts written in the
+    // scene (a case's, for `resolve`) are not used: a world detects its own.
+    explicit World(Scene scene);
+
+    // One frame of settings.duration seconds: integrate -> detect -> resolve, the recorder seeing the
+    // resolution (begin_frame .. end_frame) of frame frame(). The bodies and the contact memory change in
+    // place and frame() counts one more. A step that leaves a body with a NaN or infinity reports it in
+    // `non_finite`, with the contact that last touched it: the caller must not step again (the state cannot
+    // go on), but may still read it.
+    StepReport step(Recorder& recorder);
+    StepReport step();  // with nobody listening
+
+    // Back to the scene's start: its bodies, an empty memory, frame 0.
+    void reset();
+
+    const Scene& scene() const { return scene_; }  // as created: shapes, materials, settings, bodies at the start
+    const ResolverSettings& settings() const { return scene_.settings; }
+    const std::vector<RigidBody>& bodies() const { return bodies_; }  // now: after frame() frames
+    const ContactMemory& contact_memory() const { return memory_; }   // last step's impulses, by contact key
+    int frame() const { return frame_; }  // frames stepped so far: the number of the next one
+    double time() const { return frame_ * scene_.settings.duration; }  // s since the start
+
+private:
+    Scene scene_;
+    std::vector<RigidBody> bodies_;
+    ContactMemory memory_;
+    int frame_ = 0;
+};
 
 }  // namespace impulse

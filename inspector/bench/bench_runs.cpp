@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 namespace impulse::bench {
 
@@ -17,23 +18,16 @@ double seconds_since(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The state a window starts from: the bodies and the warm-starting memory.
-struct Snapshot {
-    std::vector<RigidBody> bodies;
-    ContactMemory memory;
-};
-
-// Steps the window from `start` and returns each frame's step time; `recorder` sees every frame. With a
-// trace recorder the recorded frames are dropped after each step (outside the timing), so memory stays flat.
-std::vector<double> time_window(const Scene& scene, const Snapshot& start, int first_frame, int frames,
-                                Recorder& recorder, Trace* trace) {
-    std::vector<RigidBody> bodies = start.bodies;
-    ContactMemory memory = start.memory;
+// Steps `frames` frames of a copy of `start` (the world as the window begins: its bodies, its contact memory,
+// its frame) and returns each frame's step time; `recorder` sees every frame. With a trace recorder the
+// recorded frames are dropped after each step (outside the timing), so memory stays flat.
+std::vector<double> time_window(const World& start, int frames, Recorder& recorder, Trace* trace) {
+    World world = start;
     std::vector<double> times;
     times.reserve(static_cast<std::size_t>(frames));
-    for (int frame = first_frame; frame < first_frame + frames; ++frame) {
+    for (int frame = 0; frame < frames; ++frame) {
         const auto begin = Clock::now();
-        step(scene, bodies, recorder, frame, &memory);
+        world.step(recorder);
         times.push_back(seconds_since(begin));
         if (trace) trace->frames.clear();
     }
@@ -78,34 +72,33 @@ RunResult run_configuration(const std::string& scene_text, const BenchScene& spe
 
     // The accuracy run, whose frames [warm_up, warm_up + window) are the first timed window.
     AccuracyTracker tracker(scene, spec, frames);
-    std::vector<RigidBody> bodies = scene.bodies;
-    ContactMemory memory;
+    World world(scene);
+    std::optional<World> start;  // the world as the timed window begins
     Recorder nobody;
-    Snapshot start;
     std::vector<double> times;
     long contacts = 0;
     int frame = 0;
     for (; frame < frames; ++frame) {
-        if (frame == warm_up) start = {bodies, memory};
+        if (frame == warm_up) start = world;
         const auto begin = Clock::now();
-        const StepReport report = step(scene, bodies, nobody, frame, &memory);
+        const StepReport report = world.step(nobody);
         const double elapsed = seconds_since(begin);
         if (frame >= warm_up && frame < warm_up + window) times.push_back(elapsed);
         contacts += report.contacts;
-        if (!tracker.observe(frame, bodies, report)) {
+        if (!tracker.observe(frame, world.bodies(), report)) {
             ++frame;
             break;
         }
     }
     result.frames = frame;
     result.contacts_per_frame = frame > 0 ? static_cast<double>(contacts) / frame : 0.0;
-    result.accuracy = tracker.finish(bodies);
+    result.accuracy = tracker.finish(world.bodies());
     const bool whole_window = frame >= warm_up + window;
 
     // Further repeats of the window, when the first one was whole (a run that became NaN is timed once).
     if (whole_window)
         for (int r = 1; r < timing.repeats; ++r) {
-            const std::vector<double> more = time_window(scene, start, warm_up, window, nobody, nullptr);
+            const std::vector<double> more = time_window(*start, window, nobody, nullptr);
             times.insert(times.end(), more.begin(), more.end());
         }
     result.time_per_step = median(times);
@@ -117,7 +110,7 @@ RunResult run_configuration(const std::string& scene_text, const BenchScene& spe
             Trace trace;
             trace.scene.settings = scene.settings;  // the recorder reads the phase order from the header
             TraceRecorder recorder(trace);
-            const std::vector<double> more = time_window(scene, start, warm_up, window, recorder, &trace);
+            const std::vector<double> more = time_window(*start, window, recorder, &trace);
             recorded.insert(recorded.end(), more.begin(), more.end());
         }
         if (result.time_per_step > 0.0) result.recording_ratio = median(recorded) / result.time_per_step;

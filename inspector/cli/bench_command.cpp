@@ -109,12 +109,11 @@ int scaling(const BenchOptions& options, const fs::path& folder, std::ostream& o
         for (const WorstFirstSearch search : {WorstFirstSearch::priority_queue, WorstFirstSearch::full_scan}) {
             Scene scene = io::read_scene_text(texts[g], std::string("book"));
             scene.settings.worst_first_search = search;
-            std::vector<RigidBody> bodies = scene.bodies;
-            Recorder nobody;
+            World world(scene);
             std::vector<double> resolve_ms, per_resolution_us;
             double contacts = 0, resolutions = 0;
             for (int frame = 0; frame < frames; ++frame) {
-                const StepReport r = step(scene, bodies, nobody, frame);
+                const StepReport r = world.step();
                 const int used = r.resolution.position.iterations_used + r.resolution.velocity.iterations_used;
                 contacts += r.contacts;
                 resolutions += used;

@@ -135,7 +135,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     // The trace header is the scene as run; a trace of `run` lists no hand-written contacts.
     scene.contacts.clear();
 
-    std::vector<RigidBody> bodies = scene.bodies;
+    World world(scene);
     TraceRecorder trace_recorder(trace, inspect::trace_budget_bytes(options.max_trace_mb));
     Recorder nobody;
     Recorder& recorder = options.trace_file ? static_cast<Recorder&>(trace_recorder) : nobody;
@@ -145,27 +145,26 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     std::string states;
     if (options.states_file) {
         states = "frame,time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
-        append_states(states, -1, 0.0, scene, bodies);
+        append_states(states, -1, world.time(), scene, world.bodies());
     }
     RunSummary summary{scene_name, frames, dt, highest_body(scene), {}, 0.0, 0};
-    summary.top_start = bodies[summary.top].position;
+    summary.top_start = world.bodies()[summary.top].position;
 
     std::vector<StepReport> reports;
     reports.reserve(static_cast<std::size_t>(frames));
     ProgressBar bar(progress, frames);
-    ContactMemory memory;
     std::optional<int> broken_frame;  // the frame that left a body non-finite: the run stops there
     std::optional<int> interrupted;   // Ctrl-C or SIGTERM stopped the run between frames (cli/interrupt.hpp)
     const InterruptHandler interrupt_handler;
     for (int frame = 0; frame < frames; ++frame) {
         if ((interrupted = interrupt_received())) break;
-        reports.push_back(step(scene, bodies, recorder, frame, &memory));
+        reports.push_back(world.step(recorder));
         if (reports.back().non_finite) {
             broken_frame = frame;
             break;
         }
-        if (options.states_file) append_states(states, frame, (frame + 1) * dt, scene, bodies);
-        const double drift = (bodies[summary.top].position - summary.top_start).norm();
+        if (options.states_file) append_states(states, frame, world.time(), scene, world.bodies());
+        const double drift = (world.bodies()[summary.top].position - summary.top_start).norm();
         if (drift > summary.top_drift_most) summary.top_drift_most = drift, summary.top_drift_frame = frame;
         bar.update(frame + 1);
     }
@@ -199,7 +198,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
             report << "states of the frames before it written to " << outputs.file_of("--states") << '\n';
         return exit_non_finite;
     }
-    write_summary(report, summary, scene, bodies, reports);
+    write_summary(report, summary, scene, world.bodies(), reports);
     if (interrupted) {
         err << "impulse-lab: interrupted (" << signal_name(*interrupted) << ") after " << frames_done << " of "
             << frames << " frames: "

@@ -61,11 +61,10 @@ Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, T
     trace.scene.contacts.clear();  // a run detects its own
     trace.scene.world.frames = frames;
     trace.recording = recording;
-    std::vector<RigidBody> bodies = scene.bodies;
+    World world(trace.scene);
     TraceRecorder recorder(trace, budget.bytes);
-    ContactMemory memory;
     for (int frame = 0; frame < frames; ++frame) {
-        const StepReport report = step(trace.scene, bodies, recorder, frame, &memory);
+        const StepReport report = world.step(recorder);
         if (report.non_finite) {
             end_trace_before(trace, frame);
             if (broken) *broken = BrokenRun{frame, *report.non_finite};

@@ -57,14 +57,13 @@ struct Stop {
 };
 
 Stop slide(const Scene& scene) {
-    std::vector<RigidBody> bodies = scene.bodies;
+    World world(scene);
+    const std::vector<RigidBody>& bodies = world.bodies();
     const Vec3 forward = scene.bodies[0].velocity.normalized();
     const Vec3 left = Vec3::UnitY().cross(forward);
-    ContactMemory memory;
-    Recorder nobody;
     Stop stop;
     for (int frame = 0; frame < 240 && !stop.stopped; ++frame) {
-        step(scene, bodies, nobody, frame, &memory);
+        world.step();
         stop.stopped = frame > 5 && bodies[0].velocity.dot(forward) <= 0.02;
     }
     const Vec3 moved = bodies[0].position - scene.bodies[0].position;
@@ -165,12 +164,11 @@ TEST_CASE("on a slope steeper than atan mu the box slides with g (sin - mu cos) 
     for (const Method& m : methods) {
         CAPTURE(name_of(m));
         const Scene scene = with(test::on_slope(test::sliding_box(m.preset, 30.0, Vec3::Zero()), 30.0), m);
-        std::vector<RigidBody> bodies = scene.bodies;
-        ContactMemory memory;
-        Recorder nobody;
+        World world(scene);
+        const std::vector<RigidBody>& bodies = world.bodies();
         double at_one_second = 0.0;
         for (int frame = 0; frame < 300; ++frame) {
-            step(scene, bodies, nobody, frame, &memory);
+            world.step();
             if (frame == 59) at_one_second = bodies[0].velocity.x();
         }
         CHECK(std::abs((bodies[0].velocity.x() - at_one_second) / 4.0 / a - 1.0) < 0.03);

@@ -238,18 +238,16 @@ TEST_CASE("recorded and unrecorded runs of each method are bit-identical") {
         CAPTURE(settings.front());
         CAPTURE(settings.back());
         const Scene scene = scene_with("stack_3", settings);
-        std::vector<RigidBody> quiet = scene.bodies, traced = scene.bodies;
-        ContactMemory quiet_memory, traced_memory;
-        Recorder nobody;
+        World quiet(scene), traced(scene);
         Trace trace;
         trace.scene = scene;
         TraceRecorder recorder(trace);
         for (int frame = 0; frame < 20; ++frame) {
-            step(scene, quiet, nobody, frame, &quiet_memory);
-            step(scene, traced, recorder, frame, &traced_memory);
+            quiet.step();
+            traced.step(recorder);
         }
-        CHECK(quiet == traced);
-        CHECK(trace.frames.back().bodies_after.front() == state_of(quiet.front()));
+        CHECK(quiet.bodies() == traced.bodies());
+        CHECK(trace.frames.back().bodies_after.front() == state_of(quiet.bodies().front()));
     }
     // And a box sliding on its corners, where the cone clamps.
     for (const std::vector<std::string>& settings : runs) {
@@ -257,17 +255,15 @@ TEST_CASE("recorded and unrecorded runs of each method are bit-identical") {
         CAPTURE(settings.back());
         Scene scene = test::sliding_box("book");
         for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
-        std::vector<RigidBody> quiet = scene.bodies, traced = scene.bodies;
-        ContactMemory quiet_memory, traced_memory;
-        Recorder nobody;
+        World quiet(scene), traced(scene);
         Trace trace;
         trace.scene = scene;
         TraceRecorder recorder(trace);
         for (int frame = 0; frame < 10; ++frame) {
-            step(scene, quiet, nobody, frame, &quiet_memory);
-            step(scene, traced, recorder, frame, &traced_memory);
+            quiet.step();
+            traced.step(recorder);
         }
-        CHECK(quiet == traced);
+        CHECK(quiet.bodies() == traced.bodies());
     }
 }
 
@@ -282,10 +278,9 @@ TEST_CASE("a traced run of each preset and method round-trips through trace JSON
         CAPTURE(settings.back());
         Trace trace;
         trace.scene = scene_with("box_resting", settings);
-        std::vector<RigidBody> bodies = trace.scene.bodies;
-        ContactMemory memory;
+        World world(trace.scene);
         TraceRecorder recorder(trace);
-        for (int frame = 0; frame < 2; ++frame) step(trace.scene, bodies, recorder, frame, &memory);
+        for (int frame = 0; frame < 2; ++frame) world.step(recorder);
         if (trace.scene.settings.velocity_method == VelocityMethod::projected_gauss_seidel &&
             trace.scene.settings.warm_start)
             CHECK(trace.frames.at(1).velocity.iterations.at(0).sweep->stage == SolverStage::warm_start);

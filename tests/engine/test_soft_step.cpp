@@ -30,10 +30,9 @@ Scene soft_scene(const std::string& name, const std::vector<std::string>& settin
     return scene;
 }
 
-// Runs `frames` frames of `scene` with one contact memory, recording them when `trace` is given.
+// Runs `frames` frames of `scene`, recording them when `trace` is given.
 std::vector<RigidBody> simulate(const Scene& scene, int frames, Trace* trace = nullptr) {
-    std::vector<RigidBody> bodies = scene.bodies;
-    ContactMemory memory;
+    World world(scene);
     Recorder nobody;
     std::optional<TraceRecorder> recording;
     if (trace) {
@@ -41,8 +40,8 @@ std::vector<RigidBody> simulate(const Scene& scene, int frames, Trace* trace = n
         recording.emplace(*trace);
     }
     Recorder& recorder = trace ? static_cast<Recorder&>(*recording) : nobody;
-    for (int frame = 0; frame < frames; ++frame) step(scene, bodies, recorder, frame, &memory);
-    return bodies;
+    for (int frame = 0; frame < frames; ++frame) world.step(recorder);
+    return world.bodies();
 }
 
 }  // namespace
@@ -135,12 +134,11 @@ TEST_CASE("a box resting on the ground under soft step stays within a millimetre
     // The soft contact holds the box where its spring carries the weight: a deflection of g / omega^2 =
     // 9.81 / (60 pi)^2 = 0.28 mm at 30 Hz. Nothing pushes it sideways.
     const Scene scene = soft_scene("box_resting");
-    std::vector<RigidBody> bodies = scene.bodies;
-    ContactMemory memory;
-    Recorder nobody;
+    World world(scene);
+    const std::vector<RigidBody>& bodies = world.bodies();
     double most_energy = 0.0, most_drift = 0.0;
     for (int frame = 0; frame < 300; ++frame) {
-        const StepReport r = step(scene, bodies, nobody, frame, &memory);
+        const StepReport r = world.step();
         most_energy = std::max(most_energy, r.kinetic_energy);
         most_drift = std::max(most_drift, (bodies[0].position - scene.bodies[0].position).norm());
         CHECK(r.contacts == 4);

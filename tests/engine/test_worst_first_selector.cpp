@@ -52,8 +52,9 @@ Run run(const std::string& name, int frames, WorstFirstSearch search, const std:
     for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
     scene.settings.worst_first_search = search;
     Run r;
-    r.bodies = scene.bodies;
-    for (int frame = 0; frame < frames; ++frame) step(scene, r.bodies, r.log, frame);
+    World world(scene);
+    for (int frame = 0; frame < frames; ++frame) world.step(r.log);
+    r.bodies = world.bodies();
     return r;
 }
 
@@ -157,9 +158,9 @@ TEST_CASE("heap worst-first records the same trace as the full scan, updates inc
         trace.scene = test::shipped("stack_3");
         trace.scene.settings.worst_first_search = search;
         trace.recording.last_frame = 9;
-        std::vector<RigidBody> bodies = trace.scene.bodies;
+        World world(trace.scene);
         TraceRecorder recorder(trace);
-        for (int frame = 0; frame < 10; ++frame) step(trace.scene, bodies, recorder, frame);
+        for (int frame = 0; frame < 10; ++frame) world.step(recorder);
         return trace.frames;
     };
     const std::vector<FrameRecord> scan = traced(WorstFirstSearch::full_scan);

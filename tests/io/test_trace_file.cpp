@@ -231,9 +231,8 @@ TEST_CASE("the recorder's size estimate stays within a third of the written trac
                     resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
                 } else {
                     trace.scene.world.frames = 3;
-                    ContactMemory memory;
-                    for (int frame = 0; frame < trace.scene.world.frames; ++frame)
-                        step(trace.scene, bodies, recorder, frame, &memory);
+                    World world(trace.scene);
+                    for (int frame = 0; frame < trace.scene.world.frames; ++frame) world.step(recorder);
                 }
                 const double written = static_cast<double>(io::format_json(io::trace_json(trace)).size());
                 const double ratio = static_cast<double>(recorder.estimated_bytes()) / written;

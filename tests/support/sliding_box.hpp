@@ -64,11 +64,9 @@ inline Scene on_slope(Scene scene, double degrees) {
 
 // Runs `frames` frames from the scene's start; returns the bodies.
 inline std::vector<RigidBody> simulate_frames(const Scene& scene, int frames) {
-    std::vector<RigidBody> bodies = scene.bodies;
-    ContactMemory memory;
-    Recorder nobody;
-    for (int frame = 0; frame < frames; ++frame) step(scene, bodies, nobody, frame, &memory);
-    return bodies;
+    World world(scene);
+    for (int frame = 0; frame < frames; ++frame) world.step();
+    return world.bodies();
 }
 
 // The box's yaw about +y (radians), from where its x axis points.

@@ -2,14 +2,14 @@
 // scene's accuracy metric; writes results.csv, results.json, speed_accuracy.png, stability.md and stability.png
 // into --out (docs/bench.md). `--scaling` instead times the book's worst-first search on growing grids.
 
+#include "bench/bench_charts.hpp"
+#include "bench/chart_canvas.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_runs.hpp"
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
 #include "cli/progress.hpp"
-#include "gui/bench_charts.hpp"
-#include "gui/display.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
@@ -205,9 +205,9 @@ int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& 
     files.emplace_back(folder / "stability.md", bench::stability_markdown(run), "--out");
     std::string charts_problem;
     try {
-        files.emplace_back(folder / "speed_accuracy.png", gui::speed_accuracy_png(run), "--out");
-        files.emplace_back(folder / "stability.png", gui::stability_png(run), "--out");
-    } catch (const gui::DisplayError& e) {
+        files.emplace_back(folder / "speed_accuracy.png", bench::speed_accuracy_png(run), "--out");
+        files.emplace_back(folder / "stability.png", bench::stability_png(run), "--out");
+    } catch (const bench::ChartError& e) {
         charts_problem = e.what();
         while (files.size() > 3) files.pop_back();
     }

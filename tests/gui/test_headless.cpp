@@ -7,11 +7,11 @@
 #include "io/trace_json.hpp"
 #include "lessons/lesson.hpp"
 #include "model/runs.hpp"
+#include "support/png_image.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
-#include <stb_image.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -33,27 +33,7 @@ std::string read(const std::filesystem::path& path) {
     return text.str();
 }
 
-struct Image {
-    int width = 0, height = 0;
-    std::vector<unsigned char> rgb;
-};
-
-Image load_png(const std::filesystem::path& path) {
-    Image image;
-    int channels = 0;
-    std::unique_ptr<unsigned char, void (*)(void*)> data(
-        stbi_load(path.string().c_str(), &image.width, &image.height, &channels, 3), stbi_image_free);
-    REQUIRE_MESSAGE(data != nullptr, "not a PNG: " << path);
-    image.rgb.assign(data.get(), data.get() + static_cast<std::size_t>(image.width * image.height * 3));
-    return image;
-}
-
-std::size_t distinct_colours(const Image& image) {
-    std::set<unsigned> colours;
-    for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3)
-        colours.insert(image.rgb[i] << 16 | image.rgb[i + 1] << 8 | image.rgb[i + 2]);
-    return colours.size();
-}
+using Image = PngImage;
 
 std::size_t differing_pixels(const Image& a, const Image& b) {
     REQUIRE(a.rgb.size() == b.rgb.size());
@@ -271,32 +251,6 @@ TEST_CASE("without a display a lesson falls back to text and pictures, and says 
     CHECK(r.code == 0);
     CHECK(r.err.find("note: no display") != std::string::npos);
     CHECK(std::filesystem::exists(dir.file("one/trace.json")));
-}
-
-TEST_CASE("a tiny bench run writes all five files, and its charts are legible pictures of the requested data") {
-    TempDir dir;
-    const auto out = dir.file("bench");
-    const CliResult r = run_cli({"bench", "--scenes", "sphere_drop", "--methods", "book", "--iterations", "1,2",
-                                 "--frames", "40", "--repeats", "1", "--out", out.string()});
-    CAPTURE(r.err);
-    REQUIRE(r.code == 0);
-    for (const char* name : {"results.csv", "results.json", "speed_accuracy.png", "stability.md", "stability.png"})
-        CHECK_MESSAGE(std::filesystem::exists(out / name), name);
-    std::istringstream csv(read(out / "results.csv"));
-    std::string header, line;
-    std::getline(csv, header);
-    CHECK(header.starts_with("scene,metric,unit,target,method,n,"));
-    int rows = 0;
-    while (std::getline(csv, line)) rows += line.starts_with("sphere_drop,restitution_error,,0.01,book,") ? 1 : 0;
-    CHECK(rows == 2);
-    // One panel (470 x 390 below a 100-pixel header, at least 960 wide): not blank, drawn in many colours.
-    const Image chart = load_png(out / "speed_accuracy.png");
-    CHECK(chart.width == 960);
-    CHECK(chart.height == 500);
-    CHECK(distinct_colours(chart) > 20);
-    const Image matrix = load_png(out / "stability.png");
-    CHECK(matrix.width > 100);
-    CHECK(distinct_colours(matrix) > 20);
 }
 
 TEST_CASE("inspect shows a run up to the frame that left a body non-finite, with a note naming it") {

@@ -1,18 +1,21 @@
-// The bench's model without rendering: the Pareto front, the cheapest configuration, the iteration mapping,
-// the accuracy metrics on tiny runs, the results files, and its flags. The five files with their pictures
-// are checked end to end in the headless program (tests/gui/test_headless.cpp).
+// The bench's model: the Pareto front, the cheapest configuration, the iteration mapping, the accuracy metrics
+// on tiny runs, the results files, and its flags; and the command end to end, its five files with the pictures,
+// which it draws with no display. How the pictures are drawn is checked in tests/bench.
 
 #include "bench/bench_metrics.hpp"
 #include "bench/bench_plan.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_runs.hpp"
-#include "gui/bench_charts.hpp"
+#include "bench/bench_charts.hpp"
+#include "support/png_image.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace impulse::test {
@@ -83,11 +86,11 @@ TEST_CASE("a stability cell meets the target, holds but misses it (saying by how
 }
 
 TEST_CASE("chart markers at one place are moved apart, sideways first, and one alone stays where its data is") {
-    using gui::ChartPoint;
+    using bench::ChartPoint;
     const ChartPoint lo{0, 0}, hi{400, 300};
     // Three runs with the same time and error (book N = 2, 4, 8 at rest), and one elsewhere.
     const std::vector<ChartPoint> at{{100, 100}, {100, 100}, {100, 100}, {300, 50}};
-    const std::vector<ChartPoint> drawn = gui::dodged_markers(at, 15.0f, lo, hi);
+    const std::vector<ChartPoint> drawn = bench::dodged_markers(at, 15.0f, lo, hi);
     REQUIRE(drawn.size() == 4);
     CHECK(drawn[0].x == 100.0f);  // the first keeps its place
     CHECK(drawn[1].x == 115.0f);  // one width to the right
@@ -99,7 +102,7 @@ TEST_CASE("chart markers at one place are moved apart, sideways first, and one a
         for (std::size_t j = i + 1; j < drawn.size(); ++j)
             CHECK(std::hypot(drawn[i].x - drawn[j].x, drawn[i].y - drawn[j].y) >= 15.0f);
     // At the plot's left edge, the second goes right and the third further right: never off the plot.
-    const std::vector<ChartPoint> edge = gui::dodged_markers({{0, 10}, {0, 10}, {0, 10}}, 15.0f, lo, hi);
+    const std::vector<ChartPoint> edge = bench::dodged_markers({{0, 10}, {0, 10}, {0, 10}}, 15.0f, lo, hi);
     CHECK(edge[1].x == 15.0f);
     CHECK(edge[2].x == 30.0f);
 }
@@ -231,6 +234,61 @@ TEST_CASE("bad bench flags print one line naming the flag, exit with code 2 and 
         CHECK(r.out.empty());
         CHECK(dir.entries() == 0);
     }
+}
+
+TEST_CASE("a tiny bench run writes all five files, and its charts are legible pictures of the requested data") {
+    TempDir dir;
+    const auto out = dir.file("bench");
+    // No display, and an SDL video driver that does not exist: the charts must not need either.
+    const auto keep = [](const char* name) {
+        const char* value = std::getenv(name);
+        return value ? std::optional<std::string>(value) : std::nullopt;
+    };
+    const std::optional<std::string> display = keep("DISPLAY"), wayland = keep("WAYLAND_DISPLAY"),
+                                     driver = keep("SDL_VIDEODRIVER");
+    ::unsetenv("DISPLAY");
+    ::unsetenv("WAYLAND_DISPLAY");
+    ::setenv("SDL_VIDEODRIVER", "no_such_driver", 1);
+    const CliResult r = run_cli({"bench", "--scenes", "sphere_drop", "--methods", "book", "--iterations", "1,2",
+                                 "--frames", "40", "--repeats", "1", "--out", out.string()});
+    const auto restore = [](const char* name, const std::optional<std::string>& value) {
+        value ? ::setenv(name, value->c_str(), 1) : ::unsetenv(name);
+    };
+    restore("DISPLAY", display);
+    restore("WAYLAND_DISPLAY", wayland);
+    restore("SDL_VIDEODRIVER", driver);
+    CAPTURE(r.err);
+    REQUIRE(r.code == 0);
+    for (const char* name : {"results.csv", "results.json", "speed_accuracy.png", "stability.md", "stability.png"})
+        CHECK_MESSAGE(std::filesystem::exists(out / name), name);
+    std::ifstream csv(out / "results.csv");
+    std::string header, line;
+    std::getline(csv, header);
+    CHECK(header.starts_with("scene,metric,unit,target,method,n,"));
+    int rows = 0;
+    while (std::getline(csv, line)) rows += line.starts_with("sphere_drop,restitution_error,,0.01,book,") ? 1 : 0;
+    CHECK(rows == 2);
+    // One panel (470 x 390 below a 100-pixel header, at least 960 wide): white, with the header's text in ink
+    // (30, 30, 30) and book's markers in its colour (0, 114, 178), antialiased into many more colours.
+    const PngImage chart = load_png(out / "speed_accuracy.png");
+    CHECK(chart.width == 960);
+    CHECK(chart.height == 500);
+    CHECK(chart.at(0, 0) == 0xFFFFFFu);
+    CHECK(distinct_colours(chart) > 20);
+    // Dark: every channel at most 60, which only the text in ink and its antialiased edges are.
+    int dark = 0, book = 0;
+    for (int y = 0; y < chart.height; ++y)
+        for (int x = 0; x < chart.width; ++x) {
+            const unsigned c = chart.at(x, y);
+            dark += (c >> 16) <= 60 && ((c >> 8) & 0xFF) <= 60 && (c & 0xFF) <= 60 ? 1 : 0;
+            book += c == 0x0072B2u ? 1 : 0;
+        }
+    CHECK(dark > 500);
+    CHECK(book > 50);
+    // No stress scene was run, so the matrix is its header, its legend and its footnote: 240 + 250 + 20 wide.
+    const PngImage matrix = load_png(out / "stability.png");
+    CHECK(matrix.width == 510);
+    CHECK(distinct_colours(matrix) > 20);
 }
 
 }  // namespace impulse::test

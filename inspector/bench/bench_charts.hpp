@@ -1,5 +1,5 @@
 #pragma once
-// The bench's pictures, drawn with Dear ImGui draw lists into the headless display and encoded as PNG:
+// The bench's pictures, drawn with Dear ImGui draw lists on a canvas that needs no display (bench/chart_canvas):
 // speed against accuracy (one log-log panel per scene, one series per method, the Pareto front marked) and
 // the stability matrix (methods x stress scenes: green meets the target, amber holds but misses it, red fails).
 
@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace impulse::gui {
+namespace impulse::bench {
 
 // A place on a chart, in pixels (y down).
 struct ChartPoint {
@@ -22,8 +22,8 @@ struct ChartPoint {
 // the time shown far less than up or down changes the error. A marker with no free place keeps its own.
 std::vector<ChartPoint> dodged_markers(const std::vector<ChartPoint>& at, float apart, ChartPoint lo, ChartPoint hi);
 
-// PNG bytes. Throw DisplayError when no offscreen display can be opened.
+// PNG bytes. Throw ChartError (bench/chart_canvas.hpp) when the picture cannot be encoded.
 std::string speed_accuracy_png(const bench::BenchRun& run);
 std::string stability_png(const bench::BenchRun& run);
 
-}  // namespace impulse::gui
+}  // namespace impulse::bench

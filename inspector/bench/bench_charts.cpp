@@ -1,15 +1,14 @@
-#include "gui/bench_charts.hpp"
+#include "bench/bench_charts.hpp"
 
-#include "gui/display.hpp"
+#include "bench/chart_canvas.hpp"
 
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 
-namespace impulse::gui {
+namespace impulse::bench {
 
 namespace {
 
@@ -30,21 +29,6 @@ ImU32 method_colour(std::size_t i) {
                                  IM_COL32(204, 121, 167, 255), IM_COL32(213, 94, 0, 255),  IM_COL32(86, 180, 233, 255),
                                  IM_COL32(120, 120, 0, 255)};
     return colours[i % std::size(colours)];
-}
-
-// Renders one frame of `width` x `height` with `draw` filling the background draw list; returns the PNG.
-std::string render(int width, int height, const std::function<void(ImDrawList&)>& draw) {
-    Display display(DisplayOptions{true, width, height, "Impulse Lab bench"});
-    Pixels pixels;
-    // The first frame builds the font texture; the second is the picture.
-    for (int frame = 0; frame < 2; ++frame) {
-        display.begin_frame();
-        ImDrawList& list = *ImGui::GetBackgroundDrawList();
-        list.AddRectFilled({0, 0}, {static_cast<float>(width), static_cast<float>(height)}, white);
-        draw(list);
-        display.end_frame(frame == 1 ? &pixels : nullptr);
-    }
-    return encode_png(pixels);
 }
 
 void text(ImDrawList& list, ImVec2 at, ImU32 colour, const std::string& s, float size = text_size) {
@@ -301,7 +285,7 @@ std::string speed_accuracy_png(const BenchRun& run) {
     // At least 960 pixels wide, so the header's lines fit above a single panel too.
     const int width = std::max(960, static_cast<int>(columns * panel_w + 20));
     const int height = static_cast<int>(header + rows * panel_h + 10);
-    return render(width, height, [&](ImDrawList& list) {
+    return draw_png(width, height, [&](ImDrawList& list) {
         text(list, {12, 8}, ink,
              "Speed against accuracy: time per step (recorder off, median) against each scene's error, log-log. "
              "Lower left is better.",
@@ -335,7 +319,7 @@ std::string stability_png(const BenchRun& run) {
     const int width =
         static_cast<int>(left + cell_w * static_cast<float>(std::max<std::size_t>(1, m.methods.size())) + 20);
     const int height = static_cast<int>(top + cell_h * static_cast<float>(m.scenes.size()) + 44);
-    return render(width, height, [&](ImDrawList& list) {
+    return draw_png(width, height, [&](ImDrawList& list) {
         std::string counts;
         for (std::size_t i = 0; i < run.iterations.size(); ++i)
             counts += (i ? ", " : "") + std::to_string(run.iterations[i]);
@@ -395,4 +379,4 @@ std::string stability_png(const BenchRun& run) {
     });
 }
 
-}  // namespace impulse::gui
+}  // namespace impulse::bench

@@ -10,9 +10,9 @@
 #include "body/rigid_body.hpp"
 #include "memory/contact_memory.hpp"
 #include "record/recorder.hpp"
-#include "resolver/prepared_contact.hpp"
-#include "resolver/settings.hpp"
-#include "world/integrate.hpp"
+#include "preparation/prepared_contact.hpp"
+#include "settings/settings.hpp"
+#include "body/integrate.hpp"
 
 #include <span>
 #include <vector>

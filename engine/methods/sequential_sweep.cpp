@@ -15,8 +15,8 @@
 // the bookkeeping updates; the iteration limit is sweeps x contacts (settings.iterations does not apply).
 
 #include "methods/solver_common.hpp"
-#include "resolver/bookkeeping.hpp"
-#include "resolver/phases.hpp"
+#include "methods/bookkeeping.hpp"
+#include "methods/phases.hpp"
 
 #include <algorithm>
 

@@ -61,7 +61,7 @@
 // holds the frame's end. Every visit counts as an iteration of the velocity phase.
 
 #include "methods/method.hpp"
-#include "resolver/settings.hpp"
+#include "settings/settings.hpp"
 
 namespace impulse {
 

@@ -36,9 +36,9 @@
 
 #include "methods/contact_rows.hpp"
 #include "methods/method.hpp"
-#include "methods/position_bias.hpp"
-#include "resolver/bookkeeping.hpp"
-#include "resolver/worst_first_selector.hpp"
+#include "preparation/position_bias.hpp"
+#include "methods/bookkeeping.hpp"
+#include "methods/worst_first_selector.hpp"
 
 #include <algorithm>
 #include <cmath>

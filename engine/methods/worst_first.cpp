@@ -5,8 +5,8 @@
 // velocity and desired delta v, methods/solver_common.hpp), final: nothing takes it back.
 
 #include "methods/solver_common.hpp"
-#include "resolver/bookkeeping.hpp"
-#include "resolver/phases.hpp"
+#include "methods/bookkeeping.hpp"
+#include "methods/phases.hpp"
 
 namespace impulse {
 

@@ -3,7 +3,7 @@
 // trace file stores it (engine/io/trace_json), and the inspector, lessons and `diff` read it back.
 
 #include "record/iteration_records.hpp"
-#include "resolver/prepared_contact.hpp"
+#include "preparation/prepared_contact.hpp"
 #include "scene/scene.hpp"
 
 #include <climits>

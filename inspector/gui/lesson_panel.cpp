@@ -2,7 +2,7 @@
 // the way through the lesson's steps.
 
 #include "gui/panels.hpp"
-#include "io/input_error.hpp"
+#include "formats/input_error.hpp"
 
 #include <imgui.h>
 

@@ -1,0 +1,155 @@
+// `impulse-lab lesson [N]`: the course. Without N, the lessons with their titles and the student's progress;
+// with N, the lesson in the inspector's window, or, headless (or with no display), as annotated text in the
+// terminal plus the trace and one screenshot per step in a folder.
+
+#include "cli/cli.hpp"
+#include "cli/commands.hpp"
+#include "model/input_files.hpp"
+#include "cli/outputs.hpp"
+#include "explain/text_table.hpp"
+#include "gui/display.hpp"
+#include "gui/inspector_app.hpp"
+#include "formats/atomic_file.hpp"
+#include "formats/input_error.hpp"
+#include "course/lesson.hpp"
+#include "course/progress.hpp"
+#include "model/script.hpp"
+
+#include <cstdio>
+
+namespace impulse::cli {
+
+namespace {
+
+std::filesystem::path lessons_folder(const LessonOptions& options) {
+    return options.lessons_folder ? std::filesystem::path(*options.lessons_folder)
+                                  : std::filesystem::path(IMPULSE_LESSONS_DIR);
+}
+
+int list_lessons(const LessonOptions& options, const lessons::Progress& progress, std::ostream& out,
+                 std::ostream& err) {
+    const std::filesystem::path folder = lessons_folder(options);
+    const std::vector<std::filesystem::path> files = lessons::lesson_files(folder);
+    if (files.empty()) throw FileError{folder.string(), "", "no lesson files (NN-name.md) in this folder"};
+    out << "Lessons in " << folder.string() << " (open one with: impulse-lab lesson N)\n";
+    int status = 0;
+    for (const std::filesystem::path& file : files) {
+        try {
+            const lessons::Lesson lesson = lessons::read_lesson(file);
+            const int questions = lessons::question_count(lesson);
+            int answered = 0, right = 0;
+            if (const auto p = progress.lessons.find(lesson.name); p != progress.lessons.end())
+                for (const auto& [id, record] : p->second.answers) ++answered, right += record.correct ? 1 : 0;
+            // Padded by what a terminal shows, not by bytes: titles hold symbols such as ×.
+            const std::size_t width = explain::display_width(lesson.title);
+            char line[96];
+            std::snprintf(line, sizeof line, " %2zu steps, %d questions   ", lesson.steps.size(), questions);
+            out << (lesson.number < 10 ? "   " : "  ") << lesson.number << "  " << lesson.title
+                << std::string(width < 60 ? 60 - width : 1, ' ') << line;
+            if (answered == 0)
+                out << "not started\n";
+            else
+                out << "answered " << answered << " of " << questions << ", " << right << " right\n";
+        } catch (const FileError& e) {
+            err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
+            status = exit_bad_input;
+        }
+    }
+    return status;
+}
+
+// The lesson as text: each step's place, text, question, the step's table, and the engine's answer.
+void write_lesson_text(std::ostream& out, const lessons::PreparedLesson& prepared) {
+    const lessons::Lesson& lesson = prepared.lesson;
+    out << "Lesson " << lesson.number << " · " << lesson.title << "\n(" << lesson.file.string() << ", scene "
+        << lesson.scene.lexically_normal().string() << ")\n";
+    if (!lesson.introduction.empty()) out << '\n' << lesson.introduction << '\n';
+    const Trace& trace = prepared.session.trace();
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const lessons::Step& step = lesson.steps[i];
+        const inspect::Cursor& place = prepared.places[i];
+        out << "\n── Step " << i + 1 << " of " << lesson.steps.size() << " · " << inspect::describe(trace, place)
+            << " ──\n\n"
+            << step.text << '\n';
+        if (step.question) {
+            out << "\nQuestion: " << step.question->prompt << '\n';
+            for (std::size_t o = 0; o < step.question->options.size(); ++o)
+                out << "  " << o + 1 << ". " << step.question->options[o].label << '\n';
+        }
+        const std::vector<explain::StepTable> tables = inspect::step_tables(trace, place);
+        out << '\n';
+        explain::write_table(out, tables[static_cast<std::size_t>(place.step)]);
+        if (step.question) out << "Answer (the engine's): " << prepared.answers[i]->shown << '\n';
+    }
+}
+
+}  // namespace
+
+int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream& err) {
+    const std::optional<std::filesystem::path> progress_path = lessons::progress_file();
+    lessons::LoadedProgress loaded;
+    if (progress_path) loaded = lessons::load_progress(*progress_path);
+    if (!loaded.note.empty()) err << "impulse-lab: note: " << loaded.note << '\n';
+    if (!options.number) return list_lessons(options, loaded.progress, out, err);
+
+    std::optional<std::filesystem::path> file;
+    for (const std::filesystem::path& f : lessons::lesson_files(lessons_folder(options)))
+        if (std::atoi(f.filename().string().c_str()) == *options.number) file = f;
+    if (!file)
+        throw io::InputError("lesson", "there is no lesson " + std::to_string(*options.number) + " in " +
+                                           lessons_folder(options).string() + " (impulse-lab lesson lists them)");
+    lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(*file));
+
+    gui::InspectorRun run;
+    if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
+    run.lesson = &prepared;
+    run.progress = &loaded.progress;
+    run.progress_file = progress_path;
+    run.headless = options.headless || !gui::display_available();
+    if (!run.headless) {
+        if (options.script) {
+            run.script_name = *options.script;
+            run.script = read_script_file(*options.script);
+        }
+        run.screenshot = options.screenshot;
+        // A picture on standard output, as inspect's (cli/outputs.hpp): what the lesson says goes to stderr then.
+        if (options.screenshot && names_standard_output(*options.screenshot, out)) {
+            if (is_terminal(out))
+                throw io::InputError("--screenshot", "standard output is a terminal; redirect it to a file or a pipe");
+            run.standard_output = &out;
+            return gui::run_inspector(prepared.session, run, err, err);
+        }
+        return gui::run_inspector(prepared.session, run, out, err);
+    }
+    if (options.script || options.screenshot)
+        throw io::InputError(options.script ? "--script" : "--screenshot",
+                             "is for the lesson's window; headless, every step is written as a PNG to --out");
+
+    if (!options.headless)
+        err << "impulse-lab: note: no display (DISPLAY is not set): the lesson is shown as text, with its "
+               "pictures in a folder\n";
+    char default_folder[32];
+    std::snprintf(default_folder, sizeof default_folder, "lesson-%02d", prepared.lesson.number);
+    const std::filesystem::path folder = options.out ? std::filesystem::path(*options.out) : default_folder;
+    std::error_code error;
+    std::filesystem::create_directories(folder, error);
+    if (error) throw io::InputError("--out", "cannot create " + folder.string() + ": " + error.message());
+
+    write_lesson_text(out, prepared);
+    run.script_name = "lesson";
+    for (std::size_t i = 0; i < prepared.places.size(); ++i) {
+        char name[96];
+        std::snprintf(name, sizeof name, "step-%02zu-%s.png", i + 1, prepared.lesson.steps[i].id.c_str());
+        run.script.push_back({inspect::ActionKind::lesson_step, std::to_string(i + 1), 1, 0});
+        run.script.push_back({inspect::ActionKind::screenshot, (folder / name).string(), 1, 0});
+    }
+    run.script.push_back({inspect::ActionKind::export_trace, (folder / "trace.json").string(), 1, 0});
+    // Text mode shows the answers, so it does not move the student's saved place or record answers.
+    run.progress = nullptr;
+    const int status = gui::run_inspector(prepared.session, run, out, err);
+    if (status == 0)
+        out << "\nWrote " << prepared.places.size() << " screenshots and trace.json to " << folder.string() << '\n';
+    return status;
+}
+
+}  // namespace impulse::cli

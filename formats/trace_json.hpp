@@ -1,0 +1,22 @@
+#pragma once
+// Trace files (docs/trace-format.md, schemas/trace.schema.json): a header (format, version, conventions,
+// settings, what was recorded, the scene), then frames. Inside a frame every key is a name of the
+// derivation vocabulary of DESIGN.md, so the file, the code, the inspector and the lessons use one word
+// for one value.
+
+#include "formats/json_values.hpp"
+#include "record/trace.hpp"
+
+#include <string_view>
+
+namespace impulse::io {
+
+inline constexpr std::string_view trace_format_name = "impulse-lab-trace";
+
+json trace_json(const Trace& trace);
+
+// Checks the schema, then reads; throws InputError with the JSON path of the first problem.
+Trace read_trace(const json& document);
+Trace read_trace_text(std::string_view text);
+
+}  // namespace impulse::io

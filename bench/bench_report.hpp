@@ -1,7 +1,7 @@
 #pragma once
 // What the bench concludes from its runs, without rendering: the Pareto front of time against error per scene,
 // the cheapest configuration that meets each scene's target, the stability matrix, and the files
-// results.csv, results.json and stability.md. The charts (gui/bench_charts) draw the same data.
+// results.csv, results.json and stability.md. The charts (bench/bench_charts) draw the same data.
 
 #include "bench/bench_runs.hpp"
 

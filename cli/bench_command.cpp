@@ -196,7 +196,7 @@ int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& 
 
     // The files: text first, then the pictures; all staged, then renamed together.
     const bench::Provenance where = provenance();
-    const io::DeferredSignals held;  // Ctrl-C waits until every file is in place (or none is)
+    const io::HeldInterruptions held;  // Ctrl-C waits until every file is in place (or none is)
     std::vector<io::StagedFile> files;
     std::error_code error;
     fs::create_directories(folder, error);

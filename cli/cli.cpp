@@ -1,4 +1,5 @@
 #include "cli/cli.hpp"
+#include "cli/deferred_signals.hpp"
 
 #include "cli/commands.hpp"
 #include "cli/flags.hpp"
@@ -313,6 +314,7 @@ std::vector<HelpSection> manual_sections() {
 }  // namespace
 
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal) {
+    install_deferred_signals();
     CLI::App app{"Impulse Lab: step through rigid-body collision resolution (Millington, ch. 14)", "impulse-lab"};
     app.set_version_flag("--version", version_text);
     app.footer(footer_text());

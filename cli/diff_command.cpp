@@ -213,7 +213,7 @@ void write_class_report(const fs::path& folder, const std::vector<coursework::Cl
     for (std::size_t i = 0; i < rows.size(); ++i)
         texts.emplace_back(folder / "feedback" / pages[i], coursework::feedback_markdown(rows[i], subject));
 
-    const io::DeferredSignals held;  // Ctrl-C waits until every file is in place (or none is)
+    const io::HeldInterruptions held;  // Ctrl-C waits until every file is in place (or none is)
     std::error_code error;
     fs::create_directories(folder / "feedback", error);
     if (error)

@@ -55,7 +55,7 @@ void Outputs::write(const std::vector<Text>& texts) const {
     std::string_view standard_text;
     bool standard = false;
     {
-        const io::DeferredSignals held;
+        const io::HeldInterruptions held;
         std::vector<io::StagedFile> files;
         for (const Text& t : texts) {
             const Named* n = named(t.flag);

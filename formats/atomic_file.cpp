@@ -8,7 +8,6 @@
 #include <ctime>
 #include <fcntl.h>
 #include <poll.h>
-#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -50,12 +49,11 @@ fs::path end_of_links(const fs::path& path, std::string_view flag) {
     }
 }
 
-// SIGINT or SIGTERM is waiting to be delivered (held back by DeferredSignals).
+WriteInterruptions* program_policy = nullptr;
+
+// An interruption is waiting to take effect (held back by the program's policy).
 bool interrupt_pending() {
-    sigset_t pending;
-    sigemptyset(&pending);
-    ::sigpending(&pending);
-    return sigismember(&pending, SIGINT) == 1 || sigismember(&pending, SIGTERM) == 1;
+    return program_policy != nullptr && program_policy->pending();
 }
 
 constexpr const char* interrupted_waiting = "interrupted while waiting for its reader";
@@ -101,31 +99,15 @@ std::string write_all(int fd, std::string_view text) {
     return {};
 }
 
-// Writes `text` in place. A reader that goes away gives an error, not a SIGPIPE that would end the program
-// between two files of a set.
+// Writes `text` in place. A reader that goes away gives an error (EPIPE) where the program's policy holds
+// SIGPIPE back, not a signal that would end the program between two files of a set.
 void write_in_place(const fs::path& target, std::string_view text, std::string_view flag, const fs::path& path) {
-    sigset_t pipe_signal, previous, pending;
-    sigemptyset(&pipe_signal);
-    sigaddset(&pipe_signal, SIGPIPE);
-    pthread_sigmask(SIG_BLOCK, &pipe_signal, &previous);
-    sigemptyset(&pending);
-    ::sigpending(&pending);
-    const bool pipe_pending_before = sigismember(&pending, SIGPIPE) == 1;
-
     std::string reason;
     const int fd = open_in_place(target, reason);
     if (fd >= 0) {
         reason = write_all(fd, text);
         if (::close(fd) != 0 && reason.empty() && errno != EINTR) reason = std::strerror(errno);
     }
-    // A SIGPIPE this write caused is taken back before the mask is restored.
-    sigemptyset(&pending);
-    ::sigpending(&pending);
-    if (!pipe_pending_before && sigismember(&pending, SIGPIPE) == 1) {
-        const timespec now{0, 0};
-        ::sigtimedwait(&pipe_signal, nullptr, &now);
-    }
-    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
     if (!reason.empty()) fail(flag, path, reason);
 }
 
@@ -231,20 +213,20 @@ void StagedFile::commit() {
     }
 }
 
-DeferredSignals::DeferredSignals() {
-    sigset_t held;
-    sigemptyset(&held);
-    sigaddset(&held, SIGINT);
-    sigaddset(&held, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &held, &previous_);
+void set_write_interruptions(WriteInterruptions* policy) {
+    program_policy = policy;
 }
 
-DeferredSignals::~DeferredSignals() {
-    pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+HeldInterruptions::HeldInterruptions() : policy_(program_policy) {
+    if (policy_) policy_->hold();
+}
+
+HeldInterruptions::~HeldInterruptions() {
+    if (policy_) policy_->release();
 }
 
 void write_file_atomically(const fs::path& path, std::string_view contents, std::string_view flag) {
-    const DeferredSignals held;
+    const HeldInterruptions held;
     StagedFile(path, contents, flag).commit();
 }
 

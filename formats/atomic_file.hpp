@@ -9,7 +9,6 @@
 // terminal (/dev/null, a pipe a reader waits on) cannot be replaced by a rename and is written in place;
 // a directory, a socket or a block device is refused.
 
-#include <csignal>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -55,19 +54,35 @@ private:
     std::string flag_;
 };
 
-// Holds SIGINT and SIGTERM back (in this thread) while it lives, so that staging a file and renaming a set of
-// files into place is never cut short: a signal that arrives meanwhile is delivered when it ends, once the
-// files are whole and no temporary is left. write_file_atomically holds them itself; a command that stages
-// several files holds them around all of its stages and commits.
-class DeferredSignals {
+// What the program does about interruptions while files are written. The formats layer knows no process
+// signals: the program installs its own (cli/deferred_signals.hpp holds SIGINT and SIGTERM back and turns a
+// reader's going away into an error instead of SIGPIPE); a library user without one gets none.
+class WriteInterruptions {
 public:
-    DeferredSignals();
-    ~DeferredSignals();
-    DeferredSignals(const DeferredSignals&) = delete;
-    DeferredSignals& operator=(const DeferredSignals&) = delete;
+    virtual ~WriteInterruptions() = default;
+    // Between hold() and its release(), staging and renaming a set of files is never cut short: an
+    // interruption that arrives meanwhile takes effect once the files are whole and no temporary is left.
+    // Holds nest.
+    virtual void hold() = 0;
+    virtual void release() = 0;
+    // An interruption is waiting (held back): a wait for a FIFO's reader gives up.
+    virtual bool pending() const = 0;
+};
+
+// The process's one policy (its signals are process-wide too); nullptr for none. Not owned.
+void set_write_interruptions(WriteInterruptions* policy);
+
+// Holds interruptions back, through the program's policy, while it lives. write_file_atomically holds them
+// itself; a command that stages several files holds them around all of its stages and commits.
+class HeldInterruptions {
+public:
+    HeldInterruptions();
+    ~HeldInterruptions();
+    HeldInterruptions(const HeldInterruptions&) = delete;
+    HeldInterruptions& operator=(const HeldInterruptions&) = delete;
 
 private:
-    sigset_t previous_;
+    WriteInterruptions* policy_;
 };
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view flag);

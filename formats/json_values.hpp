@@ -1,5 +1,5 @@
 #pragma once
-// The conventions of DESIGN.md in JSON: vectors [x, y, z], quaternions [w, x, y, z], matrices row-major
+// The conventions of docs/design.md in JSON: vectors [x, y, z], quaternions [w, x, y, z], matrices row-major
 // [[row0], [row1], [row2]], per-body values [body0, body1] with null for the world. The readers assume the
 // value already passed its schema (right types and lengths).
 

@@ -1,7 +1,7 @@
 #pragma once
 // Trace files (docs/trace-format.md, schemas/trace.schema.json): a header (format, version, conventions,
 // settings, what was recorded, the scene), then frames. Inside a frame every key is a name of the
-// derivation vocabulary of DESIGN.md, so the file, the code, the inspector and the lessons use one word
+// derivation vocabulary of docs/design.md, so the file, the code, the inspector and the lessons use one word
 // for one value.
 
 #include "formats/json_values.hpp"

@@ -5,7 +5,7 @@
 // (recorder.end_phase) and says how the phase ended. Each method is one file in engine/methods/ defining one
 // of the functions below; engine/methods/method_table.hpp maps each settings value to its function, its scope
 // and the settings it reads. Nothing else names a method: adding one is its file, its enumerator in
-// resolver/settings.hpp, one row of the table, and its section in docs/methods.md.
+// settings/settings.hpp, one row of the table, and its section in docs/methods.md.
 
 #include "body/rigid_body.hpp"
 #include "memory/contact_memory.hpp"

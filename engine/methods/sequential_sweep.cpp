@@ -4,7 +4,7 @@
 // two methods can be compared on the cost of finding the worst contact against the order's effect on
 // accuracy. As in the book, a contact whose desired delta v is at or below the velocity epsilon is skipped,
 // and each impulse updates the bookkeeping of every contact sharing a body (the linearised formulas of
-// resolver/bookkeeping.cpp). The sweeps stop early when a whole sweep found nothing to resolve.
+// methods/bookkeeping.cpp). The sweeps stop early when a whole sweep found nothing to resolve.
 //
 // Each impulse makes its own contact's normal velocity exactly its target and nothing else holds the total:
 // a later contact's impulse may undo it, and no impulse is ever taken back. On a stack the sweep therefore

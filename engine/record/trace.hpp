@@ -1,6 +1,6 @@
 #pragma once
 // A trace: everything one run of the resolver computed, as plain structs. The JSON recorder fills it, the
-// trace file stores it (engine/io/trace_json), and the inspector, lessons and `diff` read it back.
+// trace file stores it (formats/trace_json), and the inspector, lessons and `diff` read it back.
 
 #include "record/iteration_records.hpp"
 #include "preparation/prepared_contact.hpp"

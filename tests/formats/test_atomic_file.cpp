@@ -66,35 +66,6 @@ TEST_CASE("a new file gets the permissions a normally created file would have, n
           (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read));
 }
 
-namespace {
-
-volatile std::sig_atomic_t terminate_seen = 0;
-extern "C" void see_terminate(int) {
-    terminate_seen = 1;
-}
-
-}  // namespace
-
-TEST_CASE("a signal that arrives while files are being written is delivered only once they are in place") {
-    impulse::test::TempDir dir;
-    struct sigaction action {
-    }, previous{};
-    action.sa_handler = see_terminate;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGTERM, &action, &previous);
-    terminate_seen = 0;
-    {
-        const impulse::io::DeferredSignals held;
-        impulse::io::StagedFile staged(dir.file("out.txt"), "whole", "--out");
-        std::raise(SIGTERM);  // held back: it would otherwise cut the write short
-        CHECK(terminate_seen == 0);
-        staged.commit();
-    }
-    CHECK(terminate_seen == 1);
-    CHECK(dir.entries() == 1);  // the file, no temporary
-    sigaction(SIGTERM, &previous, nullptr);
-}
-
 // What a path stands for stays what it was: only files are replaced.
 
 namespace {
@@ -217,7 +188,7 @@ TEST_CASE("a FIFO staged with a file is written when the set commits, and the fi
     const pid_t reader = start_reader(fifo, dir.file("received"));
     REQUIRE(reader > 0);
     {
-        const io::DeferredSignals held;
+        const io::HeldInterruptions held;  // a set of files: committed together
         std::vector<io::StagedFile> files;
         files.emplace_back(dir.file("trace.json"), "trace", "--trace");
         files.emplace_back(fifo, "states", "--states");
@@ -226,25 +197,6 @@ TEST_CASE("a FIFO staged with a file is written when the set commits, and the fi
     CHECK(wait_for(reader) == 0);
     CHECK(read_all(dir.file("received")) == "states");
     CHECK(read_all(dir.file("trace.json")) == "trace");
-    CHECK(fs::is_fifo(fifo));
-}
-
-TEST_CASE("a FIFO whose reader goes away gives an error, not a SIGPIPE, and stays a FIFO") {
-    TempDir dir;
-    const fs::path fifo = dir.file("early.fifo");
-    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-    const pid_t child = ::fork();
-    REQUIRE(child >= 0);
-    if (child == 0) {
-        const int fd = ::open(fifo.c_str(), O_RDONLY);  // opens, reads a little, leaves
-        char buffer[16];
-        const ssize_t n = ::read(fd, buffer, sizeof buffer);
-        ::_exit(n > 0 ? 0 : 1);
-    }
-    const std::string text(1 << 20, 'x');  // far more than the pipe holds
-    CHECK_THROWS_WITH_AS(io::write_file_atomically(fifo, text, "--trace"), doctest::Contains("Broken pipe"),
-                         io::InputError);
-    CHECK(wait_for(child) == 0);
     CHECK(fs::is_fifo(fifo));
 }
 

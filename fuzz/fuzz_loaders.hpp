@@ -4,15 +4,15 @@
 // bad input throws io::InputError; anything else (another exception, a crash, a sanitizer report, a hang,
 // a runaway allocation) is a bug. No loader writes a file or reads one.
 
-#include "coursework/class_report.hpp"
-#include "coursework/filled_worksheet.hpp"
-#include "coursework/worksheet.hpp"
-#include "io/input_error.hpp"
-#include "io/json_text.hpp"
-#include "io/scene_file.hpp"
-#include "io/trace_json.hpp"
-#include "lessons/lesson.hpp"
-#include "lessons/progress.hpp"
+#include "course/class_report.hpp"
+#include "course/filled_worksheet.hpp"
+#include "course/worksheet.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+#include "formats/scene_file.hpp"
+#include "formats/trace_json.hpp"
+#include "course/lesson.hpp"
+#include "course/progress.hpp"
 
 #include <string_view>
 

@@ -16,7 +16,7 @@ using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;  // unit, rotating body space into world space; stored (x,y,z,w), written [w,x,y,z]
 
 // A value per body of a contact: index 0 is body 0, index 1 is body 1, which is empty when body 1 is the
-// static world. DESIGN.md: "Per-body values are arrays [body0, body1], null for the world".
+// static world. docs/design.md: "Per-body values are arrays [body0, body1], null for the world".
 template <typename T>
 using PerBody = std::array<std::optional<T>, 2>;
 

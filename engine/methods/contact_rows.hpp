@@ -58,7 +58,7 @@
 #include "derivation/velocity_change.hpp"
 #include "memory/contact_memory.hpp"
 #include "record/iteration_records.hpp"
-#include "resolver/prepared_contact.hpp"
+#include "preparation/prepared_contact.hpp"
 
 #include <cmath>
 #include <span>

@@ -2,8 +2,8 @@
 // along the contact normal, each in proportion to its inverse mass, and never turn. "Unfortunately it
 // isn't very realistic": a box resting on one corner slides sideways out of the ground instead of tipping.
 
-#include "methods/position_resolution.hpp"
-#include "resolver/phases.hpp"
+#include "methods/projections.hpp"
+#include "methods/phases.hpp"
 
 namespace impulse {
 

@@ -5,14 +5,14 @@
 // (recorder.end_phase) and says how the phase ended. Each method is one file in engine/methods/ defining one
 // of the functions below; engine/methods/method_table.hpp maps each settings value to its function, its scope
 // and the settings it reads. Nothing else names a method: adding one is its file, its enumerator in
-// resolver/settings.hpp, one row of the table, and its section in docs/methods.md.
+// settings/settings.hpp, one row of the table, and its section in docs/methods.md.
 
 #include "body/rigid_body.hpp"
 #include "memory/contact_memory.hpp"
 #include "record/recorder.hpp"
-#include "resolver/prepared_contact.hpp"
-#include "resolver/settings.hpp"
-#include "world/integrate.hpp"
+#include "preparation/prepared_contact.hpp"
+#include "settings/settings.hpp"
+#include "body/integrate.hpp"
 
 #include <span>
 #include <vector>

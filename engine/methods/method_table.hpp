@@ -6,7 +6,7 @@
 // method. docs/methods.md describes each method and how to add one.
 
 #include "methods/method.hpp"
-#include "resolver/settings.hpp"
+#include "settings/settings.hpp"
 
 #include <array>
 #include <span>

@@ -3,8 +3,8 @@
 // normal, so a body that resists rotation takes more of its share as linear motion; the angular limit
 // stops a small-inertia body from spinning itself out of a deep contact.
 
-#include "methods/position_resolution.hpp"
-#include "resolver/phases.hpp"
+#include "methods/projections.hpp"
+#include "methods/phases.hpp"
 
 namespace impulse {
 

@@ -37,8 +37,8 @@
 #include "methods/contact_rows.hpp"
 #include "methods/solver_common.hpp"
 #include "methods/method.hpp"
-#include "resolver/bookkeeping.hpp"
-#include "resolver/worst_first_selector.hpp"
+#include "methods/bookkeeping.hpp"
+#include "methods/worst_first_selector.hpp"
 
 #include <algorithm>
 

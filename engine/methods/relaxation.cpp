@@ -5,7 +5,7 @@
 // brick in a wall) then share the remaining penetration instead of one of them keeping all of it; the
 // price is that an isolated contact keeps (1 - fraction)^passes of its penetration.
 
-#include "resolver/phases.hpp"
+#include "methods/phases.hpp"
 
 #include <algorithm>
 #include <vector>

@@ -4,7 +4,7 @@
 // two methods can be compared on the cost of finding the worst contact against the order's effect on
 // accuracy. As in the book, a contact whose desired delta v is at or below the velocity epsilon is skipped,
 // and each impulse updates the bookkeeping of every contact sharing a body (the linearised formulas of
-// resolver/bookkeeping.cpp). The sweeps stop early when a whole sweep found nothing to resolve.
+// methods/bookkeeping.cpp). The sweeps stop early when a whole sweep found nothing to resolve.
 //
 // Each impulse makes its own contact's normal velocity exactly its target and nothing else holds the total:
 // a later contact's impulse may undo it, and no impulse is ever taken back. On a stack the sweep therefore
@@ -15,8 +15,8 @@
 // the bookkeeping updates; the iteration limit is sweeps x contacts (settings.iterations does not apply).
 
 #include "methods/solver_common.hpp"
-#include "resolver/bookkeeping.hpp"
-#include "resolver/phases.hpp"
+#include "methods/bookkeeping.hpp"
+#include "methods/phases.hpp"
 
 #include <algorithm>
 

@@ -6,7 +6,7 @@
 
 #include "methods/contact_rows.hpp"
 #include "methods/solver_common.hpp"
-#include "world/integrate.hpp"
+#include "body/integrate.hpp"
 
 #include <algorithm>
 #include <cmath>

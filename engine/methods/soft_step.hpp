@@ -4,7 +4,7 @@
 // A frame of h = settings.duration is cut into n = settings.soft_step.substeps sub-steps of h_s = h / n, and
 // the method integrates the bodies itself, so the world step detects contacts at the current positions and
 // hands the frame to it. Per sub-step:
-//   1. integrate velocities: v += g h_s, damping as in the world step (world/integrate.hpp);
+//   1. integrate velocities: v += g h_s, damping as in the world step (body/integrate.hpp);
 //   2. warm start: apply each contact's accumulated impulse lambda (contact coordinates) again;
 //   3. solve: `sweeps` sweeps over the contacts with the soft contact's bias;
 //   4. integrate positions: x += v h_s, q turned by w h_s (settings.orientation_update);
@@ -61,7 +61,7 @@
 // holds the frame's end. Every visit counts as an iteration of the velocity phase.
 
 #include "methods/method.hpp"
-#include "resolver/settings.hpp"
+#include "settings/settings.hpp"
 
 namespace impulse {
 

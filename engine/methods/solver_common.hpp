@@ -7,8 +7,8 @@
 #include "derivation/velocity_change.hpp"
 #include "memory/contact_memory.hpp"
 #include "record/iteration_records.hpp"
-#include "resolver/prepared_contact.hpp"
-#include "resolver/settings.hpp"
+#include "preparation/prepared_contact.hpp"
+#include "settings/settings.hpp"
 
 #include <array>
 #include <span>

@@ -30,15 +30,15 @@
 // total_inertia = d; linear_move and angular_move = how far this visit moved each body's contact point along n
 // by translation and by rotation, (linear_change) . n and (angular_change x q_rel) . n, body 1's negative as
 // in the book; no angular limit; linear_change and angular_change = the moves applied. The penetration
-// updates are the book's linearised bookkeeping (resolver/bookkeeping.cpp) of every contact sharing a body,
+// updates are the book's linearised bookkeeping (methods/bookkeeping.cpp) of every contact sharing a body,
 // kept only while recording (the pushes never read it). The loop is compiled twice from one template, with and
 // without the records, on the same arithmetic.
 
 #include "methods/contact_rows.hpp"
 #include "methods/method.hpp"
-#include "methods/position_bias.hpp"
-#include "resolver/bookkeeping.hpp"
-#include "resolver/worst_first_selector.hpp"
+#include "preparation/position_bias.hpp"
+#include "methods/bookkeeping.hpp"
+#include "methods/worst_first_selector.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -8,8 +8,8 @@
 // to that projection only: the rewind's turn is the body's own motion undone, so with the `angle` policy
 // the whole turn can exceed the limit by theta-dot t.
 
-#include "methods/position_resolution.hpp"
-#include "resolver/phases.hpp"
+#include "methods/projections.hpp"
+#include "methods/phases.hpp"
 
 #include <algorithm>
 

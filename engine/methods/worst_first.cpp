@@ -1,12 +1,12 @@
 // Worst first, the book's velocity phase: "we find the contact with the largest closing velocity and resolve
 // it", then update the contact velocity and desired delta v of every contact that shares a body with it (the
-// linearised formulas of resolver/bookkeeping.cpp), and repeat until no desired delta v is above the epsilon
+// linearised formulas of methods/bookkeeping.cpp), and repeat until no desired delta v is above the epsilon
 // or the iteration limit is reached. Each impulse is the book's (steps 6 and 7 on the contact's bookkeeping
 // velocity and desired delta v, methods/solver_common.hpp), final: nothing takes it back.
 
 #include "methods/solver_common.hpp"
-#include "resolver/bookkeeping.hpp"
-#include "resolver/phases.hpp"
+#include "methods/bookkeeping.hpp"
+#include "methods/phases.hpp"
 
 namespace impulse {
 

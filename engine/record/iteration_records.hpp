@@ -5,7 +5,7 @@
 #include "derivation/desired_delta_velocity.hpp"
 #include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
-#include "methods/position_resolution.hpp"
+#include "record/position_resolution.hpp"
 
 #include <optional>
 #include <vector>

@@ -5,7 +5,7 @@
 
 #include "body/rigid_body.hpp"
 #include "record/iteration_records.hpp"
-#include "resolver/prepared_contact.hpp"
+#include "preparation/prepared_contact.hpp"
 
 #include <span>
 

@@ -1,9 +1,9 @@
 #pragma once
 // A trace: everything one run of the resolver computed, as plain structs. The JSON recorder fills it, the
-// trace file stores it (engine/io/trace_json), and the inspector, lessons and `diff` read it back.
+// trace file stores it (formats/trace_json), and the inspector, lessons and `diff` read it back.
 
 #include "record/iteration_records.hpp"
-#include "resolver/prepared_contact.hpp"
+#include "preparation/prepared_contact.hpp"
 #include "scene/scene.hpp"
 
 #include <climits>

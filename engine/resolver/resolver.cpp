@@ -1,7 +1,7 @@
 #include "resolver/resolver.hpp"
 
 #include "methods/method_table.hpp"
-#include "resolver/prepared_contact.hpp"
+#include "preparation/prepared_contact.hpp"
 
 namespace impulse {
 

@@ -7,7 +7,7 @@
 #include "memory/contact_memory.hpp"
 #include "methods/method.hpp"
 #include "record/recorder.hpp"
-#include "resolver/settings.hpp"
+#include "settings/settings.hpp"
 
 #include <span>
 #include <vector>

@@ -7,7 +7,7 @@
 #include "derivation/impulse.hpp"
 #include "methods/method_table.hpp"
 #include "record/iteration_records.hpp"
-#include "resolver/settings.hpp"
+#include "settings/settings.hpp"
 
 #include <array>
 #include <optional>

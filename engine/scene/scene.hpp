@@ -5,7 +5,7 @@
 
 #include "body/rigid_body.hpp"
 #include "contact/contact.hpp"
-#include "resolver/settings.hpp"
+#include "settings/settings.hpp"
 #include "shapes/shape.hpp"
 
 #include <map>

@@ -3,7 +3,7 @@
 #include "collision/broad_phase.hpp"
 #include "collision/collision.hpp"
 #include "methods/method_table.hpp"
-#include "world/integrate.hpp"
+#include "body/integrate.hpp"
 
 #include <algorithm>
 #include <chrono>

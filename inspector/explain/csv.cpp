@@ -1,7 +1,7 @@
 #include "explain/csv.hpp"
 
-#include "io/input_error.hpp"
-#include "io/json_text.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
 
 namespace impulse::explain {
 

@@ -2,8 +2,8 @@
 
 #include "gui/display.hpp"
 #include "gui/panels.hpp"
-#include "io/atomic_file.hpp"
-#include "io/input_error.hpp"
+#include "formats/atomic_file.hpp"
+#include "formats/input_error.hpp"
 
 #include <imgui.h>
 

@@ -3,8 +3,8 @@
 // screenshot or a frame-time benchmark. Scripts run one action per frame, so in a window they can be
 // watched; a screenshot is taken after the panels have settled.
 
-#include "lessons/lesson.hpp"
-#include "lessons/progress.hpp"
+#include "course/lesson.hpp"
+#include "course/progress.hpp"
 #include "model/script.hpp"
 #include "model/session.hpp"
 

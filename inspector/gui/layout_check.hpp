@@ -7,7 +7,7 @@
 // course takes seconds.
 
 #include "gui/ui_state.hpp"
-#include "lessons/lesson.hpp"
+#include "course/lesson.hpp"
 
 #include <string>
 #include <vector>

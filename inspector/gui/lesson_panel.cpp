@@ -7,7 +7,7 @@
 
 #include "gui/panels.hpp"
 #include "gui/text_wrap.hpp"
-#include "io/input_error.hpp"
+#include "formats/input_error.hpp"
 
 #include <SDL.h>
 #include <imgui.h>

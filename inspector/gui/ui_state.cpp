@@ -1,6 +1,6 @@
 #include "gui/ui_state.hpp"
 
-#include "io/input_error.hpp"
+#include "formats/input_error.hpp"
 
 #include <imgui.h>
 

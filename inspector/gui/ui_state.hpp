@@ -3,9 +3,10 @@
 // panels' sizes, the open lesson, and the values rebuilt from the trace whenever the cursor or the trace
 // changes (never every frame: a fully recorded frame of the 1000-box grid has 4000 contacts).
 
-#include "lessons/lesson.hpp"
-#include "lessons/lesson_run.hpp"
-#include "lessons/mask.hpp"
+#include "course/lesson.hpp"
+#include "course/lesson_run.hpp"
+#include "course/mask.hpp"
+#include "course/progress.hpp"
 #include "model/derivation_view.hpp"
 #include "model/replay.hpp"
 #include "model/script.hpp"

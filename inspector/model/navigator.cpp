@@ -1,8 +1,8 @@
 #include "model/navigator.hpp"
 
 #include "explain/format.hpp"
-#include "io/input_error.hpp"
-#include "io/suggest.hpp"
+#include "formats/input_error.hpp"
+#include "formats/suggest.hpp"
 #include "methods/method_table.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "model/runs.hpp"
 
-#include "io/input_error.hpp"
+#include "formats/input_error.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "world/world.hpp"

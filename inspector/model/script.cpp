@@ -1,9 +1,9 @@
 #include "model/script.hpp"
 
-#include "io/atomic_file.hpp"
-#include "io/input_error.hpp"
-#include "io/json_text.hpp"
-#include "io/trace_json.hpp"
+#include "formats/atomic_file.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+#include "formats/trace_json.hpp"
 #include "model/derivation_view.hpp"
 
 #include <charconv>

@@ -1,11 +1,11 @@
 #include "model/session.hpp"
 
-#include "cli/input_files.hpp"
-#include "io/input_error.hpp"
-#include "io/json_text.hpp"
-#include "io/scene_file.hpp"
-#include "io/settings_json.hpp"
-#include "io/trace_json.hpp"
+#include "model/input_files.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+#include "formats/scene_file.hpp"
+#include "formats/settings_json.hpp"
+#include "formats/trace_json.hpp"
 #include "model/runs.hpp"
 
 #include <algorithm>

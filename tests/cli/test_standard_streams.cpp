@@ -1,7 +1,7 @@
 // "-" as a file argument: standard input for a file read, standard output for one written. When standard output
 // carries a file nothing else goes there, and at most one argument of a command is "-" in each direction.
 
-#include "io/json_text.hpp"
+#include "formats/json_text.hpp"
 #include "support/run_cli.hpp"
 #include "support/standard_input.hpp"
 #include "support/temp_dir.hpp"

@@ -3,8 +3,10 @@
 
 #include "derivation/basis.hpp"
 #include "support/approx.hpp"
+#if IMPULSE_HAVE_RAPIDCHECK  // property tests need rapidcheck (not in the engine-only build)
 #include "support/property.hpp"
 #include "support/random_contacts.hpp"
+#endif
 
 #include <vector>
 
@@ -61,6 +63,7 @@ TEST_CASE("the basis is orthonormal and right-handed on the axes and every 45-de
     }
 }
 
+#if IMPULSE_HAVE_RAPIDCHECK
 TEST_CASE("the basis is orthonormal and right-handed for random normals") {
     check_property("basis orthonormal", [] {
         const Vec3 n = any_unit_vector();
@@ -71,3 +74,4 @@ TEST_CASE("the basis is orthonormal and right-handed for random normals") {
         RC_ASSERT((Vec3(c.col(0)) - n).norm() == 0.0);
     });
 }
+#endif

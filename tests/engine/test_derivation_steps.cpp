@@ -4,7 +4,7 @@
 #include "derivation/impulse.hpp"
 #include "derivation/position_change.hpp"
 #include "derivation/velocity_change.hpp"
-#include "methods/position_resolution.hpp"
+#include "methods/projections.hpp"
 #include "support/approx.hpp"
 #include "support/bodies.hpp"
 

@@ -1,6 +1,6 @@
 // Resolving interpenetration four ways, and the angular-limit policies.
 
-#include "methods/position_resolution.hpp"
+#include "methods/projections.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "support/approx.hpp"

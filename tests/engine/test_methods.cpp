@@ -2,9 +2,9 @@
 // accumulated, clamped and warm-started impulses, Baumgarte's bias and the split impulse. Checked against
 // answers derived by hand: a bounce, the resting impulses of a stack, the clamps, and energy.
 
-#include "io/json_text.hpp"
-#include "io/settings_json.hpp"
-#include "io/trace_json.hpp"
+#include "formats/json_text.hpp"
+#include "formats/settings_json.hpp"
+#include "formats/trace_json.hpp"
 #include "methods/method_table.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"

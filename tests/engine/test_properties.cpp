@@ -4,7 +4,7 @@
 
 #include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
-#include "methods/position_resolution.hpp"
+#include "methods/projections.hpp"
 #include "support/property.hpp"
 #include "support/random_contacts.hpp"
 

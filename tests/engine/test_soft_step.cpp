@@ -2,9 +2,9 @@
 // sub-steps, a resting box, warm starting, and its recording (bit-identical to an unrecorded run, a trace that
 // round-trips and passes its schema).
 
-#include "io/json_text.hpp"
-#include "io/settings_json.hpp"
-#include "io/trace_json.hpp"
+#include "formats/json_text.hpp"
+#include "formats/settings_json.hpp"
+#include "formats/trace_json.hpp"
 #include "methods/soft_step.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"

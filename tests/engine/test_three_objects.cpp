@@ -2,7 +2,7 @@
 // closing velocity and restitution give the same separating velocity at the contact, split differently
 // between linear and angular motion.
 
-#include "io/scene_file.hpp"
+#include "formats/scene_file.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "support/approx.hpp"

@@ -1,10 +1,10 @@
 // The world step against analytic answers: free fall, bounces, resting contact, momentum, robustness and
 // determinism.
 
-#include "io/json_text.hpp"
-#include "io/scene_file.hpp"
-#include "io/settings_json.hpp"
-#include "io/trace_json.hpp"
+#include "formats/json_text.hpp"
+#include "formats/scene_file.hpp"
+#include "formats/settings_json.hpp"
+#include "formats/trace_json.hpp"
 #include "record/trace_recorder.hpp"
 #include "support/approx.hpp"
 #include "support/shipped.hpp"

@@ -2,11 +2,11 @@
 // owns, so warm starting carries from frame to frame without the caller's help; reset and copies start over
 // or go on bit for bit.
 
-#include "io/settings_json.hpp"
+#include "formats/settings_json.hpp"
 #include "methods/method_table.hpp"
 #include "record/trace_recorder.hpp"
 #include "support/shipped.hpp"
-#include "world/integrate.hpp"
+#include "body/integrate.hpp"
 #include "world/world.hpp"
 
 #include <doctest/doctest.h>

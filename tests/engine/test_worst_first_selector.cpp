@@ -1,9 +1,9 @@
 // The scalable worst-first search against the book's full scan: the heap alone against a brute-force
 // maximum, the body index against a loop, and whole runs compared pick by pick.
 
-#include "io/settings_json.hpp"
+#include "formats/settings_json.hpp"
 #include "record/trace_recorder.hpp"
-#include "resolver/worst_first_selector.hpp"
+#include "methods/worst_first_selector.hpp"
 #include "support/shipped.hpp"
 #include "world/world.hpp"
 

@@ -2,10 +2,10 @@
 // These tests load Mesa through EGL, so they live in their own program (LeakSanitizer cannot see into
 // Mesa after it is unloaded; CMake turns leak checking off for this program only).
 
-#include "io/json_text.hpp"
-#include "io/scene_file.hpp"
-#include "io/trace_json.hpp"
-#include "lessons/lesson.hpp"
+#include "formats/json_text.hpp"
+#include "formats/scene_file.hpp"
+#include "formats/trace_json.hpp"
+#include "course/lesson.hpp"
 #include "model/runs.hpp"
 #include "support/png_image.hpp"
 #include "support/run_cli.hpp"

@@ -3,8 +3,8 @@
 // panel inside the window, read from ImGui's own item rectangles.
 
 #include "gui/layout_check.hpp"
-#include "lessons/lesson.hpp"
-#include "lessons/lesson_run.hpp"
+#include "course/lesson.hpp"
+#include "course/lesson_run.hpp"
 
 #include <doctest/doctest.h>
 

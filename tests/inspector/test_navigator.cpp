@@ -3,7 +3,7 @@
 // names say, and a place named by a person (--goto) or remembered across a re-run comes back to the same
 // table.
 
-#include "io/input_error.hpp"
+#include "formats/input_error.hpp"
 #include "model/navigator.hpp"
 #include "model/session.hpp"
 

@@ -1,9 +1,9 @@
 // The runs the inspector and the coursework make from a scene stop where `run` stops: at the first frame that
 // leaves a body non-finite, with the trace ending before it.
 
-#include "io/scene_file.hpp"
-#include "io/trace_json.hpp"
-#include "io/input_error.hpp"
+#include "formats/scene_file.hpp"
+#include "formats/trace_json.hpp"
+#include "formats/input_error.hpp"
 #include "model/runs.hpp"
 #include "model/script.hpp"
 #include "model/session.hpp"

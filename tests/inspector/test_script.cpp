@@ -2,10 +2,10 @@
 // with a changed setting while keeping the cursor's place, and --script lines parsed, performed and exported
 // exactly as the window's keys and buttons do them.
 
-#include "cli/input_files.hpp"
-#include "io/input_error.hpp"
-#include "io/json_text.hpp"
-#include "io/trace_json.hpp"
+#include "model/input_files.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+#include "formats/trace_json.hpp"
 #include "model/derivation_view.hpp"
 #include "model/navigator.hpp"
 #include "model/script.hpp"

@@ -6,7 +6,7 @@
 #include "explain/annotations.hpp"
 #include "explain/format.hpp"
 #include "model/navigator.hpp"
-#include "resolver/settings.hpp"
+#include "settings/settings.hpp"
 #include "support/opened.hpp"
 
 #include <doctest/doctest.h>

@@ -4,8 +4,8 @@
 #include "body/rigid_body.hpp"
 #include "contact/contact.hpp"
 #include "shapes/shape.hpp"
-#include "resolver/prepared_contact.hpp"
-#include "resolver/settings.hpp"
+#include "preparation/prepared_contact.hpp"
+#include "settings/settings.hpp"
 
 #include <vector>
 

@@ -1,7 +1,7 @@
 #pragma once
 // The scenes and cases shipped in scenes/, as the tests read them.
 
-#include "io/scene_file.hpp"
+#include "formats/scene_file.hpp"
 
 #include <fstream>
 #include <sstream>

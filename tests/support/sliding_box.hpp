@@ -3,7 +3,7 @@
 // mu = 0.5 (restitution 0), turned 30 degrees about the vertical and sent at 4 m/s along world x, and the same
 // scene on a slope or turned as a whole.
 
-#include "io/settings_json.hpp"
+#include "formats/settings_json.hpp"
 #include "math/rotation.hpp"
 #include "scene/scene.hpp"
 #include "world/world.hpp"

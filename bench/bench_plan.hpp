@@ -1,0 +1,66 @@
+#pragma once
+// What `impulse-lab bench` runs: its scenes with the accuracy metric and target each is judged by, the
+// methods (preset names), and how one iteration count N maps onto each method's own knob.
+
+#include "settings/settings.hpp"
+
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impulse::bench {
+
+// The quantity a scene is judged by: its "error" in the results, smaller is better.
+enum class Metric {
+    top_drift,          // m: the farthest the body that started highest moved from its start
+    any_drift,          // m: the farthest any body moved from its start (a grid has no top)
+    end_penetration,    // m: the deepest penetration left after the last frame's resolution
+    jitter,             // m/s: RMS linear speed of every body over the last second
+    energy_gain,        // share of the impact's kinetic energy gained after the first contact
+    restitution_error,  // |v_after + c v_before| / |c v_before| at the first bounce
+    momentum_error,     // |p_end - p_start| / sum of m |v| at the start
+};
+
+std::string_view metric_name(Metric metric);  // "top_drift", ...
+std::string_view metric_unit(Metric metric);  // "m", "m/s" or "" (a ratio)
+std::string_view metric_meaning(Metric metric);
+
+struct BenchScene {
+    std::string name;  // the file scenes/<name>.json
+    Metric metric;
+    double target;  // a configuration meets the target when its error is at most this
+    // Where the scene fails (the stability verdict): drift metrics, the drift that counts as a collapse
+    // (half the top body's height); end_penetration and jitter, the value beyond which it failed; energy_gain,
+    // the gain beyond which the box bounced higher than physics allows. Unused by the isolated impacts.
+    double failure_threshold;
+    int frames;   // frames simulated (the scene's duration is frames x 1/60 s)
+    bool stress;  // a column of the stability matrix
+};
+
+// The bench's scenes in the order they are run and drawn.
+std::span<const BenchScene> bench_scenes();
+const BenchScene* find_bench_scene(std::string_view name);
+
+// Methods are preset names; the default set is every method but the chapter's text.
+std::vector<std::string> default_methods();
+std::vector<int> default_iterations();  // 1, 2, 4, 8, 16, 32
+
+// The one place an iteration count N becomes settings:
+//   worst-first presets (book, chapter)   iterations_per_contact = N  (each phase's limit is N x contacts)
+//   sweep, pgs, pgs_split                 sweeps = N
+//   soft_step                             soft_step.substeps = N, with sweeps = 1 (one relax sweep each)
+// Chosen by the settings' velocity method, so a preset keeps its mapping whatever it is called.
+void set_iteration_count(ResolverSettings& settings, int n);
+// The name of the setting N was written to, for the results: "iterations_per_contact", "sweeps" or
+// "soft_step.substeps".
+std::string_view iteration_setting(const ResolverSettings& settings);
+
+// "1,2,4" -> {1, 2, 4}: positive integers, no repeats. Throws io::InputError("--iterations", ...).
+std::vector<int> parse_iterations(std::string_view text);
+// "a,b" -> names, each checked against `known`; throws io::InputError(flag, ...) naming the unknown one.
+std::vector<std::string> parse_names(std::string_view text, std::span<const std::string> known, std::string_view flag,
+                                     std::string_view what);
+
+}  // namespace impulse::bench

@@ -1,0 +1,152 @@
+// Time per frame of whole scenes, split by stage, and the drift of the body that started highest.
+//
+//   impulse-bench-world SCENE... [--frames N] [--repeats R] [--set NAME=VALUE]... [--csv FILE]
+//
+// A scene may be - (standard input). The CSV (RFC 4180) is written atomically when every scene has run; --csv -
+// puts it on standard output and the table on standard error.
+//
+// Each repeat simulates the scene from its start for N frames (default: the scene's own frames); the
+// reported time per frame is the median over repeats of each repeat's mean. Drift comes from the first repeat
+// (every repeat is identical: runs are deterministic).
+
+#include "model/input_files.hpp"
+#include "explain/csv.hpp"
+#include "formats/atomic_file.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+#include "formats/scene_file.hpp"
+#include "formats/settings_json.hpp"
+#include "world/world.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+using namespace impulse;
+
+namespace {
+
+struct Figures {
+    double frame_ms = 0.0;
+    StageTimes stage_ms;
+    double contacts = 0.0;  // mean per frame
+    double pairs = 0.0;     // mean per frame
+    double drift_end_mm = 0.0;
+    double drift_most_mm = 0.0;
+    int limited_frames = 0;  // frames where a phase hit its iteration limit
+};
+
+Figures simulate(const Scene& scene, int frames) {
+    Figures f;
+    World world(scene);
+    const std::size_t top = highest_body(scene);
+    for (int frame = 0; frame < frames; ++frame) {
+        const StepReport r = world.step();
+        f.stage_ms.integrate += r.times.integrate * 1e3 / frames;
+        f.stage_ms.broad_phase += r.times.broad_phase * 1e3 / frames;
+        f.stage_ms.narrow_phase += r.times.narrow_phase * 1e3 / frames;
+        f.stage_ms.resolve += r.times.resolve * 1e3 / frames;
+        f.contacts += static_cast<double>(r.contacts) / frames;
+        f.pairs += static_cast<double>(r.pairs_tested) / frames;
+        f.limited_frames += r.resolution.position.stop == StopReason::iteration_limit ||
+                            r.resolution.velocity.stop == StopReason::iteration_limit;
+        const double drift = (world.bodies()[top].position - scene.bodies[top].position).norm() * 1e3;
+        f.drift_most_mm = std::max(f.drift_most_mm, drift);
+        f.drift_end_mm = drift;
+    }
+    f.frame_ms = f.stage_ms.integrate + f.stage_ms.broad_phase + f.stage_ms.narrow_phase + f.stage_ms.resolve;
+    return f;
+}
+
+// A number as a CSV cell: as many digits as a stream prints by default.
+std::string cell(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Time per frame of whole scenes, and the drift of the body that started highest",
+                 "impulse-bench-world"};
+    std::vector<std::string> scenes, settings;
+    std::optional<int> frames;
+    int repeats = 3;
+    std::string csv;
+    app.add_option("SCENE", scenes, "Scene files (- for standard input)")->required();
+    app.add_option("--frames", frames, "Frames per run (default: each scene's settings.frames)")
+        ->check(CLI::Range(1, 1000000));
+    app.add_option("--repeats", repeats, "Runs per scene; the median time is reported")->check(CLI::Range(1, 100));
+    app.add_option("--set", settings, "Change one setting in every scene, e.g. --set iterations_per_contact=100");
+    app.add_option("--csv", csv, "Also write the figures as CSV");
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "impulse-bench-world: " << e.what() << " (see impulse-bench-world --help)\n";
+        return 2;
+    }
+    // The CSV is checked before the runs and written whole after them; on standard output, the table moves to stderr.
+    const bool csv_to_stdout = csv == "-";
+    try {
+        if (!csv.empty() && !csv_to_stdout) io::check_writable(csv, "--csv");
+    } catch (const io::InputError& e) {
+        std::cerr << "impulse-bench-world: " << e.what() << '\n';
+        return 2;
+    }
+    std::FILE* table = csv_to_stdout ? stderr : stdout;
+
+    std::string rows = explain::csv_row({"scene", "bodies", "frames", "contacts_per_frame", "pairs_per_frame",
+                                         "ms_per_frame", "integrate_ms", "broad_phase_ms", "pair_tests_ms",
+                                         "resolve_ms", "limited_frames", "top_drift_end_mm", "top_drift_most_mm"});
+    std::fprintf(table, "%-22s %6s %6s %9s %9s %10s %9s %9s %9s %9s %8s %11s %11s\n", "scene", "bodies", "frames",
+                 "contacts", "pairs", "ms/frame", "integr.", "broad", "pairs ms", "resolve", "limited", "drift end",
+                 "drift most");
+    for (const std::string& file : scenes) {
+        Scene scene;
+        try {
+            scene = io::read_scene_text(cli::read_input_file(file));
+            for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+        } catch (const cli::FileError& e) {
+            std::cerr << "impulse-bench-world: " << e.file << ": " << e.problem << '\n';
+            return 2;
+        } catch (const io::InputError& e) {
+            std::cerr << "impulse-bench-world: " << cli::input_name(file) << ": " << e.what() << '\n';
+            return 2;
+        }
+        const int n = frames.value_or(scene.world.frames);
+        std::vector<Figures> runs;
+        for (int r = 0; r < repeats; ++r) runs.push_back(simulate(scene, n));
+        std::vector<Figures> sorted = runs;
+        std::sort(sorted.begin(), sorted.end(),
+                  [](const Figures& a, const Figures& b) { return a.frame_ms < b.frame_ms; });
+        const Figures& median = sorted[sorted.size() / 2];
+        const Figures& first = runs.front();
+        const std::string name = cli::input_name(file.substr(file.find_last_of('/') + 1));
+        std::fprintf(table, "%-22s %6zu %6d %9.1f %9.1f %10.3f %9.3f %9.3f %9.3f %9.3f %8d %11.2f %11.2f\n",
+                     name.c_str(), scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms,
+                     median.stage_ms.integrate, median.stage_ms.broad_phase, median.stage_ms.narrow_phase,
+                     median.stage_ms.resolve, first.limited_frames, first.drift_end_mm, first.drift_most_mm);
+        rows += explain::csv_row({name, std::to_string(scene.bodies.size()), std::to_string(n), cell(first.contacts),
+                                  cell(first.pairs), cell(median.frame_ms), cell(median.stage_ms.integrate),
+                                  cell(median.stage_ms.broad_phase), cell(median.stage_ms.narrow_phase),
+                                  cell(median.stage_ms.resolve), std::to_string(first.limited_frames),
+                                  cell(first.drift_end_mm), cell(first.drift_most_mm)});
+    }
+    if (csv_to_stdout) {
+        std::cout << rows << std::flush;
+    } else if (!csv.empty()) {
+        try {
+            io::write_file_atomically(csv, rows, "--csv");
+        } catch (const io::InputError& e) {
+            std::cerr << "impulse-bench-world: " << e.what() << '\n';
+            return 2;
+        }
+    }
+    return 0;
+}

@@ -1,0 +1,98 @@
+#include "course/filled_worksheet.hpp"
+
+#include "explain/csv.hpp"
+#include "course/worksheet.hpp"
+#include "formats/input_error.hpp"
+#include "course/course_schemas.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+
+namespace impulse::coursework {
+
+namespace {
+
+std::string trimmed(std::string_view text) {
+    const auto space = [](char c) { return c == ' ' || c == '\t'; };
+    while (!text.empty() && space(text.front())) text.remove_prefix(1);
+    while (!text.empty() && space(text.back())) text.remove_suffix(1);
+    return std::string(text);
+}
+
+// A CSV value as JSON: empty is blank (null), then a number, true/false, else the text itself.
+io::json csv_value(std::string_view field) {
+    const std::string text = trimmed(field);
+    if (text.empty()) return nullptr;
+    // Spreadsheets write booleans in capitals.
+    std::string lower = text;
+    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (lower == "true") return true;
+    if (lower == "false") return false;
+    std::string_view digits = text;
+    if (digits.front() == '+') digits.remove_prefix(1);
+    double value = 0;
+    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (error == std::errc() && end == digits.data() + digits.size() && std::isfinite(value)) return value;
+    return text;
+}
+
+}  // namespace
+
+bool is_worksheet(const io::json& document) {
+    return document.is_object() && document.contains("format") && document["format"] == worksheet_format_name;
+}
+
+FilledWorksheet read_worksheet_json(const io::json& document) {
+    course::validate_worksheet_document(document);
+    FilledWorksheet sheet;
+    if (document.contains("settings")) sheet.settings = document["settings"];
+    if (document.contains("reference")) sheet.scene = document["reference"]["scene"];
+    const io::json& steps = document["steps"];
+    for (std::size_t s = 0; s < steps.size(); ++s) {
+        const std::string step_path = io::json_path_index("steps", s);
+        const io::json& cells = steps[s]["cells"];
+        for (std::size_t c = 0; c < cells.size(); ++c) {
+            const std::string where = io::json_path_index(io::json_path_child(step_path, "cells"), c);
+            const std::string path = cells[c]["path"].get<std::string>();
+            sheet.cells.push_back(
+                {path, parse_json_path(path, io::json_path_child(where, "path")), cells[c]["value"], where});
+        }
+    }
+    return sheet;
+}
+
+FilledWorksheet read_worksheet_csv(std::string_view text) {
+    const std::vector<explain::CsvRow> rows = explain::parse_csv(text);
+    if (rows.empty()) throw io::InputError("line 1", "no header: expected " + std::string(worksheet_csv_header));
+    const std::vector<std::string>& header = rows.front().fields;
+    const auto column = [&header](const char* name) {
+        const auto found =
+            std::find_if(header.begin(), header.end(), [name](const std::string& h) { return trimmed(h) == name; });
+        if (found == header.end())
+            throw io::InputError("line 1", std::string("the header has no column \"") + name + "\" (expected " +
+                                               std::string(worksheet_csv_header) + ")");
+        return static_cast<std::size_t>(found - header.begin());
+    };
+    const std::size_t kind = column("kind"), path = column("path"), value = column("value");
+    // A row may stop early when its last fields are empty (some programs write it so): a missing value is blank.
+    const std::size_t needed = std::max(kind, path) + 1;
+
+    FilledWorksheet sheet;
+    for (auto row = rows.begin() + 1; row != rows.end(); ++row) {
+        const std::string where = "line " + std::to_string(row->line);
+        if (row->fields.size() < needed)
+            throw io::InputError(where, "has " + std::to_string(row->fields.size()) + " columns, the header " +
+                                            std::to_string(header.size()));
+        const std::string k = trimmed(row->fields[kind]);
+        if (k == "input") continue;
+        if (k != "cell") throw io::InputError(where, "kind must be \"input\" or \"cell\", got \"" + k + "\"");
+        const std::string p = trimmed(row->fields[path]);
+        const std::string filled = value < row->fields.size() ? row->fields[value] : "";
+        sheet.cells.push_back({p, parse_json_path(p, where + ": path"), csv_value(filled), where});
+    }
+    return sheet;
+}
+
+}  // namespace impulse::coursework

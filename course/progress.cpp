@@ -1,0 +1,155 @@
+#include "course/progress.hpp"
+
+#include "model/input_files.hpp"
+#include "formats/atomic_file.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdint>
+#include <limits>
+#include <cstdlib>
+#include <ctime>
+
+namespace impulse::lessons {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+constexpr std::string_view format_name = "impulse-lab-progress";
+
+// A whole number from 0 to INT_MAX at `path`; anything else (a fraction, a huge or negative number, text)
+// is an error, never a cast.
+int read_count(const json& object, const std::string& path, const char* key) {
+    const std::string where = io::json_path_child(path, key);
+    if (!object.contains(key)) throw io::InputError(where, "missing");
+    const json& value = object[key];
+    if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
+        value.get<std::int64_t>() > std::numeric_limits<int>::max())
+        throw io::InputError(where, "must be a whole number from 0 to " +
+                                        std::to_string(std::numeric_limits<int>::max()) + ", got " + value.dump());
+    return static_cast<int>(value.get<std::int64_t>());
+}
+
+const json& member(const json& object, const std::string& path, const char* key, json::value_t type,
+                   const char* type_name) {
+    const std::string where = io::json_path_child(path, key);
+    if (!object.contains(key)) throw io::InputError(where, "missing");
+    if (object[key].type() != type) throw io::InputError(where, std::string("must be ") + type_name);
+    return object[key];
+}
+
+}  // namespace
+
+Progress read_progress_text(std::string_view text) {
+    const json document = io::parse_json_text(text);
+    if (!document.is_object() || document.value("format", json()) != format_name ||
+        document.value("version", json()) != 1)
+        throw io::InputError("", "not an impulse-lab-progress file of version 1");
+    Progress progress;
+    for (const auto& [name, lesson] : member(document, "", "lessons", json::value_t::object, "an object").items()) {
+        const std::string path = io::json_path_child("lessons", name);
+        if (!lesson.is_object()) throw io::InputError(path, "must be an object");
+        LessonProgress p;
+        p.last_step = read_count(lesson, path, "last_step");
+        const std::string answers_path = io::json_path_child(path, "answers");
+        for (const auto& [id, a] : member(lesson, path, "answers", json::value_t::object, "an object").items()) {
+            const std::string where = io::json_path_child(answers_path, id);
+            if (!a.is_object()) throw io::InputError(where, "must be an object");
+            p.answers[id] = {member(a, where, "answer", json::value_t::string, "text").get<std::string>(),
+                             member(a, where, "correct", json::value_t::boolean, "true or false").get<bool>(),
+                             read_count(a, where, "tries"),
+                             // Written since skipping was added; older files have no skipped question.
+                             a.contains("skipped") &&
+                                 member(a, where, "skipped", json::value_t::boolean, "true or false").get<bool>()};
+        }
+        progress.lessons[name] = std::move(p);
+    }
+    return progress;
+}
+
+namespace {
+
+std::string time_stamp() {
+    const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+    std::tm utc{};
+    gmtime_r(&now, &utc);
+    char text[32];
+    std::strftime(text, sizeof text, "%Y%m%d-%H%M%S", &utc);
+    return text;
+}
+
+}  // namespace
+
+Tally tally(const LessonProgress& lesson) {
+    Tally t;
+    for (const auto& [id, a] : lesson.answers) {
+        if (a.skipped)
+            ++t.skipped;
+        else if (a.correct)
+            ++(a.tries <= 1 ? t.first_try : t.after_retries);
+        else if (a.tries > 0)
+            ++t.open;
+    }
+    return t;
+}
+
+std::string tally_text(const Tally& t) {
+    std::string text;
+    const auto part = [&text](int n, const std::string& what) {
+        if (n > 0) text += (text.empty() ? "" : ", ") + std::to_string(n) + " " + what;
+    };
+    part(t.first_try, "right at the first try");
+    part(t.after_retries, "right after retries");
+    part(t.skipped, "skipped");
+    part(t.open, "tried, not yet right");
+    return text.empty() ? "none answered yet" : text;
+}
+
+std::optional<std::filesystem::path> progress_file() {
+    if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config)
+        return std::filesystem::path(config) / "impulse-lab" / "progress.json";
+    if (const char* home = std::getenv("HOME"); home && *home)
+        return std::filesystem::path(home) / ".config" / "impulse-lab" / "progress.json";
+    return std::nullopt;
+}
+
+LoadedProgress load_progress(const std::filesystem::path& file) {
+    std::error_code error;
+    if (!std::filesystem::exists(file, error)) return {};
+    std::string why;
+    try {
+        return {read_progress_text(cli::read_input_file(file.string(), cli::max_text_input_bytes)), {}};
+    } catch (const cli::FileError& e) {
+        why = e.problem;  // unreadable, or larger than any progress file we write
+    } catch (const std::exception& e) {
+        why = e.what();
+    }
+    // Kept aside, never deleted: the student (or a teacher) may want to look at it.
+    const std::filesystem::path aside = file.string() + ".corrupt-" + time_stamp();
+    std::filesystem::rename(file, aside, error);
+    return {{},
+            "progress file " + file.string() + " is unreadable (" + why + "); " +
+                (error ? "it is left where it is and progress starts afresh"
+                       : "kept as " + aside.filename().string() + ", progress starts afresh")};
+}
+
+void save_progress(const std::filesystem::path& file, const Progress& progress) {
+    json lessons = json::object();
+    for (const auto& [name, p] : progress.lessons) {
+        json answers = json::object();
+        for (const auto& [id, a] : p.answers)
+            answers[id] = {{"answer", a.answer}, {"correct", a.correct}, {"tries", a.tries}, {"skipped", a.skipped}};
+        lessons[name] = {{"last_step", p.last_step}, {"answers", answers}};
+    }
+    const json document = {{"format", format_name}, {"version", 1}, {"lessons", lessons}};
+    std::error_code error;
+    std::filesystem::create_directories(file.parent_path(), error);
+    if (error)
+        throw io::InputError("progress", "cannot create " + file.parent_path().string() + ": " + error.message());
+    io::write_file_atomically(file, io::format_json(document), "progress");
+}
+
+}  // namespace impulse::lessons

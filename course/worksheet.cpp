@@ -1,0 +1,352 @@
+#include "course/worksheet.hpp"
+
+#include "explain/csv.hpp"
+#include "course/diff.hpp"
+#include "course/step_keys.hpp"
+#include "course/trace_items.hpp"
+#include "formats/input_error.hpp"
+#include "formats/scene_file.hpp"
+#include "course/course_schemas.hpp"
+#include "formats/settings_json.hpp"
+#include "formats/trace_json.hpp"
+#include "model/runs.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <set>
+
+namespace impulse::coursework {
+
+namespace {
+
+using inspect::Cursor;
+using inspect::Stage;
+
+// The step names of the cursor's item, in the order its tables show them.
+std::vector<std::string> step_order(const Trace& trace, const Cursor& c) {
+    std::vector<std::string> names;
+    for (const explain::StepTable& t : inspect::step_tables(trace, c)) names.push_back(t.step);
+    return names;
+}
+
+std::vector<WorksheetEntry> cells_of(const ItemAt& item, const std::string& step) {
+    std::vector<WorksheetEntry> cells;
+    for (const StepKey& key : step_keys())
+        if (key.item == item.kind && key.role == Role::computed && key.step == step) expand_key(item, key, step, cells);
+    return cells;
+}
+
+std::string at_spec(const Trace& trace, const Cursor& c, const std::string& step) {
+    const FrameRecord& frame = trace.frames[static_cast<std::size_t>(c.frame)];
+    std::string spec = "frame=" + std::to_string(frame.frame) + ",phase=" + std::string(inspect::stage_name(c.stage));
+    if (c.stage == Stage::preparation)
+        spec += ",contact=" + std::to_string(inspect::contact_at(trace, c));
+    else
+        spec += ",iteration=" + std::to_string(c.item);
+    return spec + ",step=" + step;
+}
+
+io::json blanked(const io::json& value) {
+    if (!value.is_array()) return nullptr;
+    io::json out = io::json::array();
+    for (const io::json& v : value) out.push_back(blanked(v));
+    return out;
+}
+
+io::json entry_json(const WorksheetEntry& e, bool blank) {
+    return {{"path", e.path},         {"step", e.step},
+            {"quantity", e.quantity}, {"unit", e.unit},
+            {"formula", e.formula},   {"equation", e.equation},
+            {"meaning", e.meaning},   {"value", blank ? blanked(e.value) : e.value}};
+}
+
+// Whether a cursor's step has anything to fill in, and the names of the item's steps that have.
+std::vector<std::string> steps_with_cells(const io::json& document, const Trace& trace, const Cursor& c) {
+    const ItemAt item = item_at(document, c);
+    std::vector<std::string> names;
+    for (const std::string& name : step_order(trace, c))
+        if (!cells_of(item, name).empty()) names.push_back(name);
+    return names;
+}
+
+// Each token after `from` as a path continues: ".key" or "[i]" (no dot at the start).
+std::string path_text(const std::vector<PathToken>& path, std::size_t from) {
+    std::string text;
+    for (std::size_t i = from; i < path.size(); ++i) {
+        if (const auto* key = std::get_if<std::string>(&path[i]))
+            text += (text.empty() ? "" : ".") + *key;
+        else
+            text += "[" + std::to_string(std::get<std::size_t>(path[i])) + "]";
+    }
+    return text;
+}
+
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+    return text.empty() ? "none" : text;
+}
+
+}  // namespace
+
+double rounded_for_hand_work(double value) {
+    const Tolerance grading;  // diff's defaults
+    const double allowed = (grading.atol + grading.rtol * std::abs(value)) * hand_rounding_share;
+    if (!std::isfinite(value)) return value;
+    if (std::abs(value) <= allowed) return 0.0;  // rounding noise around 0 (and −0) is 0
+    for (int digits = 1; digits < 17; ++digits) {
+        char text[40];
+        std::snprintf(text, sizeof text, "%.*g", digits, value);
+        const double shorter = std::strtod(text, nullptr);
+        if (std::abs(shorter - value) <= allowed) return shorter;
+    }
+    return value;
+}
+
+io::json rounded_for_hand_work(const io::json& value) {
+    if (value.is_number_float()) return rounded_for_hand_work(value.get<double>());
+    if (!value.is_array()) return value;
+    io::json out = io::json::array();
+    for (const io::json& v : value) out.push_back(rounded_for_hand_work(v));
+    return out;
+}
+
+Wording word_path(const Trace& trace, const io::json& document, const std::vector<PathToken>& path) {
+    const auto key_is = [&path](std::size_t i, std::string_view key) {
+        const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
+        return k && *k == key;
+    };
+    const auto index = [&path](std::size_t i) -> std::optional<std::size_t> {
+        if (i >= path.size() || !std::holds_alternative<std::size_t>(path[i])) return std::nullopt;
+        return std::get<std::size_t>(path[i]);
+    };
+    Wording w{"", path_text(path, 0), describe_path(document, path).unit};
+    if (key_is(0, "settings") || key_is(0, "scene") || key_is(0, "recording") || key_is(0, "conventions")) {
+        w.place = std::get<std::string>(path[0]);
+        w.quantity = path_text(path, 1);
+        return w;
+    }
+    const std::optional<std::size_t> f = index(1);
+    if (!key_is(0, "frames") || !f || *f >= trace.frames.size()) return w;
+    w.place = "frame " + std::to_string(trace.frames[*f].frame);
+    w.quantity = path_text(path, 2);
+
+    // Inside an item: the step that computes (or first uses) the key, as the worksheet names it.
+    std::optional<Cursor> c;
+    std::size_t rest = 0;
+    if (key_is(2, "contacts") && index(3) && *index(3) < trace.frames[*f].contacts.size()) {
+        c = Cursor{static_cast<int>(*f), Stage::preparation, static_cast<int>(*index(3)), 0};
+        rest = 4;
+    } else if (key_is(2, "phases") && index(3) && key_is(4, "iterations") && index(5)) {
+        const io::json* phase = value_at(document, {path.begin(), path.begin() + 4});
+        const io::json* iteration = value_at(document, {path.begin(), path.begin() + 6});
+        if (phase && iteration && phase->contains("phase"))
+            c = Cursor{static_cast<int>(*f), (*phase)["phase"] == "position" ? Stage::position : Stage::velocity,
+                       static_cast<int>(*index(5)), 0};
+        rest = 6;
+    }
+    if (!c || rest >= path.size()) return w;
+    const ItemKind kind = c->stage == Stage::preparation ? ItemKind::contact
+                          : c->stage == Stage::position  ? ItemKind::position_iteration
+                                                         : ItemKind::velocity_iteration;
+    std::string key;
+    for (std::size_t i = rest; i < path.size(); ++i) {
+        if (const auto* k = std::get_if<std::string>(&path[i])) {
+            if (!key.empty()) key += '.';
+            key += *k;
+        } else if (key == "updates" || key.ends_with(".features")) {
+            key += "[]";
+        }
+    }
+    const std::vector<std::string> order = step_order(trace, *c);
+    const StepKey* step_key = find_step_key(kind, key);
+    const auto at = step_key ? std::find(order.begin(), order.end(), std::string(step_key->step)) : order.end();
+    w.quantity = path_text(path, rest);
+    if (at != order.end()) {
+        c->step = static_cast<int>(at - order.begin());
+        w.place = inspect::describe(trace, *c);
+    } else {
+        // A given of the item (the contact as detected, the iteration's choice): the item without a step.
+        w.place = inspect::describe(trace, *c);
+        const std::string first = order.empty() ? "" : " · " + order.front();
+        if (!first.empty() && w.place.ends_with(first)) w.place.resize(w.place.size() - first.size());
+    }
+    return w;
+}
+
+std::vector<Cursor> places_with_cells(const inspect::Session& session, const std::vector<Cursor>& candidates,
+                                      const io::json* given_document) {
+    const Trace& trace = session.trace();
+    const io::json made = given_document ? io::json() : io::trace_json(trace);
+    const io::json& document = given_document ? *given_document : made;
+    std::vector<Cursor> places;
+    for (const Cursor& c : candidates) {
+        const std::vector<std::string> order = step_order(trace, c);
+        if (!cells_of(item_at(document, c), order[static_cast<std::size_t>(c.step)]).empty()) places.push_back(c);
+    }
+    return places;
+}
+
+std::string scalar_text(const io::json& value) {
+    if (value.is_null()) return "";
+    if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
+    if (value.is_string()) return value.get<std::string>();
+    if (value.is_number_float()) return io::number_text(value.get<double>());
+    return value.dump();
+}
+
+Worksheet make_worksheet(const inspect::Session& session, const std::vector<Cursor>& places,
+                         const io::json* given_document) {
+    const Trace& trace = session.trace();
+    const io::json made = given_document ? io::json() : io::trace_json(trace);
+    const io::json& document = given_document ? *given_document : made;
+    Worksheet sheet;
+    sheet.source = session.path();
+    sheet.conventions = document["conventions"];
+    sheet.settings = document["settings"];
+    const bool resolved = session.kind() == inspect::SourceKind::case_file ||
+                          (session.kind() == inspect::SourceKind::trace_file && !trace.scene.contacts.empty());
+    io::json run = {{"mode", resolved ? "resolve" : "simulate"}};
+    if (!resolved) run["frames"] = trace.scene.world.frames;  // a run's header says how many frames it ran
+    sheet.reference = {{"run", run}, {"recording", document["recording"]}, {"scene", document["scene"]}};
+
+    std::vector<Cursor> seen;
+    for (const Cursor& c : places) {
+        if (std::find(seen.begin(), seen.end(), c) != seen.end()) continue;
+        seen.push_back(c);
+        const std::vector<std::string> order = step_order(trace, c);
+        const std::string& step = order[static_cast<std::size_t>(c.step)];
+        const ItemAt item = item_at(document, c);
+        WorksheetStep s{inspect::describe(trace, c), at_spec(trace, c, step), {}, cells_of(item, step)};
+        if (s.cells.empty())
+            throw io::InputError("--steps", s.at + ": the step computes nothing to fill in (steps that do here: " +
+                                                joined(steps_with_cells(document, trace, c)) + ")");
+        s.inputs = inputs_of(item, order, static_cast<std::size_t>(c.step), document, resolved);
+        sheet.steps.push_back(std::move(s));
+    }
+
+    // A value asked for anywhere on the sheet is not given away as another step's input; each input once per step.
+    std::set<std::string> asked;
+    for (const WorksheetStep& s : sheet.steps)
+        for (const WorksheetEntry& cell : s.cells) asked.insert(cell.path);
+    for (WorksheetStep& s : sheet.steps) {
+        std::set<std::string> listed;
+        std::erase_if(s.inputs,
+                      [&](const WorksheetEntry& e) { return asked.count(e.path) || !listed.insert(e.path).second; });
+        for (WorksheetEntry& e : s.inputs) e.value = rounded_for_hand_work(e.value);
+    }
+    return sheet;
+}
+
+std::vector<Cursor> default_places(const Trace& trace) {
+    std::vector<Cursor> places;
+    const std::optional<Cursor> first = inspect::first_cursor(trace);
+    if (!first) return places;
+    const io::json document = io::trace_json(trace);
+    for (std::optional<Cursor> c = first; c && c->frame == first->frame; c = inspect::next_step(trace, *c)) {
+        const std::vector<std::string> order = step_order(trace, *c);
+        if (!cells_of(item_at(document, *c), order[static_cast<std::size_t>(c->step)]).empty()) places.push_back(*c);
+    }
+    return places;
+}
+
+std::vector<Cursor> places_from_specs(const Trace& trace, const std::vector<std::string>& specs,
+                                      std::string_view where) {
+    std::vector<Cursor> places;
+    const io::json document = io::trace_json(trace);
+    for (const std::string& text : specs) {
+        const inspect::GotoSpec spec = inspect::parse_goto(text, where);
+        const Cursor c = inspect::resolve_goto(trace, spec, where);
+        const std::vector<std::string> order = step_order(trace, c);
+        const std::vector<std::string> filled = steps_with_cells(document, trace, c);
+        if (spec.step) {
+            const std::string& step = order[static_cast<std::size_t>(c.step)];
+            if (std::find(filled.begin(), filled.end(), step) == filled.end())
+                throw io::InputError(std::string(where),
+                                     "\"" + text + "\": step " + step +
+                                         " computes nothing to fill in (steps that do here: " + joined(filled) + ")");
+            places.push_back(c);
+            continue;
+        }
+        if (filled.empty())
+            throw io::InputError(std::string(where),
+                                 "\"" + text + "\": " + inspect::describe(trace, c) + " has nothing to fill in");
+        for (std::size_t s = 0; s < order.size(); ++s)
+            if (std::find(filled.begin(), filled.end(), order[s]) != filled.end())
+                places.push_back(Cursor{c.frame, c.stage, c.item, static_cast<int>(s)});
+    }
+    return places;
+}
+
+Trace rerun_reference(const io::json& document) {
+    course::validate_worksheet_document(document);
+    for (const char* key : {"settings", "reference"})
+        if (!document.contains(key))
+            throw io::InputError(key, "missing: the worksheet does not say what it was made from");
+    const io::json& reference = document["reference"];
+    Scene scene;
+    try {
+        scene = io::read_scene(reference["scene"]);
+    } catch (const io::InputError& e) {
+        throw io::InputError(e.where().empty() ? "reference.scene" : "reference.scene." + e.where(), e.problem());
+    }
+    io::read_settings(scene, &document["settings"], "settings");
+    const io::json& r = reference["recording"];
+    TraceFilter recording;
+    recording.first_frame = r["first_frame"].get<int>();
+    recording.last_frame = r["last_frame"].is_null() ? INT_MAX : r["last_frame"].get<int>();
+    if (!r["contacts"].is_null()) recording.contacts = r["contacts"].get<std::vector<int>>();
+    const io::json& run = reference["run"];
+    std::optional<inspect::BrokenRun> broken;
+    Trace trace;
+    if (run["mode"] == "resolve") {
+        trace = inspect::resolve_once(scene, recording, {}, &broken);
+    } else {
+        if (!run.contains("frames"))
+            throw io::InputError("reference.run.frames", "missing: a simulated reference needs its number of frames");
+        trace = inspect::run_frames(scene, recording, run["frames"].get<int>(), {}, &broken);
+    }
+    // `worksheet` never writes one from a broken run, so this reference was not made by it.
+    if (broken)
+        throw io::InputError("reference.run", "re-running it stops at " + inspect::broken_run_text(scene, *broken));
+    return trace;
+}
+
+io::json worksheet_json(const Worksheet& sheet) {
+    io::json steps = io::json::array();
+    for (const WorksheetStep& s : sheet.steps) {
+        io::json inputs = io::json::array(), cells = io::json::array();
+        for (const WorksheetEntry& e : s.inputs) inputs.push_back(entry_json(e, false));
+        for (const WorksheetEntry& e : s.cells) cells.push_back(entry_json(e, true));
+        steps.push_back({{"place", s.place}, {"at", s.at}, {"inputs", inputs}, {"cells", cells}});
+    }
+    return {{"format", worksheet_format_name},
+            {"version", worksheet_format_version},
+            {"source", sheet.source},
+            {"conventions", sheet.conventions},
+            {"settings", sheet.settings},
+            {"reference", sheet.reference},
+            {"steps", steps}};
+}
+
+std::string worksheet_csv(const Worksheet& sheet) {
+    std::string text = std::string(worksheet_csv_header) + "\n";
+    std::set<std::string> shown;
+    const auto rows = [&text](const char* kind, const WorksheetEntry& e, bool blank) {
+        for_each_scalar(e.value, e.path, [&](const std::string& path, const io::json& v) {
+            const std::string quantity = e.quantity + path.substr(e.path.size());
+            const std::string value = blank ? "" : v.is_null() ? "null" : scalar_text(v);
+            text += explain::csv_row({kind, path, e.step, quantity, value, e.unit, e.formula, e.equation, e.meaning});
+        });
+    };
+    for (const WorksheetStep& s : sheet.steps) {
+        for (const WorksheetEntry& e : s.inputs)
+            if (shown.insert(e.path).second) rows("input", e, false);
+        for (const WorksheetEntry& e : s.cells) rows("cell", e, true);
+    }
+    return text;
+}
+
+}  // namespace impulse::coursework

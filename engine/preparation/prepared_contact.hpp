@@ -1,0 +1,68 @@
+#pragma once
+// A contact made ready for resolution: derivation steps 1-5 computed once (the book computes basis,
+// relative positions and the bodies' world inverse inertia once per frame and never re-derives geometry
+// mid-resolve), plus the three values the resolver keeps up to date as other contacts are resolved.
+
+#include "body/rigid_body.hpp"
+#include "contact/contact.hpp"
+#include "derivation/basis.hpp"
+#include "derivation/contact_velocity.hpp"
+#include "derivation/desired_delta_velocity.hpp"
+#include "derivation/velocity_per_unit_impulse.hpp"
+#include "settings/settings.hpp"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace impulse {
+
+// Steps 1-5 for one contact, exactly as the recorder stores them.
+struct ContactPreparation {
+    int contact;                // index in the input contact list
+    bool swapped;               // given with the world as body 0: bodies exchanged and normal negated
+    std::array<int, 2> bodies;  // after swapping; bodies[1] may be world_body
+    Vec3 point;
+    Vec3 normal;  // after swapping: from body 1 towards body 0
+    double penetration;
+    double restitution;
+    double friction;
+    ContactOrigin origin;             // the test and features that made it (features swapped with the bodies)
+    bool inert;                       // both bodies immovable: no impulse or move can change this contact
+    Basis basis;                      // step 1
+    PerBody<Vec3> relative_position;  // step 2
+    VelocityPerUnitImpulse velocity_per_unit_impulse;  // step 3
+    ContactVelocity contact_velocity;                  // step 4
+    DesiredDeltaVelocity desired_delta_velocity;       // step 5
+
+    bool operator==(const ContactPreparation&) const = default;
+};
+
+struct PreparedContact {
+    ContactPreparation derivation;
+    PerBody<MassProperties> mass;  // the bodies' inverse mass and world inverse inertia when prepared
+    PerBody<BodyMotion> motion;    // the bodies' motion when prepared (its accelerations feed step 5)
+    // Bookkeeping, updated by the linearised formulas whenever a body of this contact moves or changes speed.
+    double penetration;
+    Vec3 contact_velocity;
+    DesiredDeltaVelocity desired_delta_velocity;
+
+    bool operator==(const PreparedContact&) const = default;
+};
+
+// The Δv a velocity method compares with its epsilon and resolves: the bookkeeping's (with the Baumgarte term
+// of step 5 when it is on).
+inline double desired_of(const PreparedContact& c) {
+    return c.desired_delta_velocity.desired_delta_velocity;
+}
+
+// Each body's mass properties once per frame, with the world inverse inertia R I^-1 R^T.
+std::vector<MassProperties> mass_properties(std::span<const RigidBody> bodies);
+
+PreparedContact prepare_contact(int index, const Contact& contact, std::span<const RigidBody> bodies,
+                                std::span<const MassProperties> mass, const ResolverSettings& settings);
+
+std::vector<PreparedContact> prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
+                                              std::span<const MassProperties> mass, const ResolverSettings& settings);
+
+}  // namespace impulse

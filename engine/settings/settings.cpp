@@ -1,0 +1,62 @@
+#include "settings/settings.hpp"
+
+#include <algorithm>
+#include <array>
+
+namespace impulse {
+
+int position_iteration_limit(const ResolverSettings& settings, int contact_count) {
+    return settings.iterations.position.value_or(settings.iterations.per_contact * contact_count);
+}
+
+int velocity_iteration_limit(const ResolverSettings& settings, int contact_count) {
+    return settings.iterations.velocity.value_or(settings.iterations.per_contact * contact_count);
+}
+
+namespace {
+constexpr std::array<std::string_view, 6> names{"book", "chapter", "sweep", "pgs", "pgs_split", "soft_step"};
+}
+
+std::span<const std::string_view> preset_names() {
+    return names;
+}
+
+std::string preset_list_text() {
+    std::string text;
+    for (const std::string_view name : names) text += (text.empty() ? "\"" : ", \"") + std::string(name) + "\"";
+    return text;
+}
+
+std::optional<ResolverSettings> preset(std::string_view name) {
+    ResolverSettings s;  // the defaults are the book preset
+    if (name == "book") return s;
+    if (name == "chapter") {
+        s.preset = "chapter";
+        s.phase_order = PhaseOrder::velocities_first;
+        s.angular_limit = {AngularLimitPolicy::fixed, default_angular_limit_factor(AngularLimitPolicy::fixed)};
+        s.refinements = {0.0, false, false};
+        return s;
+    }
+    s.preset = std::string(name);
+    if (name == "sweep") {
+        s.velocity_method = VelocityMethod::sequential_sweep;
+        return s;
+    }
+    if (name == "pgs" || name == "pgs_split") {
+        s.velocity_method = VelocityMethod::projected_gauss_seidel;
+        s.position_method = name == "pgs" ? PositionMethod::none : PositionMethod::split_impulse;
+        s.baumgarte = name == "pgs";
+        // Bullet: ERP 0.2 for Baumgarte; its split impulse pushes with ERP2 0.8 on the pseudo-velocities.
+        s.position_bias.factor = name == "pgs" ? 0.2 : 0.8;
+        return s;
+    }
+    if (name == "soft_step") {
+        s.velocity_method = VelocityMethod::soft_step;
+        s.position_method = PositionMethod::none;  // the soft contact carries its own push (see SoftStepSettings)
+        s.sweeps = 1;
+        return s;
+    }
+    return std::nullopt;
+}
+
+}  // namespace impulse

@@ -1,0 +1,577 @@
+#include "formats/trace_json.hpp"
+
+#include "formats/scene_file.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+#include "formats/physical_values.hpp"
+#include "formats/schemas.hpp"
+#include "formats/settings_json.hpp"
+#include "resolver/settings_names.hpp"
+
+namespace impulse::io {
+
+namespace {
+
+// --- small helpers -------------------------------------------------------------------------------------
+
+json per_body_vec3(const PerBody<Vec3>& v) {
+    return per_body_json(v, vec3_json);
+}
+json per_body_number(const PerBody<double>& v) {
+    return per_body_json(v, number_json);
+}
+json per_body_bool(const PerBody<bool>& v) {
+    return per_body_json(v, [](bool b) { return json(b); });
+}
+PerBody<Vec3> read_per_body_vec3(const json& j) {
+    return read_per_body<Vec3>(j, read_vec3);
+}
+PerBody<double> read_per_body_number(const json& j) {
+    return read_per_body<double>(j, read_number);
+}
+PerBody<bool> read_per_body_bool(const json& j) {
+    return read_per_body<bool>(j, [](const json& b) { return b.get<bool>(); });
+}
+
+template <typename Enum, std::size_t N>
+Enum read_enum(const NameTable<Enum, N>& table, const json& value) {
+    return *value_of(table, value.get<std::string>());  // the schema limited it to the table's words
+}
+
+json body_index(int body) {
+    return body == world_body ? json(nullptr) : json(body);
+}
+int read_body_index(const json& j) {
+    return j.is_null() ? world_body : j.get<int>();
+}
+
+constexpr std::string_view stop_names[] = {"resolved", "iteration_limit", "passes_complete", "unmovable_left",
+                                           "sweeps_complete"};
+
+// --- step 5, shared by prepared contacts and velocity iterations ----------------------------------------
+
+void write_desired(json& out, const DesiredDeltaVelocity& d) {
+    out["separating_velocity"] = d.separating_velocity;
+    out["restitution"] = d.restitution;
+    out["restitution_cutoff"] = d.restitution_cutoff;
+    out["restitution_cutoff_applied"] = d.restitution_cutoff_applied;
+    out["restitution_used"] = d.restitution_used;
+    out["velocity_from_acceleration_applied"] = d.velocity_from_acceleration_applied;
+    out["velocity_from_acceleration"] = d.velocity_from_acceleration;
+    if (d.position_bias) out["position_bias"] = *d.position_bias;  // absent when Baumgarte is off
+    out["desired_delta_velocity"] = d.desired_delta_velocity;
+}
+
+DesiredDeltaVelocity read_desired(const json& j) {
+    return {j["separating_velocity"].get<double>(),
+            j["restitution"].get<double>(),
+            j["restitution_cutoff"].get<double>(),
+            j["restitution_cutoff_applied"].get<bool>(),
+            j["restitution_used"].get<double>(),
+            j["velocity_from_acceleration_applied"].get<bool>(),
+            j["velocity_from_acceleration"].get<double>(),
+            j.contains("position_bias") ? std::optional(j["position_bias"].get<double>()) : std::nullopt,
+            j["desired_delta_velocity"].get<double>()};
+}
+
+// --- why a contact exists ------------------------------------------------------------------------------
+
+json origin_json(const ContactOrigin& o) {
+    json features = json::array();
+    for (const Feature& f : o.features)
+        features.push_back({{"kind", name_of(feature_kind_names, f.kind)}, {"index", f.index}});
+    return {{"test", name_of(collision_test_names, o.test)}, {"features", features}};
+}
+
+ContactOrigin read_origin(const json& j) {
+    ContactOrigin o;
+    o.test = read_enum(collision_test_names, j["test"]);
+    for (std::size_t i = 0; i < 2; ++i)
+        o.features[i] = {read_enum(feature_kind_names, j["features"][i]["kind"]), j["features"][i]["index"].get<int>()};
+    return o;
+}
+
+// --- steps 1-5 of a contact -----------------------------------------------------------------------------
+
+json preparation_json(const ContactPreparation& d) {
+    json out = {
+        {"contact", d.contact},
+        {"bodies", json::array({body_index(d.bodies[0]), body_index(d.bodies[1])})},
+        {"swapped", d.swapped},
+        {"inert", d.inert},
+        {"point", vec3_json(d.point)},
+        {"normal", vec3_json(d.normal)},
+        {"penetration", d.penetration},
+        {"restitution", d.restitution},
+        {"friction", d.friction},
+        {"origin", origin_json(d.origin)},
+        {"basis", mat3_json(d.basis.contact_to_world)},
+        {"tangent_seed", name_of(tangent_seed_names, d.basis.seed)},
+        {"relative_position", per_body_vec3(d.relative_position)},
+    };
+    const auto& bodies = d.velocity_per_unit_impulse.bodies;
+    const auto field = [&bodies](auto member) {
+        PerBody<std::decay_t<decltype((*bodies[0]).*member)>> values;
+        for (int i = 0; i < 2; ++i)
+            if (bodies[i]) values[i] = (*bodies[i]).*member;
+        return values;
+    };
+    out["torque_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::torque_per_unit_impulse));
+    out["rotation_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::rotation_per_unit_impulse));
+    out["velocity_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::velocity_per_unit_impulse));
+    out["angular_component"] = per_body_number(field(&UnitImpulseResponse::angular_component));
+    out["linear_component"] = per_body_number(field(&UnitImpulseResponse::linear_component));
+    out["delta_velocity_per_unit_impulse"] = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;
+    out["point_velocity"] = per_body_vec3(d.contact_velocity.point_velocity);
+    out["tangential_acceleration_velocity"] = per_body_vec3(d.contact_velocity.tangential_acceleration_velocity);
+    out["contact_velocity"] = vec3_json(d.contact_velocity.contact_velocity);
+    write_desired(out, d.desired_delta_velocity);
+    return out;
+}
+
+ContactPreparation read_preparation(const json& j) {
+    ContactPreparation d;
+    d.contact = j["contact"].get<int>();
+    d.bodies = {read_body_index(j["bodies"][0]), read_body_index(j["bodies"][1])};
+    d.swapped = j["swapped"].get<bool>();
+    d.inert = j["inert"].get<bool>();
+    d.point = read_vec3(j["point"]);
+    d.normal = read_vec3(j["normal"]);
+    d.penetration = j["penetration"].get<double>();
+    d.restitution = j["restitution"].get<double>();
+    d.friction = j["friction"].get<double>();
+    d.origin = read_origin(j["origin"]);
+    d.basis.contact_to_world = read_mat3(j["basis"]);
+    d.basis.normal = d.basis.contact_to_world.col(0);
+    d.basis.tangent1 = d.basis.contact_to_world.col(1);
+    d.basis.tangent2 = d.basis.contact_to_world.col(2);
+    d.basis.seed = read_enum(tangent_seed_names, j["tangent_seed"]);
+    d.relative_position = read_per_body_vec3(j["relative_position"]);
+    const PerBody<Vec3> torque = read_per_body_vec3(j["torque_per_unit_impulse"]);
+    const PerBody<Vec3> rotation = read_per_body_vec3(j["rotation_per_unit_impulse"]);
+    const PerBody<Vec3> velocity = read_per_body_vec3(j["velocity_per_unit_impulse"]);
+    const PerBody<double> angular = read_per_body_number(j["angular_component"]);
+    const PerBody<double> linear = read_per_body_number(j["linear_component"]);
+    for (int i = 0; i < 2; ++i)
+        if (torque[i])
+            d.velocity_per_unit_impulse.bodies[i] = {*torque[i], *rotation[i], *velocity[i], *angular[i], *linear[i]};
+    d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse = j["delta_velocity_per_unit_impulse"].get<double>();
+    d.contact_velocity.point_velocity = read_per_body_vec3(j["point_velocity"]);
+    d.contact_velocity.tangential_acceleration_velocity = read_per_body_vec3(j["tangential_acceleration_velocity"]);
+    d.contact_velocity.contact_velocity = read_vec3(j["contact_velocity"]);
+    d.desired_delta_velocity = read_desired(j);
+    return d;
+}
+
+// --- position iterations --------------------------------------------------------------------------------
+
+json rewind_json(const Rewind& r) {
+    return {{"closing_velocity", r.closing_velocity},
+            {"time", r.time},
+            {"time_limit", r.time_limit},
+            {"removed_penetration", r.removed_penetration},
+            {"linear_change", per_body_vec3(r.linear_change)},
+            {"angular_change", per_body_vec3(r.angular_change)}};
+}
+
+Rewind read_rewind(const json& j) {
+    return {j["closing_velocity"].get<double>(),    j["time"].get<double>(),
+            j["time_limit"].get<double>(),          j["removed_penetration"].get<double>(),
+            read_per_body_vec3(j["linear_change"]), read_per_body_vec3(j["angular_change"])};
+}
+
+json angular_limit_json(const AngularLimit& a) {
+    return {{"policy", name_of(angular_limit_policy_names, a.policy)},
+            {"factor", a.factor},
+            {"maximum", per_body_number(a.maximum)},
+            {"applied", per_body_bool(a.applied)},
+            {"linear_move_before", per_body_number(a.before.linear_move)},
+            {"angular_move_before", per_body_number(a.before.angular_move)}};
+}
+
+AngularLimit read_angular_limit(const json& j) {
+    return {read_enum(angular_limit_policy_names, j["policy"]), j["factor"].get<double>(),
+            read_per_body_number(j["maximum"]), read_per_body_bool(j["applied"]),
+            MoveSplit{read_per_body_number(j["linear_move_before"]), read_per_body_number(j["angular_move_before"])}};
+}
+
+json position_iteration_json(const PositionIteration& it) {
+    json out = {
+        {"iteration", it.iteration}, {"contact", it.contact}, {"penetration", it.penetration}, {"epsilon", it.epsilon}};
+    if (it.pass) out["pass"] = *it.pass;
+    if (const auto& r = it.resolution) {
+        out["method"] = name_of(position_method_names, r->method);
+        out["amount"] = r->amount;
+        if (r->rewind) out["rewind"] = rewind_json(*r->rewind);
+        out["linear_inertia"] = per_body_number(r->inertia.linear_inertia);
+        out["angular_inertia"] = per_body_number(r->inertia.angular_inertia);
+        out["total_inertia"] = r->inertia.total_inertia;
+        out["linear_move"] = per_body_number(r->moves.linear_move);
+        out["angular_move"] = per_body_number(r->moves.angular_move);
+        if (r->angular_limit) out["angular_limit"] = angular_limit_json(*r->angular_limit);
+        out["linear_change"] = per_body_vec3(r->change.linear_change);
+        out["angular_change"] = per_body_vec3(r->change.angular_change);
+    }
+    json updates = json::array();
+    for (const PenetrationUpdate& u : it.updates)
+        updates.push_back({{"contact", u.contact},
+                           {"body", u.body},
+                           {"slot", u.slot},
+                           {"delta", u.delta},
+                           {"before", u.before},
+                           {"after", u.after}});
+    out["updates"] = updates;
+    return out;
+}
+
+PositionIteration read_position_iteration(const json& j) {
+    PositionIteration it;
+    it.iteration = j["iteration"].get<int>();
+    it.contact = j["contact"].get<int>();
+    it.penetration = j["penetration"].get<double>();
+    it.epsilon = j["epsilon"].get<double>();
+    if (j.contains("pass")) it.pass = j["pass"].get<int>();
+    if (j.contains("method")) {
+        PositionResolution r;
+        r.method = read_enum(position_method_names, j["method"]);
+        r.penetration = it.penetration;
+        r.amount = j["amount"].get<double>();
+        if (j.contains("rewind")) r.rewind = read_rewind(j["rewind"]);
+        r.inertia = {read_per_body_number(j["linear_inertia"]), read_per_body_number(j["angular_inertia"]),
+                     j["total_inertia"].get<double>()};
+        r.moves = {read_per_body_number(j["linear_move"]), read_per_body_number(j["angular_move"])};
+        if (j.contains("angular_limit")) r.angular_limit = read_angular_limit(j["angular_limit"]);
+        r.change = {read_per_body_vec3(j["linear_change"]), read_per_body_vec3(j["angular_change"])};
+        it.resolution = r;
+    }
+    for (const json& u : j["updates"])
+        it.updates.push_back({u["contact"].get<int>(), u["body"].get<int>(), u["slot"].get<int>(),
+                              u["delta"].get<double>(), u["before"].get<double>(), u["after"].get<double>()});
+    return it;
+}
+
+// --- velocity iterations --------------------------------------------------------------------------------
+
+json friction_solve_json(const FrictionSolve& s) {
+    json out = {{"delta_velocity_matrix", mat3_json(s.delta_velocity_matrix)},
+                {"target_delta_velocity", vec3_json(s.target_delta_velocity)},
+                {"solvable", s.solvable},
+                {"static_impulse", vec3_json(s.static_impulse)},
+                {"tangential_impulse", s.tangential_impulse},
+                {"cone_limit", s.cone_limit}};
+    if (s.sliding_direction)
+        out["sliding_direction"] = json::array({s.sliding_direction->x(), s.sliding_direction->y()});
+    if (s.sliding_normal_response) out["sliding_normal_response"] = *s.sliding_normal_response;
+    return out;
+}
+
+FrictionSolve read_friction_solve(const json& j) {
+    FrictionSolve s;
+    s.delta_velocity_matrix = read_mat3(j["delta_velocity_matrix"]);
+    s.target_delta_velocity = read_vec3(j["target_delta_velocity"]);
+    s.solvable = j["solvable"].get<bool>();
+    s.static_impulse = read_vec3(j["static_impulse"]);
+    s.tangential_impulse = j["tangential_impulse"].get<double>();
+    s.cone_limit = j["cone_limit"].get<double>();
+    if (j.contains("sliding_direction"))
+        s.sliding_direction =
+            Eigen::Vector2d(j["sliding_direction"][0].get<double>(), j["sliding_direction"][1].get<double>());
+    if (j.contains("sliding_normal_response")) s.sliding_normal_response = j["sliding_normal_response"].get<double>();
+    return s;
+}
+
+json velocity_iteration_json(const VelocityIteration& it) {
+    json out = {{"iteration", it.iteration},
+                {"contact", it.contact},
+                {"desired_delta_velocity", it.desired_delta_velocity},
+                {"epsilon", it.epsilon}};
+    if (const auto& w = it.sweep)
+        out["sweep"] = {{"substep", w->substep}, {"pass", w->pass}, {"stage", name_of(solver_stage_names, w->stage)}};
+    if (const auto& a = it.accumulated)
+        out["accumulated"] = {{"before", vec3_json(a->before)},
+                              {"unclamped", vec3_json(a->unclamped)},
+                              {"after", vec3_json(a->after)},
+                              {"clamp", name_of(impulse_clamp_names, a->clamp)}};
+    if (const auto& r = it.resolution) {
+        out["contact_velocity"] = vec3_json(r->contact_velocity);
+        write_desired(out, r->desired_delta_velocity);
+        out["impulse_model"] = name_of(impulse_model_names, r->impulse.model);
+        if (r->impulse.friction) out["friction_solve"] = friction_solve_json(*r->impulse.friction);
+        out["impulse_contact"] = vec3_json(r->impulse.impulse_contact);
+        out["impulse_world"] = vec3_json(r->impulse.impulse_world);
+        out["impulsive_torque"] = per_body_vec3(r->velocity_change.impulsive_torque);
+        out["velocity_change"] = per_body_vec3(r->velocity_change.velocity_change);
+        out["rotation_change"] = per_body_vec3(r->velocity_change.rotation_change);
+    }
+    json updates = json::array();
+    for (const VelocityUpdate& u : it.updates)
+        updates.push_back({{"contact", u.contact},
+                           {"body", u.body},
+                           {"slot", u.slot},
+                           {"delta", vec3_json(u.delta)},
+                           {"before", vec3_json(u.before)},
+                           {"after", vec3_json(u.after)},
+                           {"desired_delta_velocity_before", u.desired_delta_velocity_before},
+                           {"desired_delta_velocity_after", u.desired_delta_velocity_after}});
+    out["updates"] = updates;
+    return out;
+}
+
+VelocityIteration read_velocity_iteration(const json& j) {
+    VelocityIteration it;
+    it.iteration = j["iteration"].get<int>();
+    it.contact = j["contact"].get<int>();
+    it.desired_delta_velocity = j["desired_delta_velocity"].get<double>();
+    it.epsilon = j["epsilon"].get<double>();
+    if (j.contains("sweep")) {
+        const json& w = j["sweep"];
+        it.sweep = SweepPlace{w["substep"].get<int>(), w["pass"].get<int>(), read_enum(solver_stage_names, w["stage"])};
+    }
+    if (j.contains("accumulated")) {
+        const json& a = j["accumulated"];
+        it.accumulated = AccumulatedImpulse{read_vec3(a["before"]), read_vec3(a["unclamped"]), read_vec3(a["after"]),
+                                            read_enum(impulse_clamp_names, a["clamp"])};
+    }
+    if (j.contains("impulse_model")) {
+        VelocityResolution r;
+        r.contact_velocity = read_vec3(j["contact_velocity"]);
+        r.desired_delta_velocity = read_desired(j);
+        r.impulse.model = read_enum(impulse_model_names, j["impulse_model"]);
+        if (j.contains("friction_solve")) r.impulse.friction = read_friction_solve(j["friction_solve"]);
+        r.impulse.impulse_contact = read_vec3(j["impulse_contact"]);
+        r.impulse.impulse_world = read_vec3(j["impulse_world"]);
+        r.velocity_change = {read_per_body_vec3(j["impulsive_torque"]), read_per_body_vec3(j["velocity_change"]),
+                             read_per_body_vec3(j["rotation_change"])};
+        it.resolution = r;
+    }
+    for (const json& u : j["updates"])
+        it.updates.push_back({u["contact"].get<int>(), u["body"].get<int>(), u["slot"].get<int>(),
+                              read_vec3(u["delta"]), read_vec3(u["before"]), read_vec3(u["after"]),
+                              u["desired_delta_velocity_before"].get<double>(),
+                              u["desired_delta_velocity_after"].get<double>()});
+    return it;
+}
+
+// --- phases and frames ----------------------------------------------------------------------------------
+
+template <typename Iteration, typename Write>
+json phase_json(std::string_view phase, std::string_view method, const PhaseLog<Iteration>& log, Write write) {
+    json iterations = json::array();
+    for (const Iteration& it : log.iterations) iterations.push_back(write(it));
+    return {{"phase", phase},
+            {"method", method},
+            {"iteration_limit", log.outcome.iteration_limit},
+            {"iterations_used", log.outcome.iterations_used},
+            {"stop", stop_names[static_cast<int>(log.outcome.stop)]},
+            {"iterations", iterations}};
+}
+
+template <typename Iteration, typename Read>
+PhaseLog<Iteration> read_phase(const json& j, Read read) {
+    PhaseLog<Iteration> log;
+    log.outcome.iteration_limit = j["iteration_limit"].get<int>();
+    log.outcome.iterations_used = j["iterations_used"].get<int>();
+    const std::string stop = j["stop"].get<std::string>();
+    for (int i = 0; i < static_cast<int>(std::size(stop_names)); ++i)
+        if (stop_names[i] == stop) log.outcome.stop = static_cast<StopReason>(i);
+    for (const json& it : j["iterations"]) log.iterations.push_back(read(it));
+    return log;
+}
+
+json body_state_json(const BodyState& s) {
+    return {{"position", vec3_json(s.position)},
+            {"orientation", quat_json(s.orientation)},
+            {"velocity", vec3_json(s.velocity)},
+            {"angular_velocity", vec3_json(s.angular_velocity)}};
+}
+
+BodyState read_body_state(const json& j) {
+    return {read_vec3(j["position"]), read_quat(j["orientation"]), read_vec3(j["velocity"]),
+            read_vec3(j["angular_velocity"])};
+}
+
+json frame_json(const FrameRecord& f, const ResolverSettings& settings) {
+    json before = json::array();
+    for (std::size_t i = 0; i < f.bodies_before.size(); ++i) {
+        json body = body_state_json(f.bodies_before[i]);
+        body["inverse_inertia_world"] = mat3_json(f.inverse_inertia_world[i]);
+        before.push_back(body);
+    }
+    json contacts = json::array();
+    for (const ContactPreparation& c : f.contacts) contacts.push_back(preparation_json(c));
+    const json position = phase_json("position", name_of(position_method_names, position_method_in_effect(settings)),
+                                     f.position, position_iteration_json);
+    const json velocity = phase_json("velocity", name_of(velocity_method_names, settings.velocity_method), f.velocity,
+                                     velocity_iteration_json);
+    json after = json::array();
+    for (const BodyState& s : f.bodies_after) after.push_back(body_state_json(s));
+    const bool positions_first = f.phase_order == PhaseOrder::positions_first;
+    return {{"frame", f.frame},
+            {"phase_order", name_of(phase_order_names, f.phase_order)},
+            {"bodies_before", before},
+            {"contact_count", f.contact_count},
+            {"contacts", contacts},
+            {"phases", positions_first ? json::array({position, velocity}) : json::array({velocity, position})},
+            {"bodies_after", after}};
+}
+
+FrameRecord read_frame(const json& j) {
+    FrameRecord f;
+    f.frame = j["frame"].get<int>();
+    f.phase_order = read_enum(phase_order_names, j["phase_order"]);
+    f.contact_count = j["contact_count"].get<int>();
+    for (const json& body : j["bodies_before"]) {
+        f.bodies_before.push_back(read_body_state(body));
+        f.inverse_inertia_world.push_back(read_mat3(body["inverse_inertia_world"]));
+    }
+    for (const json& c : j["contacts"]) f.contacts.push_back(read_preparation(c));
+    for (const json& phase : j["phases"]) {
+        if (phase["phase"] == "position")
+            f.position = read_phase<PositionIteration>(phase, read_position_iteration);
+        else
+            f.velocity = read_phase<VelocityIteration>(phase, read_velocity_iteration);
+    }
+    for (const json& body : j["bodies_after"]) f.bodies_after.push_back(read_body_state(body));
+    return f;
+}
+
+json conventions_json() {
+    return {
+        {"units", "SI: m, kg, s, rad"},
+        {"axes", "right-handed, +y up"},
+        {"vector", "[x, y, z]"},
+        {"quaternion", "[w, x, y, z], unit, body to world"},
+        {"matrix", "row-major [[row0], [row1], [row2]]"},
+        {"normal", "from body 1 towards body 0: the direction body 0 must move to separate"},
+        {"penetration", "> 0 when the bodies overlap"},
+        {"basis", "columns (normal, tangent1, tangent2): contact to world; its transpose maps world to contact"},
+        {"tangent_construction",
+         "tangent1 = normalise(world Y x n) if |n.x| > |n.y|, else normalise(world X x n); tangent2 = n x tangent1"},
+        {"relative_position", "contact point minus body position, world"},
+        {"contact_velocity", "body 0's contact point velocity minus body 1's, contact coordinates; x < 0 = closing"},
+        {"desired_delta_velocity", "> 0 pushes body 0 along +normal"},
+        {"impulse", "+impulse_world on body 0, -impulse_world on body 1"},
+        {"per_body", "[body0, body1], null for the world"},
+    };
+}
+
+// What the schema cannot say: every index in a frame must name a body of the scene or a contact of the frame.
+void check_references(const json& frame, const std::string& path, std::size_t bodies) {
+    const std::size_t contacts = frame["contact_count"].get<std::size_t>();
+    const auto in_range = [](const json& index, std::size_t count, const std::string& where, const char* what) {
+        if (!index.is_null() && index.get<std::size_t>() >= count)
+            throw InputError(where, std::string("no ") + what + " " + index.dump() +
+                                        (what[0] == 'b' ? " in the scene" : " in this frame") + " (it has " +
+                                        std::to_string(count) + ")");
+    };
+    for (const char* key : {"bodies_before", "bodies_after"})
+        if (frame[key].size() != bodies)
+            throw InputError(json_path_child(path, key), "lists " + std::to_string(frame[key].size()) +
+                                                             " bodies, the scene has " + std::to_string(bodies));
+    const json& records = frame["contacts"];
+    for (std::size_t i = 0; i < records.size(); ++i) {
+        const std::string at = json_path_index(json_path_child(path, "contacts"), i);
+        in_range(records[i]["contact"], contacts, json_path_child(at, "contact"), "contact");
+        for (std::size_t b = 0; b < 2; ++b)
+            in_range(records[i]["bodies"][b], bodies, json_path_index(json_path_child(at, "bodies"), b), "body");
+    }
+    const json& phases = frame["phases"];
+    for (std::size_t p = 0; p < phases.size(); ++p) {
+        const std::string phase_path = json_path_index(json_path_child(path, "phases"), p);
+        const json& iterations = phases[p]["iterations"];
+        for (std::size_t i = 0; i < iterations.size(); ++i) {
+            const std::string at = json_path_index(json_path_child(phase_path, "iterations"), i);
+            in_range(iterations[i]["contact"], contacts, json_path_child(at, "contact"), "contact");
+            const json& updates = iterations[i]["updates"];
+            for (std::size_t u = 0; u < updates.size(); ++u) {
+                const std::string update = json_path_index(json_path_child(at, "updates"), u);
+                in_range(updates[u]["contact"], contacts, json_path_child(update, "contact"), "contact");
+                in_range(updates[u]["body"], bodies, json_path_child(update, "body"), "body");
+            }
+        }
+    }
+    if (phases[0]["phase"] == phases[1]["phase"])
+        throw InputError(json_path_child(path, "phases"), "needs one position phase and one velocity phase");
+}
+
+// What the schema cannot say about a frame's values: the states and records describe real bodies and contacts,
+// so the replay and the scene view can trust them (a trace we write passes with room to spare).
+void check_frame_values(const FrameRecord& f, const std::string& path) {
+    const auto check_states = [&path](const std::vector<BodyState>& states, const char* key) {
+        for (std::size_t i = 0; i < states.size(); ++i)
+            unit_quaternion(states[i].orientation,
+                            json_path_child(json_path_index(json_path_child(path, key), i), "orientation"));
+    };
+    check_states(f.bodies_before, "bodies_before");
+    check_states(f.bodies_after, "bodies_after");
+    for (std::size_t i = 0; i < f.inverse_inertia_world.size(); ++i)
+        check_inverse_inertia(
+            f.inverse_inertia_world[i],
+            json_path_child(json_path_index(json_path_child(path, "bodies_before"), i), "inverse_inertia_world"));
+    for (std::size_t i = 0; i < f.contacts.size(); ++i) {
+        const std::string at = json_path_index(json_path_child(path, "contacts"), i);
+        require_unit_vector(f.contacts[i].normal, json_path_child(at, "normal"));
+        require_orthonormal(f.contacts[i].basis.contact_to_world, json_path_child(at, "basis"));
+    }
+}
+
+}  // namespace
+
+json trace_json(const Trace& trace) {
+    json frames = json::array();
+    for (const FrameRecord& f : trace.frames) frames.push_back(frame_json(f, trace.scene.settings));
+    const TraceFilter& r = trace.recording;
+    return {{"format", trace_format_name},
+            {"version", trace.version},
+            {"conventions", conventions_json()},
+            {"settings", settings_json(trace.scene.settings, trace.scene.world)},
+            {"recording",
+             {{"first_frame", r.first_frame},
+              {"last_frame", r.last_frame == INT_MAX ? json(nullptr) : json(r.last_frame)},
+              {"contacts", r.contacts ? json(*r.contacts) : json(nullptr)}}},
+            {"scene", scene_json(trace.scene, false)},
+            {"frames", frames}};
+}
+
+Trace read_trace(const json& document) {
+    if (document.is_object() && document.contains("settings"))
+        refuse_renamed_settings(document["settings"], "settings");
+    validate_trace_document(document);
+    Trace trace;
+    trace.version = document["version"].get<int>();
+    try {
+        trace.scene = read_scene(document["scene"]);
+    } catch (const InputError& e) {
+        throw InputError(e.where().empty() ? "scene" : "scene." + e.where(), e.problem());
+    }
+    read_settings(trace.scene, &document["settings"], "settings");
+    const json& r = document["recording"];
+    trace.recording.first_frame = r["first_frame"].get<int>();
+    trace.recording.last_frame = r["last_frame"].is_null() ? INT_MAX : r["last_frame"].get<int>();
+    if (!r["contacts"].is_null()) trace.recording.contacts = r["contacts"].get<std::vector<int>>();
+    const json& frames = document["frames"];
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        check_references(frames[i], json_path_index("frames", i), trace.scene.bodies.size());
+        trace.frames.push_back(read_frame(frames[i]));
+        check_frame_values(trace.frames.back(), json_path_index("frames", i));
+    }
+    return trace;
+}
+
+Trace read_trace_text(std::string_view text) {
+    return read_trace(parse_json_text(text));
+}
+
+json item_json(const ContactPreparation& contact) {
+    return preparation_json(contact);
+}
+
+json item_json(const PositionIteration& iteration) {
+    return position_iteration_json(iteration);
+}
+
+json item_json(const VelocityIteration& iteration) {
+    return velocity_iteration_json(iteration);
+}
+
+}  // namespace impulse::io

@@ -1,5 +1,6 @@
 #include "derivation/impulse.hpp"
 
+#include "math/full_pivot_lu.hpp"
 #include "math/rotation.hpp"
 
 #include <cmath>
@@ -31,9 +32,11 @@ FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_p
     s.delta_velocity_matrix = delta_velocity_matrix(basis, relative_position, mass);
     s.target_delta_velocity = {desired_delta_velocity, -contact_velocity.y(), -contact_velocity.z()};
 
-    const Eigen::FullPivLU<Mat3> lu(s.delta_velocity_matrix);
-    s.solvable = lu.isInvertible();
-    s.static_impulse = s.solvable ? Vec3(lu.solve(s.target_delta_velocity)) : Vec3::Zero();
+    // Gaussian elimination with complete pivoting (math/full_pivot_lu.hpp): K is singular only when neither
+    // body can translate, and nearly so for long lever arms, where the largest pivot first keeps it accurate.
+    const FullPivotLu3 lu(s.delta_velocity_matrix);
+    s.solvable = lu.invertible();
+    s.static_impulse = s.solvable ? lu.solve(s.target_delta_velocity) : Vec3::Zero();
     s.tangential_impulse = std::hypot(s.static_impulse.y(), s.static_impulse.z());
     s.cone_limit = friction * s.static_impulse.x();
 

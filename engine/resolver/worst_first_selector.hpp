@@ -38,7 +38,8 @@ public:
     void fill(std::span<const double> values, std::span<const char> in_play);
     void insert(int contact, double value);
     void change(int contact, double value);  // no effect on a contact not in play
-    void change(std::span<const int> contacts, std::span<const double> values);  // each in turn
+    // The same for several contacts at once, ascending, each match on the union of their paths played once.
+    void change(std::span<const int> contacts, std::span<const double> values);
     void remove(int contact);                // likewise
     bool contains(int contact) const { return leaf(contact).contact == contact; }
     // The contact with the largest value (lowest index on a tie), if any is in play.
@@ -63,6 +64,9 @@ private:
         return tree_[2 * node + static_cast<std::size_t>(right_wins)];
     }
     void set_leaf(int contact, Entry entry);  // and replays its matches up to the root
+    // Replays the matches above node `at`, carrying its winner up, and stops below level `handover` (raising
+    // `owed` to it: a later replay must play it), or where a match comes out as before once nothing is owed.
+    void replay(std::size_t at, int handover, int& owed);
 
     std::size_t leaves_ = 0;   // a power of two, at least the contact count
     std::vector<Entry> tree_;  // [1] the root, [k] the winner of [2k] and [2k + 1], [leaves_ + i] contact i

@@ -107,6 +107,43 @@ TEST_CASE("the contact tournament always tops with the largest value and the low
     }
 }
 
+TEST_CASE("a tournament changed several contacts at once ranks every contact as one changed one by one") {
+    // Batches of ascending contacts (neighbours, far apart, some not in play) get new values; the batch
+    // tree and a tree changed one contact at a time must then give up their contacts in the same order
+    // (largest first, lowest index on a tie), which checks every match, not only the final one.
+    std::mt19937 random(17);
+    const int n = 100;
+    ContactTournament batch, single;
+    std::vector<double> start(n);
+    std::vector<char> present(n);
+    for (int i = 0; i < n; ++i) {
+        start[static_cast<std::size_t>(i)] = 0.1 * static_cast<double>(random() % 5);
+        present[static_cast<std::size_t>(i)] = random() % 8 != 0;
+    }
+    batch.fill(start, present);
+    single.fill(start, present);
+    const auto ranking = [n](ContactTournament tree) {
+        std::vector<int> order;
+        while (const std::optional<int> top = tree.top()) {
+            order.push_back(*top);
+            tree.remove(*top);
+        }
+        CHECK(order.size() <= static_cast<std::size_t>(n));
+        return order;
+    };
+    for (int round = 0; round < 400; ++round) {
+        std::vector<int> contacts;
+        const int first = static_cast<int>(random() % n);
+        for (int i = first; i < n; i += 1 + static_cast<int>(random() % (round % 2 == 0 ? 3 : 40)))
+            if (contacts.size() < 8) contacts.push_back(i);
+        std::vector<double> values;
+        for (std::size_t k = 0; k < contacts.size(); ++k) values.push_back(0.1 * static_cast<double>(random() % 5));
+        batch.change(contacts, values);
+        for (std::size_t k = 0; k < contacts.size(); ++k) single.change(contacts[k], values[k]);
+        REQUIRE(ranking(batch) == ranking(single));
+    }
+}
+
 TEST_CASE("both worst-first searches choose the same contact after any sequence of random updates") {
     // 300 contacts on 60 bodies (some with the world, some between two bodies), penetrations from a few
     // levels so ties are common. Each round: both selectors pick, the picked contact's bodies "move", every

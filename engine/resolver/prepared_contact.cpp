@@ -7,6 +7,14 @@
 
 namespace impulse {
 
+const FactoredDeltaVelocityMatrix& delta_velocity_matrix_of(const PreparedContact& contact) {
+    if (!contact.delta_velocity_matrix.value) {
+        const ContactPreparation& d = contact.derivation;
+        contact.delta_velocity_matrix.value = factored_delta_velocity_matrix(d.basis, d.relative_position, contact.mass);
+    }
+    return *contact.delta_velocity_matrix.value;
+}
+
 std::vector<MassProperties> mass_properties(std::span<const RigidBody> bodies) {
     std::vector<MassProperties> mass;
     mass.reserve(bodies.size());

@@ -71,12 +71,29 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     return p;
 }
 
+namespace {
+
+// One contact's preparation, made where the vector keeps it: emplace_back constructs the element from this by
+// calling the conversion, and the PreparedContact it returns initializes the element itself. (push_back of
+// prepare_contact's result would build it on the stack and then copy its 1.2 kB into the vector.)
+struct PreparationOf {
+    int index;
+    const Contact& contact;
+    std::span<const RigidBody> bodies;
+    std::span<const MassProperties> mass;
+    const ResolverSettings& settings;
+
+    operator PreparedContact() const { return prepare_contact(index, contact, bodies, mass, settings); }
+};
+
+}  // namespace
+
 std::vector<PreparedContact> prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
                                               std::span<const MassProperties> mass, const ResolverSettings& settings) {
     std::vector<PreparedContact> prepared;
     prepared.reserve(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i)
-        prepared.push_back(prepare_contact(static_cast<int>(i), contacts[i], bodies, mass, settings));
+        prepared.emplace_back(PreparationOf{static_cast<int>(i), contacts[i], bodies, mass, settings});
     return prepared;
 }
 

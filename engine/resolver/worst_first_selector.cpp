@@ -33,25 +33,19 @@ void ContactTournament::fill(std::span<const double> values, std::span<const cha
     for (std::size_t node = leaves_ - 1; node >= 1; --node) tree_[node] = match(node);
 }
 
-void ContactTournament::replay(std::size_t at, int handover, int& owed) {
+void ContactTournament::replay(std::size_t at) {
     // Up the path, the winner so far meets the winner of the sibling subtree. Every sibling's place is known
-    // from the leaf's, so their loads do not wait for one another; only the winner is carried up.
+    // from the node's, so their loads do not wait for one another; only the winner is carried up.
     double value = tree_[at].value;
     int winner = tree_[at].contact;
-    for (int level = 1; at > 1; ++level) {
-        if (level == handover) {  // the next contact of the batch plays this match and those above
-            owed = std::max(owed, handover);
-            return;
-        }
+    while (at > 1) {
         const Entry& other = tree_[at ^ 1];
         // The larger value wins; on a tie the lower index (an empty side has none: `nobody` is the largest int).
         const bool other_wins = (other.value > value) | ((other.value == value) & (other.contact < winner));
         value = other_wins ? other.value : value;
         winner = other_wins ? other.contact : winner;
         at /= 2;
-        if (level >= owed) owed = 0;
-        // The same result as before, and no match above owed by an earlier replay: nothing above changes.
-        if (owed == 0 && tree_[at].contact == winner && tree_[at].value == value) return;
+        if (tree_[at].contact == winner && tree_[at].value == value) return;  // as before: nothing above changes
         tree_[at] = {value, winner};
     }
 }
@@ -59,8 +53,7 @@ void ContactTournament::replay(std::size_t at, int handover, int& owed) {
 void ContactTournament::set_leaf(int contact, Entry entry) {
     const std::size_t at = leaves_ + static_cast<std::size_t>(contact);
     tree_[at] = entry;
-    int owed = 0;
-    replay(at, std::numeric_limits<int>::max(), owed);
+    replay(at);
 }
 
 void ContactTournament::insert(int contact, double value) {
@@ -72,26 +65,31 @@ void ContactTournament::change(int contact, double value) {
 }
 
 void ContactTournament::change(std::span<const int> contacts, std::span<const double> values) {
-    // The new values first, then one replay per contact that stops below the first match it shares with the
-    // next contact's path: the contacts of one body sit side by side, so their paths soon join and each
-    // match on the union of the paths is played once.
-    std::size_t next = 0;
-    const auto next_in_play = [&](std::size_t from) {
-        while (from < contacts.size() && !contains(contacts[from])) ++from;
-        return from;
-    };
-    for (std::size_t k = 0; k < contacts.size(); ++k)
-        if (contains(contacts[k])) tree_[leaves_ + static_cast<std::size_t>(contacts[k])].value = ordering_key(values[k]);
-    int owed = 0;
-    for (std::size_t k = next_in_play(0); k < contacts.size(); k = next) {
-        next = next_in_play(k + 1);
+    // The new values first; then level by level, each match with a changed player is played once (the nodes
+    // ascend, so two children of one match come one after the other), and a match whose result is as before
+    // drops out. Exactly the matches that can change are played. Once one path is left it is followed up
+    // alone, as set_leaf does.
+    changed_.clear();
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        if (!contains(contacts[k])) continue;
         const std::size_t at = leaves_ + static_cast<std::size_t>(contacts[k]);
-        // The match where this path meets the next one: the level of the highest bit in which their nodes differ.
-        const int handover = next < contacts.size()
-                                 ? std::bit_width(at ^ (leaves_ + static_cast<std::size_t>(contacts[next])))
-                                 : std::numeric_limits<int>::max();
-        replay(at, handover, owed);
+        tree_[at].value = ordering_key(values[k]);
+        changed_.push_back(at);
     }
+    while (changed_.size() > 1) {
+        std::size_t kept = 0, played = 0;
+        for (const std::size_t node : changed_) {
+            const std::size_t parent = node / 2;
+            if (parent == played) continue;  // the sibling's turn played this match already
+            played = parent;
+            const Entry winner = match(parent);
+            if (winner.contact == tree_[parent].contact && winner.value == tree_[parent].value) continue;
+            tree_[parent] = winner;
+            if (parent > 1) changed_[kept++] = parent;
+        }
+        changed_.resize(kept);
+    }
+    if (changed_.size() == 1) replay(changed_.front());
 }
 
 void ContactTournament::remove(int contact) {

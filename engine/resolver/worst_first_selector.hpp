@@ -38,7 +38,7 @@ public:
     void fill(std::span<const double> values, std::span<const char> in_play);
     void insert(int contact, double value);
     void change(int contact, double value);  // no effect on a contact not in play
-    // The same for several contacts at once, ascending, each match on the union of their paths played once.
+    // The same for several contacts at once, ascending: each match with a changed player is played once.
     void change(std::span<const int> contacts, std::span<const double> values);
     void remove(int contact);                // likewise
     bool contains(int contact) const { return leaf(contact).contact == contact; }
@@ -64,12 +64,12 @@ private:
         return tree_[2 * node + static_cast<std::size_t>(right_wins)];
     }
     void set_leaf(int contact, Entry entry);  // and replays its matches up to the root
-    // Replays the matches above node `at`, carrying its winner up, and stops below level `handover` (raising
-    // `owed` to it: a later replay must play it), or where a match comes out as before once nothing is owed.
-    void replay(std::size_t at, int handover, int& owed);
+    // Replays the matches above node `at`, carrying its winner up, until one comes out as before.
+    void replay(std::size_t at);
 
     std::size_t leaves_ = 0;   // a power of two, at least the contact count
     std::vector<Entry> tree_;  // [1] the root, [k] the winner of [2k] and [2k + 1], [leaves_ + i] contact i
+    std::vector<std::size_t> changed_;  // change(): the nodes of one level whose entry changed, ascending
 };
 
 // Per body, the indices of the contacts touching it, ascending (one flat array with an offset per body).

@@ -91,7 +91,6 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
                                           .contact_velocity = velocity,
                                           .desired_delta_velocity = desired},
                            .mass = body_mass,
-                           .motion = motion,
                            .penetration = contact.penetration,
                            .contact_velocity = velocity.contact_velocity,
                            .desired_delta_velocity = bookkept,

@@ -51,7 +51,6 @@ struct Cached {
 struct PreparedContact {
     ContactPreparation derivation;
     PerBody<MassProperties> mass;  // the bodies' inverse mass and world inverse inertia when prepared
-    PerBody<BodyMotion> motion;    // the bodies' motion when prepared (its accelerations feed step 5)
     // Bookkeeping, updated by the linearised formulas whenever a body of this contact moves or changes speed.
     double penetration;
     Vec3 contact_velocity;

@@ -75,7 +75,11 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
 
     // Built in one piece, every member from its value: a PreparedContact declared first and filled in after
     // would first clear its half kilobyte of optional per-body values, then overwrite them.
-    return PreparedContact{.derivation = {.contact = index,
+    return PreparedContact{.penetration = contact.penetration,
+                           .contact_velocity = velocity.contact_velocity,
+                           .desired_delta_velocity = bookkept,
+                           .position_bias = bias,
+                           .derivation = {.contact = index,
                                           .swapped = swapped,
                                           .bodies = ids,
                                           .point = contact.point,
@@ -91,10 +95,6 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
                                           .contact_velocity = velocity,
                                           .desired_delta_velocity = desired},
                            .mass = body_mass,
-                           .penetration = contact.penetration,
-                           .contact_velocity = velocity.contact_velocity,
-                           .desired_delta_velocity = bookkept,
-                           .position_bias = bias,
                            .delta_velocity_matrix = {}};
 }
 

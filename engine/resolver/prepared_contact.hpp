@@ -49,9 +49,8 @@ struct Cached {
 };
 
 struct PreparedContact {
-    ContactPreparation derivation;
-    PerBody<MassProperties> mass;  // the bodies' inverse mass and world inverse inertia when prepared
     // Bookkeeping, updated by the linearised formulas whenever a body of this contact moves or changes speed.
+    // First, next to the derivation's bodies, basis and relative positions, which every update reads too.
     double penetration;
     Vec3 contact_velocity;
     DesiredDeltaVelocity desired_delta_velocity;
@@ -59,6 +58,8 @@ struct PreparedContact {
     // already added to desired_delta_velocity above (but not to the recorded step 5 in `derivation`), so
     // worst-first and the sequential sweep push the bodies apart through their velocities.
     std::optional<double> position_bias;
+    ContactPreparation derivation;
+    PerBody<MassProperties> mass;  // the bodies' inverse mass and world inverse inertia when prepared
     // K and its factors for the book's friction impulse (derivation/impulse.hpp): computed by the first impulse on
     // this contact and reused by the later ones, since they depend only on what preparation fixed.
     mutable Cached<FactoredDeltaVelocityMatrix> delta_velocity_matrix;

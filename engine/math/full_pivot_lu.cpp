@@ -11,8 +11,7 @@ namespace {
 // Step p of the elimination on `a` (row-major working copy); false when the corner from (p, p) on is all zero.
 // A template so each step's loops have fixed bounds and unroll: the three steps are the whole cost.
 template <int p>
-bool eliminate(double (&a)[3][3], std::array<int, 3>& row_exchange, std::array<int, 3>& column_exchange,
-               double& largest_pivot) {
+bool eliminate(double (&a)[3][3], std::array<int, 3>& row_of, std::array<int, 3>& column_of, double& largest_pivot) {
     // The pivot: the largest |entry| of the corner below and right of (p, p), searched column by column,
     // top to bottom, the first one kept on a tie (a NaN at (p, p) stays the pivot: nothing compares above it).
     int pivot_row = p, pivot_column = p;
@@ -26,8 +25,8 @@ bool eliminate(double (&a)[3][3], std::array<int, 3>& row_exchange, std::array<i
             }
     if (biggest == 0.0) return false;
     if (biggest > largest_pivot) largest_pivot = biggest;
-    row_exchange[p] = pivot_row;
-    column_exchange[p] = pivot_column;
+    std::swap(row_of[p], row_of[static_cast<std::size_t>(pivot_row)]);
+    std::swap(column_of[p], column_of[static_cast<std::size_t>(pivot_column)]);
     if (pivot_row != p)
         for (int c = 0; c < 3; ++c) std::swap(a[p][c], a[pivot_row][c]);
     if (pivot_column != p)
@@ -47,10 +46,10 @@ FullPivotLu3::FullPivotLu3(const Mat3& k) {
     double a[3][3];
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) a[r][c] = k(r, c);
-    nonzero_pivots_ = !eliminate<0>(a, row_exchange_, column_exchange_, largest_pivot_)   ? 0
-                      : !eliminate<1>(a, row_exchange_, column_exchange_, largest_pivot_) ? 1
-                      : !eliminate<2>(a, row_exchange_, column_exchange_, largest_pivot_) ? 2
-                                                                                          : 3;
+    nonzero_pivots_ = !eliminate<0>(a, row_of_, column_of_, largest_pivot_)   ? 0
+                      : !eliminate<1>(a, row_of_, column_of_, largest_pivot_) ? 1
+                      : !eliminate<2>(a, row_of_, column_of_, largest_pivot_) ? 2
+                                                                              : 3;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) lu_(r, c) = a[r][c];
 }
@@ -63,30 +62,32 @@ bool FullPivotLu3::invertible() const {
 }
 
 Vec3 FullPivotLu3::solve(const Vec3& b) const {
-    // P b: the row exchanges in the order they were made.
-    Vec3 c = b;
-    for (int p = 0; p < 3; ++p) std::swap(c[p], c[row_exchange_[static_cast<std::size_t>(p)]]);
+    // P b: b's entries in the order of the rows of L U.
+    double c0 = b[row_of_[0]], c1 = b[row_of_[1]], c2 = b[row_of_[2]];
     // L y = P b, column by column; a zero entry contributes nothing and is skipped (as Eigen does, which keeps
     // the sign of a zero and a 0 x infinity out of the sum).
-    if (c[0] != 0.0) {
-        c[1] -= c[0] * lu_(1, 0);
-        c[2] -= c[0] * lu_(2, 0);
+    if (c0 != 0.0) {
+        c1 -= c0 * lu_(1, 0);
+        c2 -= c0 * lu_(2, 0);
     }
-    if (c[1] != 0.0) c[2] -= c[1] * lu_(2, 1);
+    if (c1 != 0.0) c2 -= c1 * lu_(2, 1);
     // U z = y, from the last row up, column by column.
-    if (c[2] != 0.0) {
-        c[2] /= lu_(2, 2);
-        c[0] -= c[2] * lu_(0, 2);
-        c[1] -= c[2] * lu_(1, 2);
+    if (c2 != 0.0) {
+        c2 /= lu_(2, 2);
+        c0 -= c2 * lu_(0, 2);
+        c1 -= c2 * lu_(1, 2);
     }
-    if (c[1] != 0.0) {
-        c[1] /= lu_(1, 1);
-        c[0] -= c[1] * lu_(0, 1);
+    if (c1 != 0.0) {
+        c1 /= lu_(1, 1);
+        c0 -= c1 * lu_(0, 1);
     }
-    if (c[0] != 0.0) c[0] /= lu_(0, 0);
-    // x = Q z: the column exchanges undone, last first.
-    for (int p = 2; p >= 0; --p) std::swap(c[p], c[column_exchange_[static_cast<std::size_t>(p)]]);
-    return c;
+    if (c0 != 0.0) c0 /= lu_(0, 0);
+    // x = Q z: z's entries back in the order of K's columns.
+    Vec3 x;
+    x[column_of_[0]] = c0;
+    x[column_of_[1]] = c1;
+    x[column_of_[2]] = c2;
+    return x;
 }
 
 }  // namespace impulse

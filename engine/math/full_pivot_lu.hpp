@@ -31,9 +31,9 @@ public:
 
 private:
     Mat3 lu_;
-    std::array<int, 3> row_exchange_{0, 1, 2};     // step p exchanged rows p and row_exchange_[p]
-    std::array<int, 3> column_exchange_{0, 1, 2};  // ... and columns p and column_exchange_[p]
-    int nonzero_pivots_ = 3;                       // steps done before the remaining corner was all zero
+    std::array<int, 3> row_of_{0, 1, 2};     // P: row i of L U is row row_of_[i] of K
+    std::array<int, 3> column_of_{0, 1, 2};  // Q: column j of L U is column column_of_[j] of K
+    int nonzero_pivots_ = 3;                 // steps done before the remaining corner was all zero
     double largest_pivot_ = 0.0;
 };
 

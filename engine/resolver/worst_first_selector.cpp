@@ -170,7 +170,7 @@ void WorstFirstSelector::restart() {
 std::optional<int> WorstFirstSelector::worst(double epsilon) const {
     if (search_ == WorstFirstSearch::priority_queue) {
         const std::optional<int> top = tournament_.top();
-        if (top && tournament_.value(*top) > epsilon) return top;
+        if (top && tournament_.top_value() > epsilon) return top;
         return std::nullopt;
     }
     // The reference engine's loop: every contact, every iteration.

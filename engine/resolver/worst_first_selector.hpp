@@ -44,6 +44,7 @@ public:
     bool contains(int contact) const { return leaf(contact).contact == contact; }
     // The contact with the largest value (lowest index on a tie), if any is in play.
     std::optional<int> top() const;
+    double top_value() const { return tree_[1].value; }  // the top's value, as the root holds it
     double value(int contact) const { return leaf(contact).value; }
 
 private:

@@ -45,6 +45,8 @@ template <typename T>
 struct Cached {
     std::optional<T> value;
 
+    // Empty, not defaulted: then a prepared contact built with an empty cache is not cleared byte by byte first.
+    Cached() {}
     bool operator==(const Cached&) const { return true; }
 };
 

@@ -10,7 +10,8 @@ namespace impulse {
 const FactoredDeltaVelocityMatrix& delta_velocity_matrix_of(const PreparedContact& contact) {
     if (!contact.delta_velocity_matrix.value) {
         const ContactPreparation& d = contact.derivation;
-        contact.delta_velocity_matrix.value = factored_delta_velocity_matrix(d.basis, d.relative_position, contact.mass);
+        contact.delta_velocity_matrix.value =
+            factored_delta_velocity_matrix(d.basis, d.relative_position, contact.mass);
     }
     return *contact.delta_velocity_matrix.value;
 }
@@ -62,8 +63,8 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     const VelocityPerUnitImpulse chain = velocity_per_unit_impulse(normal, q_rel, body_mass);
     const ContactVelocity velocity = contact_velocity(contact_basis, q_rel, motion, settings.duration,
                                                       settings.refinements.tangential_acceleration_velocity);
-    const DesiredDeltaVelocity desired = desired_delta_velocity(velocity.contact_velocity.x(), contact.restitution,
-                                                                normal, motion, settings.duration, settings.refinements);
+    const DesiredDeltaVelocity desired = desired_delta_velocity(
+        velocity.contact_velocity.x(), contact.restitution, normal, motion, settings.duration, settings.refinements);
 
     // The bookkeeping starts from steps 4 and 5.
     DesiredDeltaVelocity bookkept = desired;

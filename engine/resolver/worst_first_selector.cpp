@@ -115,14 +115,15 @@ ContactsByBody::ContactsByBody(std::span<const PreparedContact> contacts, std::s
     std::vector<int> next(first_.begin(), first_.end() - 1);
     for (std::size_t i = 0; i < contacts.size(); ++i)
         for (const int body : contacts[i].derivation.bodies)
-            if (body != world_body) contacts_[static_cast<std::size_t>(next[static_cast<std::size_t>(body)]++)] = static_cast<int>(i);
+            if (body != world_body)
+                contacts_[static_cast<std::size_t>(next[static_cast<std::size_t>(body)]++)] = static_cast<int>(i);
 }
 
 std::span<const int> ContactsByBody::contacts_of(int body) const {
     if (body == world_body) return {};
     const auto b = static_cast<std::size_t>(body);
     return std::span<const int>(contacts_).subspan(static_cast<std::size_t>(first_[b]),
-                                                    static_cast<std::size_t>(first_[b + 1] - first_[b]));
+                                                   static_cast<std::size_t>(first_[b + 1] - first_[b]));
 }
 
 void ContactsByBody::sharing(const std::array<int, 2>& moved, std::vector<int>& out) const {
@@ -196,7 +197,8 @@ std::span<const int> WorstFirstSelector::sharing(const std::array<int, 2>& moved
 void WorstFirstSelector::values_changed(std::span<const int> contacts) {
     if (search_ == WorstFirstSearch::full_scan) return;
     values_.resize(contacts.size());
-    for (std::size_t k = 0; k < contacts.size(); ++k) values_[k] = value_(contacts_[static_cast<std::size_t>(contacts[k])]);
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+        values_[k] = value_(contacts_[static_cast<std::size_t>(contacts[k])]);
     tournament_.change(contacts, values_);
 }
 

@@ -40,7 +40,7 @@ public:
     void change(int contact, double value);  // no effect on a contact not in play
     // The same for several contacts at once, ascending: each match with a changed player is played once.
     void change(std::span<const int> contacts, std::span<const double> values);
-    void remove(int contact);                // likewise
+    void remove(int contact);  // likewise
     bool contains(int contact) const { return leaf(contact).contact == contact; }
     // The contact with the largest value (lowest index on a tie), if any is in play.
     std::optional<int> top() const;
@@ -61,15 +61,16 @@ private:
     const Entry& match(std::size_t node) const {
         const Entry& left = tree_[2 * node];
         const Entry& right = tree_[2 * node + 1];
-        const bool right_wins = (right.value > left.value) | ((right.value == left.value) & (right.contact < left.contact));
+        const bool right_wins =
+            (right.value > left.value) | ((right.value == left.value) & (right.contact < left.contact));
         return tree_[2 * node + static_cast<std::size_t>(right_wins)];
     }
     void set_leaf(int contact, Entry entry);  // and replays its matches up to the root
     // Replays the matches above node `at`, carrying its winner up, until one comes out as before.
     void replay(std::size_t at);
 
-    std::size_t leaves_ = 0;   // a power of two, at least the contact count
-    std::vector<Entry> tree_;  // [1] the root, [k] the winner of [2k] and [2k + 1], [leaves_ + i] contact i
+    std::size_t leaves_ = 0;            // a power of two, at least the contact count
+    std::vector<Entry> tree_;           // [1] the root, [k] the winner of [2k] and [2k + 1], [leaves_ + i] contact i
     std::vector<std::size_t> changed_;  // change(): the nodes of one level whose entry changed, ascending
 };
 

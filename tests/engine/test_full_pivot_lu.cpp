@@ -108,7 +108,7 @@ TEST_CASE("the 3x3 full-pivot solve matches Eigen's FullPivLU on ties, zeros of 
         invertible += FullPivotLu3(k).invertible();
     }
     CHECK(agreed == count);
-    CHECK(invertible > count / 10);       // both outcomes are exercised
+    CHECK(invertible > count / 10);  // both outcomes are exercised
     CHECK(invertible < count - count / 10);
 }
 

@@ -210,7 +210,9 @@ TEST_CASE("the contact blamed for a body is the last one resolved on it, whichev
     contacts[2].bodies = {2, world_body};
     Recorder nobody;
     LastTouch touch(nobody, contacts, 4);
-    const auto position = [](int contact) { return PositionIteration{0, contact, 0.0, 0.0, std::nullopt, std::nullopt, {}}; };
+    const auto position = [](int contact) {
+        return PositionIteration{0, contact, 0.0, 0.0, std::nullopt, std::nullopt, {}};
+    };
     const auto velocity = [](int contact) {
         return VelocityIteration{.iteration = 0,
                                  .contact = contact,

@@ -181,7 +181,8 @@ TEST_CASE("both worst-first searches choose the same contact after any sequence 
         }
         const std::array<int, 2> moved = contacts[static_cast<std::size_t>(*a)].derivation.bodies;
         const std::vector<int> sharing(queue.sharing(moved).begin(), queue.sharing(moved).end());
-        for (const int i : sharing) contacts[static_cast<std::size_t>(i)].penetration = 0.01 * static_cast<double>(random() % 7);
+        for (const int i : sharing)
+            contacts[static_cast<std::size_t>(i)].penetration = 0.01 * static_cast<double>(random() % 7);
         scan.values_changed(scan.sharing(moved));
         queue.values_changed(sharing);
     }
@@ -208,7 +209,8 @@ TEST_CASE("the contacts sharing a body come once each and in index order") {
     CHECK(out == std::vector<int>{2, 3, 4});
 }
 
-TEST_CASE("priority-queue worst-first picks the same contacts as the full scan pick by pick and ends in the same state") {
+TEST_CASE(
+    "priority-queue worst-first picks the same contacts as the full scan pick by pick and ends in the same state") {
     struct Case {
         std::string scene;
         int frames;

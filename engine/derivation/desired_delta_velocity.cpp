@@ -6,9 +6,11 @@ namespace impulse {
 
 DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double restitution, const Vec3& normal,
                                             const PerBody<BodyMotion>& motion, double duration,
-                                            const VelocityRefinements& refinements) {
+                                            const VelocityRefinements& refinements,
+                                            std::optional<double> position_bias) {
     return desired_delta_velocity(separating_velocity, restitution,
-                                  velocity_from_acceleration(normal, motion, duration, refinements), refinements);
+                                  velocity_from_acceleration(normal, motion, duration, refinements), refinements,
+                                  position_bias);
 }
 
 double velocity_from_acceleration(const Vec3& normal, const PerBody<BodyMotion>& motion, double duration,
@@ -22,7 +24,8 @@ double velocity_from_acceleration(const Vec3& normal, const PerBody<BodyMotion>&
 }
 
 DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double restitution,
-                                            double velocity_from_acceleration, const VelocityRefinements& refinements) {
+                                            double velocity_from_acceleration, const VelocityRefinements& refinements,
+                                            std::optional<double> position_bias) {
     DesiredDeltaVelocity d;
     d.separating_velocity = separating_velocity;
     d.restitution = restitution;
@@ -35,6 +38,9 @@ DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double r
     // last step is not bounced back, so a resting contact asks only to stop, not to leap.
     d.desired_delta_velocity =
         -separating_velocity - d.restitution_used * (separating_velocity - d.velocity_from_acceleration);
+    // Baumgarte: also separate at the bias speed, so the bodies drift apart over the next frames.
+    d.position_bias = position_bias;
+    if (position_bias) d.desired_delta_velocity += *position_bias;
     return d;
 }
 

@@ -63,23 +63,19 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     const VelocityPerUnitImpulse chain = velocity_per_unit_impulse(normal, q_rel, body_mass);
     const ContactVelocity velocity = contact_velocity(contact_basis, q_rel, motion, settings.duration,
                                                       settings.refinements.tangential_acceleration_velocity);
-    const DesiredDeltaVelocity desired = desired_delta_velocity(
-        velocity.contact_velocity.x(), contact.restitution, normal, motion, settings.duration, settings.refinements);
-
-    // The bookkeeping starts from steps 4 and 5.
-    DesiredDeltaVelocity bookkept = desired;
-    std::optional<double> bias;
-    if (settings.position_method == PositionMethod::baumgarte) {
-        bias = position_bias(contact.penetration, settings.position_bias, settings.duration);
-        bookkept.desired_delta_velocity += *bias;
-    }
+    const std::optional<double> bias =
+        settings.baumgarte
+            ? std::optional(position_bias(contact.penetration, settings.position_bias, settings.duration))
+            : std::nullopt;
+    const DesiredDeltaVelocity desired =
+        desired_delta_velocity(velocity.contact_velocity.x(), contact.restitution, normal, motion, settings.duration,
+                               settings.refinements, bias);
 
     // Built in one piece, every member from its value: a PreparedContact declared first and filled in after
     // would first clear its half kilobyte of optional per-body values, then overwrite them.
     return PreparedContact{.penetration = contact.penetration,
                            .contact_velocity = velocity.contact_velocity,
-                           .desired_delta_velocity = bookkept,
-                           .position_bias = bias,
+                           .desired_delta_velocity = desired,  // the bookkeeping starts from steps 4 and 5
                            .derivation = {.contact = index,
                                           .swapped = swapped,
                                           .bodies = ids,

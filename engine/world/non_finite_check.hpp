@@ -25,8 +25,9 @@ struct NonFiniteBody {
 
 // Passes every report on to the caller's recorder and remembers the last contact an iteration resolved that
 // touched each body (in resolution order, both phases): who to blame if the body ends the step non-finite. An
-// iteration only stamps its contact with a running count (one store, nothing read, so the recorder-off path
-// stays as fast); the body's last contact, the one with the latest stamp, is looked for only when asked.
+// iteration, or each contact of a sweeping method's last visits (contacts_visited), only stamps its contact with
+// a running count (one store, nothing read, so the recorder-off path stays as fast); the body's last contact,
+// the one with the latest stamp, is looked for only when asked.
 class LastTouch final : public Recorder {
 public:
     LastTouch(Recorder& inner, std::span<const Contact> contacts, std::size_t /*body_count*/)
@@ -44,6 +45,10 @@ public:
     void velocity_iteration(const VelocityIteration& iteration) override {
         touched(iteration.contact);
         inner_.velocity_iteration(iteration);
+    }
+    void contacts_visited(std::span<const int> contacts) override {
+        for (const int c : contacts) touched(c);
+        inner_.contacts_visited(contacts);
     }
     void end_phase(Phase phase, const PhaseOutcome& outcome) override { inner_.end_phase(phase, outcome); }
     void end_frame(std::span<const RigidBody> bodies) override { inner_.end_frame(bodies); }

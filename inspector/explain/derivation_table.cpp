@@ -84,8 +84,10 @@ StepTable desired_table(const DesiredDeltaVelocity& d) {
               d.restitution_cutoff_applied ? "applied: c = 0" : "not applied");
     t.row("restitution_used", number(d.restitution_used));
     if (d.velocity_from_acceleration_applied) t.row("velocity_from_acceleration", number(d.velocity_from_acceleration));
-    // Without the chapter-15 refinements the formula is the chapter's own.
-    const bool plain = !d.velocity_from_acceleration_applied && !d.restitution_cutoff_applied;
+    // Baumgarte's term (or soft step's soft push): the separating speed added to push the bodies apart.
+    if (d.position_bias) t.row("position_bias", number(*d.position_bias));
+    // Without the chapter-15 refinements and the bias the formula is the chapter's own.
+    const bool plain = !d.velocity_from_acceleration_applied && !d.restitution_cutoff_applied && !d.position_bias;
     t.row("desired_delta_velocity", number(d.desired_delta_velocity), std::nullopt,
           plain ? "Δv = −(1 + c) v_s" : std::string_view{});
     return t.done();
@@ -199,7 +201,9 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
 
 std::string sweep_text(const SweepPlace& sweep, const ResolverSettings& settings) {
     std::string text;
-    if (settings.velocity_method == VelocityMethod::soft_step && sweep.stage != SolverStage::restitution)
+    // A method that owns the whole step works in sub-steps (restitution comes once, after them).
+    if (method_row(settings.velocity_method).scope == MethodScope::whole_step &&
+        sweep.stage != SolverStage::restitution)
         text = "sub-step " + std::to_string(sweep.substep) + " · ";
     text += std::string(name_of(solver_stage_names, sweep.stage));
     if (sweep.stage == SolverStage::solve || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::push)
@@ -230,11 +234,6 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         velocity.contact_vector("contact_velocity", r->contact_velocity);
         tables.push_back(velocity.done());
         tables.push_back(desired_table(r->desired_delta_velocity));
-        if (r->position_bias) {
-            Table bias("position_bias", "Step 5 · position_bias — speed added to push the bodies apart");
-            bias.row("position_bias", number(*r->position_bias));
-            tables.push_back(bias.done());
-        }
         if (const auto& a = it.accumulated) {
             Table total("accumulated_impulse",
                         "Step 6 · accumulated impulse — the running total, kept within its limits", basis);

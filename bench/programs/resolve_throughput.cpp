@@ -1,10 +1,12 @@
-// Time per resolved contact, with the recorder off and on.
+// Time per resolved contact, with the recorder off and on, and the time the preparation alone takes.
 //
 // Scene: N boxes (1 kg, 1 m cube) spaced apart, each landing on the ground on its four bottom corners
 // (1-3 cm deep, closing at 1 m/s, a little sideways motion), so every contact needs both phases and the
 // four contacts of a box share a body. The book preset resolves one frame; the time of a whole
-// resolve_contacts call is divided by the number of contacts. Each figure is the median of --repeats
-// runs, each run repeating the call until --min-seconds have passed.
+// resolve_contacts call is divided by the number of contacts. The preparation figure times what
+// resolve_contacts does before its phases: the bodies' mass properties and steps 1-5 of every contact
+// (prepare_contacts). Each figure is the median of --repeats runs, each run repeating the call until
+// --min-seconds have passed.
 //
 //   impulse-bench-resolve [--boxes 1,10,100] [--friction 0.5] [--repeats 15] [--min-seconds 0.2] [--csv FILE]
 //
@@ -15,6 +17,7 @@
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
 #include "record/trace_recorder.hpp"
+#include "resolver/prepared_contact.hpp"
 #include "resolver/resolver.hpp"
 
 #include <CLI/CLI.hpp>
@@ -86,8 +89,9 @@ std::string cell(double value) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Time per resolved contact with the recorder off and on (book preset, one frame)",
-                 "impulse-bench-resolve"};
+    CLI::App app{
+        "Time per resolved contact with the recorder off and on, and per prepared contact (book preset, one frame)",
+        "impulse-bench-resolve"};
     std::vector<int> boxes{1, 10, 100};
     double friction = 0.5;
     int repeats = 15;
@@ -118,10 +122,10 @@ int main(int argc, char** argv) {
     std::FILE* table = csv_to_stdout ? stderr : stdout;
 
     const ResolverSettings settings = *preset("book");
-    std::fprintf(table, "%6s %9s %11s %13s %13s %8s\n", "boxes", "contacts", "iterations", "off ns/contact",
-                 "on ns/contact", "on/off");
-    std::string rows = explain::csv_row(
-        {"boxes", "contacts", "iterations", "friction", "off_ns_per_contact", "on_ns_per_contact", "recording_ratio"});
+    std::fprintf(table, "%6s %9s %11s %13s %13s %8s %18s\n", "boxes", "contacts", "iterations", "off ns/contact",
+                 "on ns/contact", "on/off", "prepare ns/contact");
+    std::string rows = explain::csv_row({"boxes", "contacts", "iterations", "friction", "off_ns_per_contact",
+                                         "on_ns_per_contact", "recording_ratio", "prepare_ns_per_contact"});
     for (int count : boxes) {
         const Landing scene = landing_boxes(count, friction);
         std::vector<RigidBody> bodies;
@@ -141,13 +145,21 @@ int main(int argc, char** argv) {
                 resolve_contacts(bodies, scene.contacts, settings, recorder);
             },
             repeats, min_seconds);
+        std::size_t prepared = 0;
+        const double prepare = median_seconds(
+            [&] {
+                const std::vector<MassProperties> mass = mass_properties(scene.bodies);
+                prepared += prepare_contacts(scene.contacts, scene.bodies, mass, settings).size();
+            },
+            repeats, min_seconds);
+        if (prepared == 0) return 1;  // keeps the preparation from being optimised away
         const double contacts = static_cast<double>(scene.contacts.size());
         const int iterations = summary.position.iterations_used + summary.velocity.iterations_used;
-        std::fprintf(table, "%6d %9zu %11d %13.0f %13.0f %8.2f\n", count, scene.contacts.size(), iterations,
-                     off / contacts * 1e9, on / contacts * 1e9, on / off);
-        rows +=
-            explain::csv_row({std::to_string(count), std::to_string(scene.contacts.size()), std::to_string(iterations),
-                              cell(friction), cell(off / contacts * 1e9), cell(on / contacts * 1e9), cell(on / off)});
+        std::fprintf(table, "%6d %9zu %11d %13.0f %13.0f %8.2f %18.1f\n", count, scene.contacts.size(), iterations,
+                     off / contacts * 1e9, on / contacts * 1e9, on / off, prepare / contacts * 1e9);
+        rows += explain::csv_row({std::to_string(count), std::to_string(scene.contacts.size()),
+                                  std::to_string(iterations), cell(friction), cell(off / contacts * 1e9),
+                                  cell(on / contacts * 1e9), cell(on / off), cell(prepare / contacts * 1e9)});
     }
     if (csv_to_stdout) {
         std::cout << rows << std::flush;

@@ -8,21 +8,32 @@ DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double r
                                             const PerBody<BodyMotion>& motion, double duration,
                                             const VelocityRefinements& refinements,
                                             std::optional<double> position_bias) {
+    return desired_delta_velocity(separating_velocity, restitution,
+                                  velocity_from_acceleration(normal, motion, duration, refinements), refinements,
+                                  position_bias);
+}
+
+double velocity_from_acceleration(const Vec3& normal, const PerBody<BodyMotion>& motion, double duration,
+                                  const VelocityRefinements& refinements) {
+    double velocity = 0.0;
+    if (refinements.velocity_from_acceleration) {
+        for (int i = 0; i < 2; ++i)
+            if (motion[i]) velocity += body_sign(i) * (motion[i]->last_frame_acceleration * duration).dot(normal);
+    }
+    return velocity;
+}
+
+DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double restitution,
+                                            double velocity_from_acceleration, const VelocityRefinements& refinements,
+                                            std::optional<double> position_bias) {
     DesiredDeltaVelocity d;
     d.separating_velocity = separating_velocity;
     d.restitution = restitution;
     d.restitution_cutoff = refinements.restitution_cutoff;
     d.restitution_cutoff_applied = std::abs(separating_velocity) < refinements.restitution_cutoff;
     d.restitution_used = d.restitution_cutoff_applied ? 0.0 : restitution;
-
     d.velocity_from_acceleration_applied = refinements.velocity_from_acceleration;
-    d.velocity_from_acceleration = 0.0;
-    if (refinements.velocity_from_acceleration) {
-        for (int i = 0; i < 2; ++i)
-            if (motion[i])
-                d.velocity_from_acceleration +=
-                    body_sign(i) * (motion[i]->last_frame_acceleration * duration).dot(normal);
-    }
+    d.velocity_from_acceleration = velocity_from_acceleration;
     // v_s' = -c v_s  =>  delta v = -v_s - c v_s = -(1 + c) v_s; the velocity gravity added during the
     // last step is not bounced back, so a resting contact asks only to stop, not to leap.
     d.desired_delta_velocity =

@@ -42,4 +42,15 @@ DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double r
                                             const VelocityRefinements& refinements,
                                             std::optional<double> position_bias = std::nullopt);
 
+// (a0 - a1) . n x duration, the normal velocity last frame's acceleration built up; 0 with the refinement off.
+double velocity_from_acceleration(const Vec3& normal, const PerBody<BodyMotion>& motion, double duration,
+                                  const VelocityRefinements& refinements);
+
+// Step 5 with that velocity already known. The bookkeeping re-runs step 5 after every impulse on a body of the
+// contact, and the velocity from acceleration depends only on the motion when the contact was prepared, so it
+// passes the prepared value.
+DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double restitution,
+                                            double velocity_from_acceleration, const VelocityRefinements& refinements,
+                                            std::optional<double> position_bias = std::nullopt);
+
 }  // namespace impulse

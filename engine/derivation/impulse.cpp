@@ -24,16 +24,28 @@ Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_pos
     return basis.contact_to_world.transpose() * world * basis.contact_to_world;
 }
 
+FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
+                                                           const PerBody<MassProperties>& mass) {
+    const Mat3 k = delta_velocity_matrix(basis, relative_position, mass);
+    // Gaussian elimination with complete pivoting (math/full_pivot_lu.hpp): K is singular only when neither
+    // body can translate, and nearly so for long lever arms, where the largest pivot first keeps it accurate.
+    return {k, FullPivotLu3(k)};
+}
+
 FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
                              const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
                              double desired_delta_velocity, double friction, SlidingFriction sliding) {
-    FrictionSolve s;
-    s.delta_velocity_matrix = delta_velocity_matrix(basis, relative_position, mass);
-    s.target_delta_velocity = {desired_delta_velocity, -contact_velocity.y(), -contact_velocity.z()};
+    return friction_solve(factored_delta_velocity_matrix(basis, relative_position, mass), contact_velocity,
+                          desired_delta_velocity, friction, sliding);
+}
 
-    const Eigen::FullPivLU<Mat3> lu(s.delta_velocity_matrix);
-    s.solvable = lu.isInvertible();
-    s.static_impulse = s.solvable ? Vec3(lu.solve(s.target_delta_velocity)) : Vec3::Zero();
+FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& factored, const Vec3& contact_velocity,
+                             double desired_delta_velocity, double friction, SlidingFriction sliding) {
+    FrictionSolve s;
+    s.delta_velocity_matrix = factored.matrix;
+    s.target_delta_velocity = {desired_delta_velocity, -contact_velocity.y(), -contact_velocity.z()};
+    s.solvable = factored.factors.invertible();
+    s.static_impulse = s.solvable ? factored.factors.solve(s.target_delta_velocity) : Vec3::Zero();
     s.tangential_impulse = std::hypot(s.static_impulse.y(), s.static_impulse.z());
     s.cone_limit = friction * s.static_impulse.x();
 
@@ -66,12 +78,22 @@ Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relative_posi
                           const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
                           double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
                           SlidingFriction sliding) {
+    if (friction == 0.0)
+        return calculate_impulse(basis, nullptr, contact_velocity, desired_delta_velocity,
+                                 delta_velocity_per_unit_impulse, friction, sliding);
+    const FactoredDeltaVelocityMatrix k = factored_delta_velocity_matrix(basis, relative_position, mass);
+    return calculate_impulse(basis, &k, contact_velocity, desired_delta_velocity, delta_velocity_per_unit_impulse,
+                             friction, sliding);
+}
+
+Impulse calculate_impulse(const Basis& basis, const FactoredDeltaVelocityMatrix* k, const Vec3& contact_velocity,
+                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
+                          SlidingFriction sliding) {
     Impulse g;
     g.model = ImpulseModel::frictionless;
     g.impulse_contact = frictionless_impulse(desired_delta_velocity, delta_velocity_per_unit_impulse);
     if (friction != 0.0) {
-        g.friction =
-            friction_solve(basis, relative_position, mass, contact_velocity, desired_delta_velocity, friction, sliding);
+        g.friction = friction_solve(*k, contact_velocity, desired_delta_velocity, friction, sliding);
         const FrictionSolve& s = *g.friction;
         if (!s.sliding_normal_response) {
             if (s.solvable) {

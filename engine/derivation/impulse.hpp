@@ -6,6 +6,7 @@
 
 #include "derivation/basis.hpp"
 #include "derivation/velocity_per_unit_impulse.hpp"
+#include "math/full_pivot_lu.hpp"
 #include "math/types.hpp"
 
 #include <optional>
@@ -63,12 +64,31 @@ Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_p
 Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
                            const PerBody<MassProperties>& mass);
 
+// K with its LU factors: everything the friction solve needs of the contact's geometry and masses. Both depend
+// only on what preparation fixed, so a contact resolved again in the same frame can reuse them
+// (PreparedContact keeps them once the first impulse has computed them).
+struct FactoredDeltaVelocityMatrix {
+    Mat3 matrix;           // K
+    FullPivotLu3 factors;  // P K Q = L U
+};
+
+FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
+                                                           const PerBody<MassProperties>& mass);
+
+FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& k, const Vec3& contact_velocity,
+                             double desired_delta_velocity, double friction,
+                             SlidingFriction sliding = SlidingFriction::reference);
 FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
                              const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
                              double desired_delta_velocity, double friction,
                              SlidingFriction sliding = SlidingFriction::reference);
 
-// The whole step: picks the model, returns the impulse in contact and world coordinates.
+// The whole step: picks the model, returns the impulse in contact and world coordinates. `k` is the contact's
+// K with its factors, read only when the contact has friction (null will do for a frictionless one).
+Impulse calculate_impulse(const Basis& basis, const FactoredDeltaVelocityMatrix* k, const Vec3& contact_velocity,
+                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
+                          SlidingFriction sliding = SlidingFriction::reference);
+// The same, computing K and its factors.
 Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relative_position,
                           const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
                           double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,

@@ -102,19 +102,16 @@ AngularLimit angular_limit(MoveSplit& moves, const AngularLimitSettings& setting
 }
 
 PositionChange position_change(const MoveSplit& moves, const Vec3& normal, const VelocityPerUnitImpulse& chain) {
-    PositionChange change;
-    for (int i = 0; i < 2; ++i) {
-        if (!moves.linear_move[i]) continue;
-        change.linear_change[i] = normal * *moves.linear_move[i];
-        const double angular_move = *moves.angular_move[i];
-        const UnitImpulseResponse& response = *chain.bodies[i];
-        // Zero when there is nothing to turn (also guards the division for a body that cannot rotate).
-        change.angular_change[i] =
-            angular_move == 0.0
-                ? Vec3::Zero()
-                : Vec3(response.rotation_per_unit_impulse * (angular_move / response.angular_component));
-    }
-    return change;
+    const std::array<bool, 2> bodies = present(moves.linear_move);
+    return {.linear_change = per_body(bodies, [&](int i) -> Vec3 { return normal * *moves.linear_move[i]; }),
+            .angular_change = per_body(bodies, [&](int i) -> Vec3 {
+                const double angular_move = *moves.angular_move[i];
+                const UnitImpulseResponse& response = *chain.bodies[i];
+                // Zero when there is nothing to turn (also guards the division for a body that cannot rotate).
+                return angular_move == 0.0
+                           ? Vec3::Zero()
+                           : Vec3(response.rotation_per_unit_impulse * (angular_move / response.angular_component));
+            })};
 }
 
 }  // namespace impulse

@@ -15,11 +15,12 @@ UnitImpulseResponse unit_impulse_response(const Vec3& normal, const Vec3& relati
 
 VelocityPerUnitImpulse velocity_per_unit_impulse(const Vec3& normal, const PerBody<Vec3>& relative_position,
                                                  const PerBody<MassProperties>& mass) {
-    VelocityPerUnitImpulse chain;
-    chain.delta_velocity_per_unit_impulse = 0.0;
+    VelocityPerUnitImpulse chain{
+        .bodies = per_body(present(relative_position),
+                           [&](int i) { return unit_impulse_response(normal, *relative_position[i], *mass[i]); }),
+        .delta_velocity_per_unit_impulse = 0.0};
     for (int i = 0; i < 2; ++i) {
-        if (!relative_position[i]) continue;
-        chain.bodies[i] = unit_impulse_response(normal, *relative_position[i], *mass[i]);
+        if (!chain.bodies[i]) continue;
         // Summed in the reference engine's order (angular then linear, body 0 then body 1) so the last bit
         // of d matches it.
         chain.delta_velocity_per_unit_impulse += chain.bodies[i]->angular_component;

@@ -20,6 +20,21 @@ using Quat = Eigen::Quaterniond;  // unit, rotating body space into world space;
 template <typename T>
 using PerBody = std::array<std::optional<T>, 2>;
 
+// The value per body that `make(i)` computes for each body that `present` says is there, empty for the others,
+// built in one go. (An empty std::optional clears all of its storage, so a PerBody declared empty and filled in
+// afterwards would clear every value's bytes first; for the larger values that is a visible cost.)
+template <typename Make>
+auto per_body(const std::array<bool, 2>& present, Make make) -> PerBody<decltype(make(0))> {
+    using T = decltype(make(0));
+    return {present[0] ? std::optional<T>(make(0)) : std::nullopt,
+            present[1] ? std::optional<T>(make(1)) : std::nullopt};
+}
+
+template <typename T>
+std::array<bool, 2> present(const PerBody<T>& values) {
+    return {values[0].has_value(), values[1].has_value()};
+}
+
 // Exact equality of the stored coefficients (Eigen defines none for quaternions), so plain structs holding
 // an orientation can default their comparison.
 inline bool operator==(const Quat& a, const Quat& b) {

@@ -12,8 +12,8 @@ VelocityResolution resolve_velocity(const PreparedContact& contact, SlidingFrict
     VelocityResolution r;
     r.contact_velocity = contact.contact_velocity;
     r.desired_delta_velocity = contact.desired_delta_velocity;
-    r.impulse = calculate_impulse(d.basis, d.relative_position, contact.mass, contact.contact_velocity,
-                                  contact.desired_delta_velocity.desired_delta_velocity,
+    r.impulse = calculate_impulse(d.basis, d.friction != 0.0 ? &delta_velocity_matrix_of(contact) : nullptr,
+                                  contact.contact_velocity, contact.desired_delta_velocity.desired_delta_velocity,
                                   d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, d.friction, sliding);
     r.velocity_change = velocity_change(r.impulse.impulse_world, d.relative_position, contact.mass);
     return r;

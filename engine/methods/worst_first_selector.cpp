@@ -1,5 +1,7 @@
 #include "methods/worst_first_selector.hpp"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -16,103 +18,118 @@ double ordering_key(double value) {
 
 }  // namespace
 
-// --- ContactHeap ------------------------------------------------------------------------------------------
+// --- ContactTournament ------------------------------------------------------------------------------------
 
-void ContactHeap::clear(std::size_t contact_count) {
-    heap_.clear();
-    heap_.reserve(contact_count);
-    slot_.assign(contact_count, -1);
-    key_.assign(contact_count, 0.0);
+void ContactTournament::clear(std::size_t contact_count) {
+    leaves_ = 1;
+    while (leaves_ < contact_count) leaves_ *= 2;
+    tree_.assign(2 * leaves_, Entry{-std::numeric_limits<double>::infinity(), nobody});
 }
 
-bool ContactHeap::before(int a, int b) const {
-    const double ka = key_[static_cast<std::size_t>(a)], kb = key_[static_cast<std::size_t>(b)];
-    return ka > kb || (ka == kb && a < b);
+void ContactTournament::fill(std::span<const double> values, std::span<const char> in_play) {
+    clear(in_play.size());
+    for (std::size_t i = 0; i < in_play.size(); ++i)
+        if (in_play[i]) tree_[leaves_ + i] = {ordering_key(values[i]), static_cast<int>(i)};
+    for (std::size_t node = leaves_ - 1; node >= 1; --node) tree_[node] = match(node);
 }
 
-void ContactHeap::place(std::size_t at, int contact) {
-    heap_[at] = contact;
-    slot_[static_cast<std::size_t>(contact)] = static_cast<int>(at);
-}
-
-void ContactHeap::sift_up(std::size_t at) {
-    const int contact = heap_[at];
-    while (at > 0) {
-        const std::size_t parent = (at - 1) / 2;
-        if (!before(contact, heap_[parent])) break;
-        place(at, heap_[parent]);
-        at = parent;
+void ContactTournament::replay(std::size_t at) {
+    // Up the path, the winner so far meets the winner of the sibling subtree. Every sibling's place is known
+    // from the node's, so their loads do not wait for one another; only the winner is carried up.
+    double value = tree_[at].value;
+    int winner = tree_[at].contact;
+    while (at > 1) {
+        const Entry& other = tree_[at ^ 1];
+        // The larger value wins; on a tie the lower index (an empty side has none: `nobody` is the largest int).
+        const bool other_wins = (other.value > value) | ((other.value == value) & (other.contact < winner));
+        value = other_wins ? other.value : value;
+        winner = other_wins ? other.contact : winner;
+        at /= 2;
+        if (tree_[at].contact == winner && tree_[at].value == value) return;  // as before: nothing above changes
+        tree_[at] = {value, winner};
     }
-    place(at, contact);
 }
 
-void ContactHeap::sift_down(std::size_t at) {
-    const int contact = heap_[at];
-    const std::size_t n = heap_.size();
-    for (;;) {
-        std::size_t child = 2 * at + 1;
-        if (child >= n) break;
-        if (child + 1 < n && before(heap_[child + 1], heap_[child])) ++child;
-        if (!before(heap_[child], contact)) break;
-        place(at, heap_[child]);
-        at = child;
+void ContactTournament::set_leaf(int contact, Entry entry) {
+    const std::size_t at = leaves_ + static_cast<std::size_t>(contact);
+    tree_[at] = entry;
+    replay(at);
+}
+
+void ContactTournament::insert(int contact, double value) {
+    set_leaf(contact, {ordering_key(value), contact});
+}
+
+void ContactTournament::change(int contact, double value) {
+    if (contains(contact)) set_leaf(contact, {ordering_key(value), contact});
+}
+
+void ContactTournament::change(std::span<const int> contacts, std::span<const double> values) {
+    // The new values first; then level by level, each match with a changed player is played once (the nodes
+    // ascend, so two children of one match come one after the other), and a match whose result is as before
+    // drops out. Exactly the matches that can change are played. Once one path is left it is followed up
+    // alone, as set_leaf does.
+    changed_.clear();
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        if (!contains(contacts[k])) continue;
+        const std::size_t at = leaves_ + static_cast<std::size_t>(contacts[k]);
+        tree_[at].value = ordering_key(values[k]);
+        changed_.push_back(at);
     }
-    place(at, contact);
+    while (changed_.size() > 1) {
+        std::size_t kept = 0, played = 0;
+        for (const std::size_t node : changed_) {
+            const std::size_t parent = node / 2;
+            if (parent == played) continue;  // the sibling's turn played this match already
+            played = parent;
+            const Entry winner = match(parent);
+            if (winner.contact == tree_[parent].contact && winner.value == tree_[parent].value) continue;
+            tree_[parent] = winner;
+            if (parent > 1) changed_[kept++] = parent;
+        }
+        changed_.resize(kept);
+    }
+    if (changed_.size() == 1) replay(changed_.front());
 }
 
-void ContactHeap::insert(int contact, double value) {
-    key_[static_cast<std::size_t>(contact)] = ordering_key(value);
-    heap_.push_back(contact);
-    slot_[static_cast<std::size_t>(contact)] = static_cast<int>(heap_.size() - 1);
-    sift_up(heap_.size() - 1);
+void ContactTournament::remove(int contact) {
+    if (contains(contact)) set_leaf(contact, {-std::numeric_limits<double>::infinity(), nobody});
 }
 
-void ContactHeap::change(int contact, double value) {
-    const int at = slot_[static_cast<std::size_t>(contact)];
-    if (at < 0) return;
-    const double old_key = key_[static_cast<std::size_t>(contact)];
-    key_[static_cast<std::size_t>(contact)] = ordering_key(value);
-    if (key_[static_cast<std::size_t>(contact)] > old_key)
-        sift_up(static_cast<std::size_t>(at));
-    else
-        sift_down(static_cast<std::size_t>(at));
-}
-
-void ContactHeap::remove(int contact) {
-    const int at = slot_[static_cast<std::size_t>(contact)];
-    if (at < 0) return;
-    slot_[static_cast<std::size_t>(contact)] = -1;
-    const int last = heap_.back();
-    heap_.pop_back();
-    if (last == contact) return;
-    // The last contact fills the hole and moves whichever way its key sends it.
-    place(static_cast<std::size_t>(at), last);
-    sift_up(static_cast<std::size_t>(at));
-    sift_down(static_cast<std::size_t>(slot_[static_cast<std::size_t>(last)]));
-}
-
-std::optional<int> ContactHeap::top() const {
-    if (heap_.empty()) return std::nullopt;
-    return heap_.front();
+std::optional<int> ContactTournament::top() const {
+    const int winner = tree_[1].contact;
+    if (winner == nobody) return std::nullopt;
+    return winner;
 }
 
 // --- ContactsByBody ---------------------------------------------------------------------------------------
 
 ContactsByBody::ContactsByBody(std::span<const PreparedContact> contacts, std::size_t body_count)
-    : contacts_of_(body_count) {
+    : first_(body_count + 1, 0) {
+    // Count each body's contacts, turn the counts into starts, then place the contacts in index order.
+    for (const PreparedContact& c : contacts)
+        for (const int body : c.derivation.bodies)
+            if (body != world_body) ++first_[static_cast<std::size_t>(body) + 1];
+    for (std::size_t b = 0; b < body_count; ++b) first_[b + 1] += first_[b];
+    contacts_.resize(static_cast<std::size_t>(first_[body_count]));
+    std::vector<int> next(first_.begin(), first_.end() - 1);
     for (std::size_t i = 0; i < contacts.size(); ++i)
         for (const int body : contacts[i].derivation.bodies)
-            if (body != world_body) contacts_of_[static_cast<std::size_t>(body)].push_back(static_cast<int>(i));
+            if (body != world_body)
+                contacts_[static_cast<std::size_t>(next[static_cast<std::size_t>(body)]++)] = static_cast<int>(i);
+}
+
+std::span<const int> ContactsByBody::contacts_of(int body) const {
+    if (body == world_body) return {};
+    const auto b = static_cast<std::size_t>(body);
+    return std::span<const int>(contacts_).subspan(static_cast<std::size_t>(first_[b]),
+                                                   static_cast<std::size_t>(first_[b + 1] - first_[b]));
 }
 
 void ContactsByBody::sharing(const std::array<int, 2>& moved, std::vector<int>& out) const {
     out.clear();
-    static const std::vector<int> none;
-    const auto list = [this](int body) -> const std::vector<int>& {
-        return body == world_body ? none : contacts_of_[static_cast<std::size_t>(body)];
-    };
-    const std::vector<int>& a = list(moved[0]);
-    const std::vector<int>& b = moved[1] == moved[0] ? none : list(moved[1]);
+    const std::span<const int> a = contacts_of(moved[0]);
+    const std::span<const int> b = moved[1] == moved[0] ? std::span<const int>() : contacts_of(moved[1]);
     // Both lists ascend: merge them, a contact on both bodies once.
     std::size_t i = 0, j = 0;
     while (i < a.size() || j < b.size()) {
@@ -146,15 +163,15 @@ void WorstFirstSelector::restart() {
         aside_.assign(contacts_.size(), 0);
         return;
     }
-    heap_.clear(contacts_.size());
-    for (std::size_t i = 0; i < contacts_.size(); ++i)
-        if (eligible_[i]) heap_.insert(static_cast<int>(i), value_(contacts_[i]));
+    values_.resize(contacts_.size());
+    for (std::size_t i = 0; i < contacts_.size(); ++i) values_[i] = eligible_[i] ? value_(contacts_[i]) : 0.0;
+    tournament_.fill(values_, eligible_);
 }
 
 std::optional<int> WorstFirstSelector::worst(double epsilon) const {
     if (search_ == WorstFirstSearch::priority_queue) {
-        const std::optional<int> top = heap_.top();
-        if (top && heap_.value(*top) > epsilon) return top;
+        const std::optional<int> top = tournament_.top();
+        if (top && tournament_.top_value() > epsilon) return top;
         return std::nullopt;
     }
     // The reference engine's loop: every contact, every iteration.
@@ -179,14 +196,17 @@ std::span<const int> WorstFirstSelector::sharing(const std::array<int, 2>& moved
 
 void WorstFirstSelector::values_changed(std::span<const int> contacts) {
     if (search_ == WorstFirstSearch::full_scan) return;
-    for (const int i : contacts) heap_.change(i, value_(contacts_[static_cast<std::size_t>(i)]));
+    values_.resize(contacts.size());
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+        values_[k] = value_(contacts_[static_cast<std::size_t>(contacts[k])]);
+    tournament_.change(contacts, values_);
 }
 
 void WorstFirstSelector::set_aside(int contact) {
     if (search_ == WorstFirstSearch::full_scan)
         aside_[static_cast<std::size_t>(contact)] = 1;
     else
-        heap_.remove(contact);
+        tournament_.remove(contact);
 }
 
 }  // namespace impulse

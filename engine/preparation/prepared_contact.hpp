@@ -8,6 +8,7 @@
 #include "derivation/basis.hpp"
 #include "derivation/contact_velocity.hpp"
 #include "derivation/desired_delta_velocity.hpp"
+#include "derivation/impulse.hpp"
 #include "derivation/velocity_per_unit_impulse.hpp"
 #include "settings/settings.hpp"
 
@@ -38,14 +39,28 @@ struct ContactPreparation {
     bool operator==(const ContactPreparation&) const = default;
 };
 
+// A value computed on first use and kept beside what it was computed from. Not part of the value of the struct
+// holding it, so comparisons ignore it.
+template <typename T>
+struct Cached {
+    std::optional<T> value;
+
+    // Empty, not defaulted: then a prepared contact built with an empty cache is not cleared byte by byte first.
+    Cached() {}
+    bool operator==(const Cached&) const { return true; }
+};
+
 struct PreparedContact {
-    ContactPreparation derivation;
-    PerBody<MassProperties> mass;  // the bodies' inverse mass and world inverse inertia when prepared
-    PerBody<BodyMotion> motion;    // the bodies' motion when prepared (its accelerations feed step 5)
     // Bookkeeping, updated by the linearised formulas whenever a body of this contact moves or changes speed.
+    // First, next to the derivation's bodies, basis and relative positions, which every update reads too.
     double penetration;
     Vec3 contact_velocity;
     DesiredDeltaVelocity desired_delta_velocity;
+    ContactPreparation derivation;
+    PerBody<MassProperties> mass;  // the bodies' inverse mass and world inverse inertia when prepared
+    // K and its factors for the book's friction impulse (derivation/impulse.hpp): computed by the first impulse on
+    // this contact and reused by the later ones, since they depend only on what preparation fixed.
+    mutable Cached<FactoredDeltaVelocityMatrix> delta_velocity_matrix;
 
     bool operator==(const PreparedContact&) const = default;
 };
@@ -55,6 +70,9 @@ struct PreparedContact {
 inline double desired_of(const PreparedContact& c) {
     return c.desired_delta_velocity.desired_delta_velocity;
 }
+
+// The contact's K and its factors, computed on first use and then kept in the contact.
+const FactoredDeltaVelocityMatrix& delta_velocity_matrix_of(const PreparedContact& contact);
 
 // Each body's mass properties once per frame, with the world inverse inertia R I^-1 R^T.
 std::vector<MassProperties> mass_properties(std::span<const RigidBody> bodies);

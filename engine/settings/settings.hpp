@@ -39,7 +39,8 @@ enum class VelocityMethod {
 // How worst-first finds its next contact. Both choose the same contacts in the same order and give identical
 // results; full_scan is the reference engine's loop over every contact per iteration (cost ~ contacts^2).
 enum class WorstFirstSearch {
-    priority_queue,  // a max-heap of contacts; after each resolution only the contacts sharing a body change
+    priority_queue,  // a tournament tree of contacts; after each resolution only the contacts sharing a body
+                     // replay their matches
     full_scan,       // the book's scan of every contact per iteration
 };
 

@@ -23,14 +23,15 @@ struct NonFiniteBody {
     bool operator==(const NonFiniteBody&) const = default;
 };
 
-// Passes every report on to the caller's recorder and remembers, per body, the last contact an iteration
-// resolved (in resolution order, both phases): who to blame if the body ends the step non-finite. One store
-// per iteration, or per contact of a sweeping method's last visits (contacts_visited), so the recorder-off
-// path stays as fast.
+// Passes every report on to the caller's recorder and remembers the last contact an iteration resolved that
+// touched each body (in resolution order, both phases): who to blame if the body ends the step non-finite. An
+// iteration, or each contact of a sweeping method's last visits (contacts_visited), only stamps its contact with
+// a running count (one store, nothing read, so the recorder-off path stays as fast); the body's last contact,
+// the one with the latest stamp, is looked for only when asked.
 class LastTouch final : public Recorder {
 public:
-    LastTouch(Recorder& inner, std::span<const Contact> contacts, std::size_t body_count)
-        : inner_(inner), contacts_(contacts), last_(body_count, -1) {}
+    LastTouch(Recorder& inner, std::span<const Contact> contacts, std::size_t /*body_count*/)
+        : inner_(inner), contacts_(contacts), stamp_(contacts.size(), 0) {}
 
     bool wants_updates() const override { return inner_.wants_updates(); }
     void begin_frame(int frame, std::span<const RigidBody> bodies, std::span<const MassProperties> mass) override {
@@ -54,21 +55,26 @@ public:
 
     // The last contact that touched `body`, if any did, and that contact's bodies.
     std::optional<int> last_contact(int body) const {
-        const int c = last_[static_cast<std::size_t>(body)];
-        return c < 0 ? std::nullopt : std::optional<int>(c);
+        std::optional<int> last;
+        for (std::size_t c = 0; c < contacts_.size(); ++c) {
+            const std::array<int, 2>& touching = contacts_[c].bodies;
+            if (stamp_[c] == 0 || (touching[0] != body && touching[1] != body)) continue;
+            if (!last || stamp_[c] > stamp_[static_cast<std::size_t>(*last)]) last = static_cast<int>(c);
+        }
+        return last;
     }
     std::array<int, 2> bodies_of(int contact) const { return contacts_[static_cast<std::size_t>(contact)].bodies; }
 
 private:
     void touched(int contact) {
         if (contact < 0 || contact >= static_cast<int>(contacts_.size())) return;
-        for (int b : contacts_[static_cast<std::size_t>(contact)].bodies)
-            if (b != world_body) last_[static_cast<std::size_t>(b)] = contact;
+        stamp_[static_cast<std::size_t>(contact)] = ++touches_;
     }
 
     Recorder& inner_;
     std::span<const Contact> contacts_;
-    std::vector<int> last_;
+    std::vector<long> stamp_;  // per contact: when an iteration last resolved it (1, 2, ...), 0 = never
+    long touches_ = 0;
 };
 
 // The first body (in body order) whose state is not finite, if any, with no contact to blame.

@@ -21,7 +21,7 @@ sed -n 2p "$work/out/world.csv" | grep -q '^"a, ""quoted"" scene.json",' || fail
 grep -q "^<stdin>" "$work/stderr" || fail "the table did not go to stderr"
 
 "$resolve" --boxes 1 --repeats 1 --min-seconds 0.001 --csv "$work/out/resolve.csv" > /dev/null || fail "impulse-bench-resolve failed"
-[ "$(head -n 1 "$work/out/resolve.csv")" = "boxes,contacts,iterations,friction,off_ns_per_contact,on_ns_per_contact,recording_ratio" ] ||
+[ "$(head -n 1 "$work/out/resolve.csv")" = "boxes,contacts,iterations,friction,off_ns_per_contact,on_ns_per_contact,recording_ratio,prepare_ns_per_contact" ] ||
   fail "impulse-bench-resolve's header: $(head -n 1 "$work/out/resolve.csv")"
 [ "$(wc -l < "$work/out/resolve.csv")" = 2 ] || fail "impulse-bench-resolve wrote $(wc -l < "$work/out/resolve.csv") lines"
 

@@ -192,3 +192,37 @@ TEST_CASE("a trace of a run records why each contact exists and reads back equal
     }
     CHECK(io::read_trace_text(io::format_json(io::trace_json(trace))) == trace);
 }
+
+TEST_CASE("the contact blamed for a body is the last one resolved on it, whichever phase") {
+    // Contacts: 0 between bodies 0 and 1, 1 between body 1 and the world, 2 between body 2 and the world.
+    // Resolved in the order 1 (position), 0 (position), 2 (velocity), 1 (velocity): body 0 was last touched
+    // by contact 0, body 1 by contact 1 (its second visit), body 2 by contact 2; body 3 by none.
+    std::vector<Contact> contacts(3);
+    contacts[0].bodies = {0, 1};
+    contacts[1].bodies = {1, world_body};
+    contacts[2].bodies = {2, world_body};
+    Recorder nobody;
+    LastTouch touch(nobody, contacts, 4);
+    const auto position = [](int contact) {
+        return PositionIteration{0, contact, 0.0, 0.0, std::nullopt, std::nullopt, {}};
+    };
+    const auto velocity = [](int contact) {
+        return VelocityIteration{.iteration = 0,
+                                 .contact = contact,
+                                 .desired_delta_velocity = 0.0,
+                                 .epsilon = 0.0,
+                                 .sweep = {},
+                                 .accumulated = {},
+                                 .resolution = {},
+                                 .updates = {}};
+    };
+    touch.position_iteration(position(1));
+    touch.position_iteration(position(0));
+    touch.velocity_iteration(velocity(2));
+    touch.velocity_iteration(velocity(1));
+    CHECK(touch.last_contact(0) == 0);
+    CHECK(touch.last_contact(1) == 1);
+    CHECK(touch.last_contact(2) == 2);
+    CHECK_FALSE(touch.last_contact(3).has_value());
+    CHECK(touch.bodies_of(0) == std::array<int, 2>{0, 1});
+}

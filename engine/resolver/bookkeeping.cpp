@@ -1,6 +1,5 @@
 #include "resolver/bookkeeping.hpp"
 
-
 namespace impulse {
 
 namespace {

@@ -411,8 +411,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         if (app.got_subcommand("lesson")) return lesson_command(lesson, out, err);
         if (app.got_subcommand("worksheet")) return worksheet_command(worksheet, out, err);
         if (app.got_subcommand("diff")) return diff_command(diff, out, err);
-        if (app.got_subcommand("bench"))
-            return bench_command(bench, out, err, err_is_terminal ? &err : nullptr);
+        if (app.got_subcommand("bench")) return bench_command(bench, out, err, err_is_terminal ? &err : nullptr);
         if (app.got_subcommand("completion")) {
             out << bash_completion(app, catalog);
             return exit_ok;

@@ -18,7 +18,7 @@ struct ResolveOptions {
     std::optional<std::string> preset;
     std::vector<std::string> settings;  // --set name=value, in order
     std::optional<std::string> trace_file;
-    std::vector<std::string> record;  // --record frames=A..B / contacts=I,J
+    std::vector<std::string> record;     // --record frames=A..B / contacts=I,J
     std::optional<double> max_trace_mb;  // default inspect::default_max_trace_mb
     bool explain = false;
 };
@@ -108,9 +108,9 @@ struct BenchOptions {
     std::optional<std::string> iterations;  // comma-separated counts; default 1,2,4,8,16,32
     int repeats = 3;                        // timed windows per configuration
     std::string out = "bench-results";
-    std::optional<int> frames;              // overrides every scene's simulated frames
-    std::optional<std::string> scene_dir;   // default: the repository's scenes/
-    bool scaling = false;                   // instead: time per resolved contact on grid_10..grid_1000
+    std::optional<int> frames;             // overrides every scene's simulated frames
+    std::optional<std::string> scene_dir;  // default: the repository's scenes/
+    bool scaling = false;                  // instead: time per resolved contact on grid_10..grid_1000
 };
 // `progress` is where a progress bar may go (a terminal), or null for none.
 int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress);

@@ -59,7 +59,7 @@ struct LessonOptions {
     std::optional<int> number;  // none: list the lessons
     bool headless = false;
     std::optional<std::string> out;             // folder for the headless lesson's trace and screenshots
-    std::optional<std::string> lessons_folder;  // default: the repository's lessons/
+    std::optional<std::string> lessons_folder;  // default: the data folder's lessons/ (cli/data_folder.hpp)
     std::optional<std::string> size;
     std::optional<std::string> script;      // as inspect's: actions, e.g. "lesson step 3", then the window stays
     std::optional<std::string> screenshot;  // as inspect's: a PNG at the end, then the window closes
@@ -109,7 +109,7 @@ struct BenchOptions {
     int repeats = 3;                        // timed windows per configuration
     std::string out = "bench-results";
     std::optional<int> frames;             // overrides every scene's simulated frames
-    std::optional<std::string> scene_dir;  // default: the repository's scenes/
+    std::optional<std::string> scene_dir;  // default: the data folder's scenes/ (cli/data_folder.hpp)
     bool scaling = false;                  // instead: time per resolved contact on grid_10..grid_1000
 };
 // `progress` is where a progress bar may go (a terminal), or null for none.

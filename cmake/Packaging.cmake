@@ -41,4 +41,8 @@ set(CPACK_DEBIAN_DEVELOPMENT_DESCRIPTION
  the world and the recorder) and its formats (impulse::formats: scene, case and trace JSON), with a CMake
  package: find_package(impulse-lab).")
 
+# `--target package_source`: the source tree as a tarball, without build folders and git's files.
+set(CPACK_SOURCE_GENERATOR TXZ)
+set(CPACK_SOURCE_IGNORE_FILES "/build/" "/\\.git" "/\\.cache/")
+
 include(CPack)

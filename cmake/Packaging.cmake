@@ -25,21 +25,23 @@ set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME impulse-lab)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_RECOMMENDS "fonts-dejavu-core")
 set(CPACK_DEBIAN_RUNTIME_PACKAGE_SUGGESTS "bash-completion")
+# Rendering (the window, and headless PNGs through SDL's offscreen driver) loads EGL and Mesa at run time, which
+# dpkg-shlibdeps cannot see.
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS "libegl1, libgl1-mesa-dri")
+# The synopsis is CPACK_PACKAGE_DESCRIPTION_SUMMARY; these are the lines under it.
 set(CPACK_DEBIAN_RUNTIME_DESCRIPTION
-    "Step-through debugger for rigid-body collision resolution
- impulse-lab resolves contacts the way chapter 14 of Millington's Game Physics Engine Development does, and
- other ways (PGS, split impulse, soft step), and shows every intermediate value of every contact beside its
- formula and equation. With a course of thirteen lessons, shipped scenes and cases, and coursework tools.")
+    "impulse-lab resolves contacts the way chapter 14 of Millington's Game Physics Engine Development does, and
+other ways (PGS, split impulse, soft step), and shows every intermediate value of every contact beside its
+formula and equation. With a course of thirteen lessons, shipped scenes and cases, and coursework tools.")
 
 # The libraries are static: a consumer compiles against the headers of Eigen and nlohmann-json.
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME impulse-lab-dev)
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS "libeigen3-dev (>= 3.4), nlohmann-json3-dev (>= 3.11)")
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_DEVELOPMENT_DESCRIPTION
-    "Impulse Lab's contact resolver and file formats (static libraries, headers)
- The engine of impulse-lab (impulse::engine: bodies, contacts, the chapter's derivation steps, the methods,
- the world and the recorder) and its formats (impulse::formats: scene, case and trace JSON), with a CMake
- package: find_package(impulse-lab).")
+    "The engine of impulse-lab as static libraries with headers: impulse::engine (bodies, contacts, the
+chapter's derivation steps, the methods, the world and the recorder) and impulse::formats (scene, case and
+trace JSON), with a CMake package: find_package(impulse-lab).")
 
 # `--target package_source`: the source tree as a tarball, without build folders and git's files.
 set(CPACK_SOURCE_GENERATOR TXZ)

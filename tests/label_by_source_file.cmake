@@ -1,0 +1,38 @@
+# Included by CTest when it reads this folder's tests, after doctest's discovered list of impulse_tests: labels each
+# test by the source file doctest knows it from, `cli` for tests/cli/, `fuzz` for the replayed fuzz inputs, `unit`
+# for the rest. (CTest adds labels rather than replacing them, so doctest's discovery gives none.) `executable` is
+# impulse_tests.
+if(NOT EXISTS "${executable}")
+  return()
+endif()
+function(list_tests out)
+  execute_process(COMMAND "${executable}" --list-test-cases --no-version ${ARGN} OUTPUT_VARIABLE listing
+                  RESULT_VARIABLE result)
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "${executable} --list-test-cases failed (${result})")
+  endif()
+  string(REPLACE "\n" ";" lines "${listing}")
+  set(names)
+  foreach(name IN LISTS lines)
+    if(NOT name STREQUAL "" AND NOT name MATCHES "^===+$" AND NOT name MATCHES "^\\[doctest\\] ")
+      list(APPEND names "${name}")
+    endif()
+  endforeach()
+  set(${out} "${names}" PARENT_SCOPE)
+endfunction()
+
+list_tests(cli_tests "--source-file=*/tests/cli/*")
+list_tests(fuzz_tests "--source-file=*/tests/io/test_fuzz_regressions.cpp")
+list_tests(all_tests)
+# (list(FIND), not if(IN_LIST): CTest reads this file under CMake's old policies.)
+foreach(name IN LISTS all_tests)
+  list(FIND cli_tests "${name}" in_cli)
+  list(FIND fuzz_tests "${name}" in_fuzz)
+  if(NOT in_cli EQUAL -1)
+    set_tests_properties("${name}" PROPERTIES LABELS cli)
+  elseif(NOT in_fuzz EQUAL -1)
+    set_tests_properties("${name}" PROPERTIES LABELS fuzz)
+  else()
+    set_tests_properties("${name}" PROPERTIES LABELS unit)
+  endif()
+endforeach()

@@ -8,6 +8,7 @@
 #include "bench/bench_runs.hpp"
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
+#include "cli/data_folder.hpp"
 #include "model/input_files.hpp"
 #include "cli/progress.hpp"
 #include "formats/atomic_file.hpp"
@@ -72,8 +73,16 @@ bench::Provenance provenance() {
     p.flags = IMPULSE_CXX_FLAGS;
     p.flags.erase(0, p.flags.find_first_not_of(' '));  // CMAKE_CXX_FLAGS is often empty
     p.build_type = IMPULSE_BUILD_TYPE;
-    // The commit of the source tree the program was built from, asked at run time (the build may be older).
-    p.commit = first_line_of("git -C '" IMPULSE_SOURCE_DIR "' rev-parse --short HEAD 2>/dev/null");
+    // The commit of the checkout the program's data comes from when it runs from a build folder (asked at run
+    // time: the build may be older); an installed program has no checkout, and says so.
+    try {
+        std::error_code error;
+        const fs::path checkout = shipped_scenes_folder().parent_path();
+        if (fs::exists(checkout / ".git", error) && checkout.string().find('\'') == std::string::npos)
+            p.commit = first_line_of(("git -C '" + checkout.string() + "' rev-parse --short HEAD 2>/dev/null").c_str());
+    } catch (const io::InputError&) {
+        // No data folder (--scene-dir named the scenes): no checkout to ask.
+    }
     if (p.commit.empty()) p.commit = "unknown";
     const std::time_t now = std::time(nullptr);
     char date[32];
@@ -83,7 +92,8 @@ bench::Provenance provenance() {
 }
 
 std::string scene_path(const BenchOptions& options, const std::string& name) {
-    return (fs::path(options.scene_dir.value_or(IMPULSE_SCENES_DIR)) / (name + ".json")).string();
+    const fs::path folder = options.scene_dir ? fs::path(*options.scene_dir) : shipped_scenes_folder();
+    return (folder / (name + ".json")).string();
 }
 
 std::string fixed(const char* pattern, double value) {

@@ -149,7 +149,7 @@ void add_lesson(CLI::App& app, LessonOptions& o, FlagCatalog& c) {
                      "from, it prints the lesson with the answers)");
     folder(lesson->add_option("--out", o.out, "Folder for the headless lesson's files (default lesson-NN)"), c);
     folder(lesson->add_option("--lessons", o.lessons_folder,
-                              "Folder of lesson files (default: the repository's lessons/)"),
+                              "Folder of lesson files (default: the installed course, share/impulse-lab/lessons)"),
            c);
     lesson->add_option("--size", o.size, "Window or image size WxH in pixels (default 1280x800)")->type_name("WxH");
     input_file(
@@ -240,9 +240,9 @@ void add_bench(CLI::App& app, BenchOptions& o, FlagCatalog& c) {
     whole_number(
         bench->add_option("--frames", o.frames, "Simulate this many frames of every scene instead of its own duration"),
         c, 1, 100000);
-    folder(
-        bench->add_option("--scene-dir", o.scene_dir, "Folder of the scene files (default: the repository's scenes/)"),
-        c);
+    folder(bench->add_option("--scene-dir", o.scene_dir,
+                             "Folder of the scene files (default: the installed scenes, share/impulse-lab/scenes)"),
+           c);
     bench->add_flag("--scaling", o.scaling,
                     "Instead: time per resolved contact of the book preset on grid_10, grid_100, grid_1000 with "
                     "worst_first_search priority_queue and full_scan; prints it and writes scaling.csv");

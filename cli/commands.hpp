@@ -19,7 +19,7 @@ struct ResolveOptions {
     std::optional<std::string> preset;
     std::vector<std::string> settings;  // --set name=value, in order
     std::optional<std::string> trace_file;
-    std::vector<std::string> record;  // --record frames=A..B / contacts=I,J
+    std::vector<std::string> record;     // --record frames=A..B / contacts=I,J
     std::optional<double> max_trace_mb;  // default inspect::default_max_trace_mb
     bool explain = false;
 };
@@ -61,8 +61,8 @@ struct LessonOptions {
     bool headless = false;
     bool text = false;                 // in the terminal: interactive when `terminal` is given, else annotated
     std::istream* terminal = nullptr;  // standard input when it is a terminal (the lesson may then ask and wait)
-    std::optional<std::string> out;             // folder for the headless lesson's trace and screenshots
-    std::optional<std::string> lessons_folder;  // default: the repository's lessons/
+    std::optional<std::string> out;    // folder for the headless lesson's trace and screenshots
+    std::optional<std::string> lessons_folder;  // default: the data folder's lessons/ (cli/data_folder.hpp)
     std::optional<std::string> size;
     std::optional<std::string> script;      // as inspect's: actions, e.g. "lesson step 3", then the window stays
     std::optional<std::string> screenshot;  // as inspect's: a PNG at the end, then the window closes
@@ -112,9 +112,9 @@ struct BenchOptions {
     std::optional<std::string> iterations;  // comma-separated counts; default 1,2,4,8,16,32
     int repeats = 3;                        // timed windows per configuration
     std::string out = "bench-results";
-    std::optional<int> frames;              // overrides every scene's simulated frames
-    std::optional<std::string> scene_dir;   // default: the repository's scenes/
-    bool scaling = false;                   // instead: time per resolved contact on grid_10..grid_1000
+    std::optional<int> frames;             // overrides every scene's simulated frames
+    std::optional<std::string> scene_dir;  // default: the data folder's scenes/ (cli/data_folder.hpp)
+    bool scaling = false;                  // instead: time per resolved contact on grid_10..grid_1000
 };
 // `progress` is where a progress bar may go (a terminal), or null for none.
 int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress);

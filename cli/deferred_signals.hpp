@@ -20,7 +20,7 @@ public:
 
 private:
     struct Held {
-        sigset_t previous;       // the mask before this hold
+        sigset_t previous;         // the mask before this hold
         bool pipe_pending_before;  // a SIGPIPE that was waiting already is not this hold's to take back
     };
     std::vector<Held> held_;

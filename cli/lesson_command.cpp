@@ -5,6 +5,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
+#include "cli/data_folder.hpp"
 #include "model/input_files.hpp"
 #include "cli/outputs.hpp"
 #include "explain/text_table.hpp"
@@ -34,8 +35,7 @@ int terminal_width() {
 }
 
 std::filesystem::path lessons_folder(const LessonOptions& options) {
-    return options.lessons_folder ? std::filesystem::path(*options.lessons_folder)
-                                  : std::filesystem::path(IMPULSE_LESSONS_DIR);
+    return options.lessons_folder ? std::filesystem::path(*options.lessons_folder) : shipped_lessons_folder();
 }
 
 int list_lessons(const LessonOptions& options, const lessons::Progress& progress, std::ostream& out,

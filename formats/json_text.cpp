@@ -167,16 +167,26 @@ std::optional<std::size_t> first_non_utf8_byte(std::string_view text) {
         // overlong forms, surrogates and code points past U+10FFFF).
         std::size_t length = 1;
         unsigned char low = 0x80, high = 0xBF;
-        if (lead < 0x80) length = 1;
-        else if (lead >= 0xC2 && lead <= 0xDF) length = 2;
-        else if (lead == 0xE0) length = 3, low = 0xA0;
-        else if (lead >= 0xE1 && lead <= 0xEC) length = 3;
-        else if (lead == 0xED) length = 3, high = 0x9F;
-        else if (lead >= 0xEE && lead <= 0xEF) length = 3;
-        else if (lead == 0xF0) length = 4, low = 0x90;
-        else if (lead >= 0xF1 && lead <= 0xF3) length = 4;
-        else if (lead == 0xF4) length = 4, high = 0x8F;
-        else return at;
+        if (lead < 0x80)
+            length = 1;
+        else if (lead >= 0xC2 && lead <= 0xDF)
+            length = 2;
+        else if (lead == 0xE0)
+            length = 3, low = 0xA0;
+        else if (lead >= 0xE1 && lead <= 0xEC)
+            length = 3;
+        else if (lead == 0xED)
+            length = 3, high = 0x9F;
+        else if (lead >= 0xEE && lead <= 0xEF)
+            length = 3;
+        else if (lead == 0xF0)
+            length = 4, low = 0x90;
+        else if (lead >= 0xF1 && lead <= 0xF3)
+            length = 4;
+        else if (lead == 0xF4)
+            length = 4, high = 0x8F;
+        else
+            return at;
         for (std::size_t k = 1; k < length; ++k) {
             if (at + k >= text.size()) return at;
             const auto next = static_cast<unsigned char>(text[at + k]);

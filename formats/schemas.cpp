@@ -6,8 +6,8 @@
 namespace impulse::io {
 
 namespace embedded {
-extern const std::string_view scene_schema;      // schemas/scene.schema.json, compiled in by CMake
-extern const std::string_view trace_schema;      // schemas/trace.schema.json
+extern const std::string_view scene_schema;  // schemas/scene.schema.json, compiled in by CMake
+extern const std::string_view trace_schema;  // schemas/trace.schema.json
 }  // namespace embedded
 
 std::string_view scene_schema_text() {

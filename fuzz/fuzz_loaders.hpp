@@ -96,14 +96,10 @@ struct Loader {
 };
 
 inline constexpr Loader loaders[] = {
-    {"fuzz_scene_text", load_scene_text},
-    {"fuzz_trace_text", load_trace_text},
-    {"fuzz_lesson_text", load_lesson_text},
-    {"fuzz_worksheet_json", load_worksheet_json},
-    {"fuzz_worksheet_csv", load_worksheet_csv},
-    {"fuzz_worksheet_reference", load_worksheet_reference},
-    {"fuzz_progress_text", load_progress_text},
-    {"fuzz_diff", load_diff},
+    {"fuzz_scene_text", load_scene_text},       {"fuzz_trace_text", load_trace_text},
+    {"fuzz_lesson_text", load_lesson_text},     {"fuzz_worksheet_json", load_worksheet_json},
+    {"fuzz_worksheet_csv", load_worksheet_csv}, {"fuzz_worksheet_reference", load_worksheet_reference},
+    {"fuzz_progress_text", load_progress_text}, {"fuzz_diff", load_diff},
 };
 
 }  // namespace impulse::fuzz

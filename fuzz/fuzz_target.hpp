@@ -20,7 +20,7 @@ inline int run_loader(void (*load)(std::string_view), const std::uint8_t* data, 
 }  // namespace impulse::fuzz
 
 // One target per file: IMPULSE_FUZZ_TARGET(load_scene_text) defines libFuzzer's entry point.
-#define IMPULSE_FUZZ_TARGET(loader)                                                          \
-    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {       \
-        return impulse::fuzz::run_loader(impulse::fuzz::loader, data, size);                  \
+#define IMPULSE_FUZZ_TARGET(loader)                                                     \
+    extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) { \
+        return impulse::fuzz::run_loader(impulse::fuzz::loader, data, size);            \
     }

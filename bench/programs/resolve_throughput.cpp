@@ -17,7 +17,7 @@
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
 #include "record/trace_recorder.hpp"
-#include "resolver/prepared_contact.hpp"
+#include "preparation/prepared_contact.hpp"
 #include "resolver/resolver.hpp"
 
 #include <CLI/CLI.hpp>

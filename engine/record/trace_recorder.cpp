@@ -7,17 +7,17 @@ namespace {
 // Bytes each record takes in the formatted JSON of a trace: a least-squares fit of the record counts to the
 // real sizes of 20-frame traces of 8 shipped scenes under all 6 presets. Numbers print with up to 17 digits,
 // so these are averages, not bounds; the line size is a guess (no calibration trace filtered contacts).
-constexpr std::size_t header_bytes = 2500;       // the scene and settings, plus per body:
-constexpr std::size_t header_body_bytes = 500;   // a body in the header's scene
-constexpr std::size_t frame_bytes = 1050;        // a frame's own keys and phase outcomes
-constexpr std::size_t frame_body_bytes = 180;    // a body before and after, with its world inverse inertia
-constexpr std::size_t contact_bytes = 2300;      // steps 1-5 of a contact
+constexpr std::size_t header_bytes = 2500;      // the scene and settings, plus per body:
+constexpr std::size_t header_body_bytes = 500;  // a body in the header's scene
+constexpr std::size_t frame_bytes = 1050;       // a frame's own keys and phase outcomes
+constexpr std::size_t frame_body_bytes = 180;   // a body before and after, with its world inverse inertia
+constexpr std::size_t contact_bytes = 2300;     // steps 1-5 of a contact
 constexpr std::size_t position_iteration_bytes = 600;
 constexpr std::size_t velocity_iteration_bytes = 1850;
-constexpr std::size_t iteration_line_bytes = 250;     // an iteration on a contact outside the recorded set,
-constexpr std::size_t sweep_place_bytes = 130;        // plus, on such a line, where in the sweeps it is
-constexpr std::size_t accumulated_bytes = 300;        // and its accumulated impulse (counted from formatted traces)
-constexpr std::size_t position_update_bytes = 300;    // one update to a contact sharing a body
+constexpr std::size_t iteration_line_bytes = 250;   // an iteration on a contact outside the recorded set,
+constexpr std::size_t sweep_place_bytes = 130;      // plus, on such a line, where in the sweeps it is
+constexpr std::size_t accumulated_bytes = 300;      // and its accumulated impulse (counted from formatted traces)
+constexpr std::size_t position_update_bytes = 300;  // one update to a contact sharing a body
 constexpr std::size_t velocity_update_bytes = 570;
 
 }  // namespace

@@ -139,8 +139,13 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
     }
     if (run.lesson) {
         // Back where the student left off, with the answers they gave shown again.
-        state.lesson.emplace(LessonState{lessons::LessonRun(*run.lesson, run.progress, run.progress_file), {}, -1,
-                                         true, {}, -1, run.lesson_preview});
+        state.lesson.emplace(LessonState{lessons::LessonRun(*run.lesson, run.progress, run.progress_file),
+                                         {},
+                                         -1,
+                                         true,
+                                         {},
+                                         -1,
+                                         run.lesson_preview});
         go_to_lesson_step(session, state, state.lesson->run.step());
         refresh_mask(session, state);
     }

@@ -40,8 +40,7 @@ std::string item_label(const Trace& trace, const lessons::Mask& mask, int f, Sta
 
 std::string stage_label(const FrameRecord& frame, Stage stage) {
     const int n = inspect::item_count(frame, stage);
-    if (stage == Stage::preparation)
-        return "Preparation: " + std::to_string(n) + (n == 1 ? " contact" : " contacts");
+    if (stage == Stage::preparation) return "Preparation: " + std::to_string(n) + (n == 1 ? " contact" : " contacts");
     const PhaseOutcome& o = stage == Stage::position ? frame.position.outcome : frame.velocity.outcome;
     return std::string(stage == Stage::position ? "Position phase: " : "Velocity phase: ") + std::to_string(n) +
            " of " + std::to_string(o.iteration_limit) + " iterations";

@@ -66,8 +66,7 @@ void draw_toolbar(inspect::Session& session, UiState& state, inspect::ActionHost
     }
     const CursorViews& v = state.views;
     // A lesson's file is the lesson's, not the student's: the scene's name is enough.
-    const std::string file =
-        state.lesson ? std::filesystem::path(session.path()).filename().string() : session.path();
+    const std::string file = state.lesson ? std::filesystem::path(session.path()).filename().string() : session.path();
     ImGui::TextUnformatted(file.c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("·");

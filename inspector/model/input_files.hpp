@@ -13,7 +13,7 @@ namespace impulse::cli {
 // The most a command reads from one file, stated in docs/fuzzing.md. JSON documents (traces, scenes, worksheets)
 // may be as large as the largest trace --max-trace-mb lets us write; text a person writes (lessons, inspect
 // scripts, the progress file) is far smaller, so a wrong file named there is refused early.
-inline constexpr std::size_t max_input_bytes = 256u << 20;  // 256 MiB: larger than any trace we write
+inline constexpr std::size_t max_input_bytes = 256u << 20;     // 256 MiB: larger than any trace we write
 inline constexpr std::size_t max_text_input_bytes = 4u << 20;  // 4 MiB: lessons, scripts, progress
 
 // An error about a named file: its `where` is the file, then the JSON path. Thrown on by the commands and

@@ -21,10 +21,10 @@ enum class SourceKind {
 };
 
 struct OpenOptions {
-    std::optional<std::string> preset;  // --preset
-    std::vector<std::string> settings;  // --set name=value, in order
-    std::vector<std::string> record;    // --record frames=A..B / contacts=I,J
-    std::optional<int> frames;          // frames to simulate for a scene (default: up to 60, the first second)
+    std::optional<std::string> preset;   // --preset
+    std::vector<std::string> settings;   // --set name=value, in order
+    std::vector<std::string> record;     // --record frames=A..B / contacts=I,J
+    std::optional<int> frames;           // frames to simulate for a scene (default: up to 60, the first second)
     std::optional<double> max_trace_mb;  // --max-trace-mb: the recording's budget (default: default_max_trace_mb)
 
     // The flag of the first option given ("--preset", "--set", "--frames", "--record"), or none: for the

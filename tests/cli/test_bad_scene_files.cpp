@@ -144,4 +144,3 @@ TEST_CASE("a file that cannot be read is named in one line with the reason") {
     CHECK(r.code == 2);
     CHECK(r.err == "impulse-lab: " + missing + ": cannot read: No such file or directory\n");
 }
-

@@ -198,8 +198,9 @@ TEST_CASE("run simulates a scene, writes its trace and states, and summarises ev
         {"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "5", "--trace", trace, "--states", states});
     CHECK(r.code == 0);
     CHECK(r.err.empty());
-    for (const char* part : {"3 bodies, ground, 5 frames", "frame    time s  contacts  deepest mm   kinetic J",
-                             "per frame: integrate", "iteration limit (or every sweep) used in", "box2 (highest at the start)"})
+    for (const char* part :
+         {"3 bodies, ground, 5 frames", "frame    time s  contacts  deepest mm   kinetic J", "per frame: integrate",
+          "iteration limit (or every sweep) used in", "box2 (highest at the start)"})
         CHECK_MESSAGE(r.out.find(part) != std::string::npos, part);
     const CliResult v = run_cli({"validate", trace});
     CHECK(v.code == 0);
@@ -335,8 +336,8 @@ TEST_CASE("resolve and worksheet stop where run stops on a non-finite body, say 
 TEST_CASE("a tiny --max-trace-mb stops the recording at a whole frame, says where, and the trace still validates") {
     TempDir dir;
     const std::string trace = dir.file("stack.trace.json").string();
-    const CliResult r = run_cli({"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "60", "--trace", trace,
-                                 "--max-trace-mb", "2"});
+    const CliResult r = run_cli(
+        {"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "60", "--trace", trace, "--max-trace-mb", "2"});
     CHECK(r.code == 0);
     const std::string note = "impulse-lab: note: the trace reached --max-trace-mb 2 at frame ";
     REQUIRE(r.err.rfind(note, 0) == 0);

@@ -81,4 +81,3 @@ TEST_CASE("a FIFO whose reader goes away gives an error, not a SIGPIPE, and stay
     CHECK(wait_for(child) == 0);
     CHECK(fs::is_fifo(fifo));
 }
-

@@ -475,11 +475,10 @@ private:
             desired(v, v, k(at(v, "contact_velocity"))[0].get<double>(), number(at(v, "restitution")), b.normal, bodies,
                     v);
         } else if (step == "impulse") {
-            const Impulse g =
-                calculate_impulse(basis_of(k(at(c, "basis"))), relative_positions(c, bodies), masses(bodies),
-                                  vec(k(at(v, "contact_velocity"))), number(at(v, "desired_delta_velocity")),
-                                  number(at(c, "delta_velocity_per_unit_impulse")), number(at(c, "friction")),
-                                  sliding_friction());
+            const Impulse g = calculate_impulse(
+                basis_of(k(at(c, "basis"))), relative_positions(c, bodies), masses(bodies),
+                vec(k(at(v, "contact_velocity"))), number(at(v, "desired_delta_velocity")),
+                number(at(c, "delta_velocity_per_unit_impulse")), number(at(c, "friction")), sliding_friction());
             put(at(v, "impulse_model"), name(impulse_model_names, g.model));
             if (g.friction) {
                 const FrictionSolve& s = *g.friction;

@@ -80,7 +80,8 @@ std::string rejection(std::string_view target, const std::string& name) {
 // Each of these numbers passed the schema as an "integer" (a double with no fraction is one) and was then cast
 // to an int by nlohmann's get<int>(), which is undefined behaviour when it does not fit: UBSan stopped there.
 TEST_CASE("a trace's frame number beyond int is rejected at its path, not cast") {
-    CHECK(rejection("fuzz_trace_text", "frame-number-1e300.json") == "frames[0].frame: must be <= 2147483647, got 1e+300");
+    CHECK(rejection("fuzz_trace_text", "frame-number-1e300.json") ==
+          "frames[0].frame: must be <= 2147483647, got 1e+300");
     CHECK(rejection("fuzz_trace_text", "first-frame-1e300.json").starts_with("recording.first_frame: must be <="));
     CHECK(rejection("fuzz_trace_text", "contact-count-1e300.json").starts_with("frames[0].contact_count: must be <="));
 }

@@ -123,7 +123,8 @@ TEST_CASE("a predict answer is right within its tolerance and says how far off i
     const lessons::Verdict wrong = lessons::check_answer(q, *p.answers[1], "5");
     CHECK_FALSE(wrong.correct);
     CHECK(wrong.feedback == "not quite: 33.3 % too low; try again, or skip to see the engine's value");
-    CHECK(lessons::check_answer(q, *p.answers[1], "7.6").feedback == "right: the engine has 7.5 m/s (you were 1.33 % off)");
+    CHECK(lessons::check_answer(q, *p.answers[1], "7.6").feedback ==
+          "right: the engine has 7.5 m/s (you were 1.33 % off)");
     CHECK_THROWS_AS(lessons::check_answer(q, *p.answers[1], "seven"), io::InputError);
 }
 

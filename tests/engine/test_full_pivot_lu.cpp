@@ -5,7 +5,7 @@
 
 #include "derivation/impulse.hpp"
 #include "math/full_pivot_lu.hpp"
-#include "resolver/prepared_contact.hpp"
+#include "preparation/prepared_contact.hpp"
 #include "support/random_contacts.hpp"
 
 #include <doctest/doctest.h>

@@ -42,11 +42,11 @@ TEST_CASE("written doubles read back to the same bits, and vectors stay on one l
 TEST_CASE("text that is not UTF-8 is found at its byte, and a string holding it is written as U+FFFD") {
     using impulse::io::first_non_utf8_byte;
     CHECK_FALSE(first_non_utf8_byte("plain, Δv and ∑ and 🙂").has_value());
-    CHECK(first_non_utf8_byte("ab\x98").value() == 2);           // a continuation byte with no lead
-    CHECK(first_non_utf8_byte("\xC0\xAF").value() == 0);         // an overlong '/'
-    CHECK(first_non_utf8_byte("x\xED\xA0\x80").value() == 1);    // a UTF-16 surrogate
-    CHECK(first_non_utf8_byte("\xF4\x90\x80\x80").value() == 0); // past U+10FFFF
-    CHECK(first_non_utf8_byte("\xE2\x88").value() == 0);         // cut short
+    CHECK(first_non_utf8_byte("ab\x98").value() == 2);            // a continuation byte with no lead
+    CHECK(first_non_utf8_byte("\xC0\xAF").value() == 0);          // an overlong '/'
+    CHECK(first_non_utf8_byte("x\xED\xA0\x80").value() == 1);     // a UTF-16 surrogate
+    CHECK(first_non_utf8_byte("\xF4\x90\x80\x80").value() == 0);  // past U+10FFFF
+    CHECK(first_non_utf8_byte("\xE2\x88").value() == 0);          // cut short
     CHECK_THROWS_WITH_AS(impulse::io::require_utf8("a,b\nc,\x98"), "line 2: not UTF-8 text: byte 0x98 at column 3",
                          impulse::io::InputError);
     const nlohmann::ordered_json value = {{"cell", std::string("a\x98")}};

@@ -273,12 +273,13 @@ TEST_CASE("inspect says which frames it recorded when the trace budget cut it, a
     const CliResult r = run_cli({"inspect", IMPULSE_SOURCE_DIR "/scenes/box_resting.json", "--max-trace-mb", "0.1",
                                  "--headless", "--script", script.string()});
     CHECK(r.code == 0);
-    CHECK(r.err == "impulse-lab: note: recorded frames 0..2 of 0..59 (the trace reached --max-trace-mb 0.1 at frame "
-                   "3); raise --max-trace-mb or narrow --record to see later frames\n"
-                   "impulse-lab: note: " +
-                       script.string() +
-                       ": line 1: re-ran with velocity_epsilon=0.00001: recorded frame 0 of 0..59 (the trace "
-                       "reached --max-trace-mb 0.1 at frame 1)\n");
+    CHECK(r.err ==
+          "impulse-lab: note: recorded frames 0..2 of 0..59 (the trace reached --max-trace-mb 0.1 at frame "
+          "3); raise --max-trace-mb or narrow --record to see later frames\n"
+          "impulse-lab: note: " +
+              script.string() +
+              ": line 1: re-ran with velocity_epsilon=0.00001: recorded frame 0 of 0..59 (the trace "
+              "reached --max-trace-mb 0.1 at frame 1)\n");
 }
 
 TEST_CASE("a script's export table - and --screenshot - put the table and the picture on standard output") {

@@ -1,0 +1,38 @@
+# cmake -DCLANG_FORMAT=... -DSOURCE_DIR=... -P format_check.cmake
+# Runs clang-format --dry-run --Werror over the project's own C++ sources (not the build folders, not third-party
+# code: there is none in the tree). Prints "format check skipped" (the test's skip pattern) when clang-format 14,
+# the version the tree is formatted with, is not installed. To fix what it reports: clang-format -i FILE.
+if(NOT CLANG_FORMAT OR NOT EXISTS "${CLANG_FORMAT}")
+  message("format check skipped: clang-format is not installed (Debian package clang-format)")
+  return()
+endif()
+execute_process(COMMAND ${CLANG_FORMAT} --version OUTPUT_VARIABLE version)
+if(NOT version MATCHES "version 14\\.")
+  message("format check skipped: ${CLANG_FORMAT} is not clang-format 14 (${version}), which lays out some lines "
+          "differently")
+  return()
+endif()
+set(patterns)
+foreach(folder engine inspector tests bench fuzz)
+  list(APPEND patterns ${SOURCE_DIR}/${folder}/*.cpp ${SOURCE_DIR}/${folder}/*.hpp ${SOURCE_DIR}/${folder}/*.h)
+endforeach()
+file(GLOB_RECURSE files ${patterns})
+list(LENGTH files count)
+if(count LESS 100)
+  message(FATAL_ERROR "found only ${count} source files under ${SOURCE_DIR}: the wrong folder?")
+endif()
+execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${files} RESULT_VARIABLE result ERROR_VARIABLE report)
+if(NOT result EQUAL 0)
+  string(REGEX MATCHALL "[^\n]*: error: code should be clang-formatted" lines "${report}")
+  set(deviating)
+  foreach(line IN LISTS lines)
+    string(REGEX REPLACE ":[0-9]+:[0-9]+: error: code should be clang-formatted" "" file "${line}")
+    list(APPEND deviating "${file}")
+  endforeach()
+  list(REMOVE_DUPLICATES deviating)
+  list(LENGTH deviating bad)
+  list(JOIN deviating "\n  " listed)
+  message(FATAL_ERROR "${report}\n${bad} of ${count} files are not laid out as .clang-format says (clang-format -i "
+                      "them):\n  ${listed}")
+endif()
+message("${count} files laid out as .clang-format says")

@@ -1,0 +1,174 @@
+// The other engines on the bench (inspector/bench/adapters): each adapter builds our scene in its engine so that
+// the engine's own physics gives what it promises (a bounce to the height its restitution model predicts, a box
+// at rest staying at rest), and hands the bodies back in our conventions (centre of mass, quaternion [w,x,y,z]
+// body -> world, velocities in the world frame). Each engine's cases are compiled when the build has it.
+
+#include "bench/adapters/engine_adapter.hpp"
+#include "bench/bench_plan.hpp"
+#include "io/scene_file.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace impulse::test {
+
+namespace {
+
+std::unique_ptr<bench::EngineWorld> world_of(std::string_view engine, const Scene& scene, int iterations = 20) {
+    const bench::EngineRow* row = bench::find_engine(engine);
+    REQUIRE(row != nullptr);
+    return row->make(scene, iterations);
+}
+
+// A ball of radius 0.5 m dropped from rest with its lowest point 1 m above the ground, restitution 0.5 (the
+// ground's 0: combined by the larger), stepped at 1 ms so the step's own error (g dt against the impact speed
+// sqrt(2 g h) = 4.43 m/s, 0.2 %) stays far below what is checked. Returns the highest the lowest point rises
+// after the first bounce.
+double bounce_height(std::string_view engine) {
+    const Scene scene = io::read_scene_text(R"({
+      "ground": {}, "materials": {"ball": {"restitution": 0.5, "friction": 0.5}},
+      "settings": {"duration": 0.001},
+      "bodies": [{"shape": {"type": "sphere", "radius": 0.5}, "position": [0, 1.5, 0], "material": "ball"}]})");
+    auto world = world_of(engine, scene);
+    std::vector<RigidBody> bodies = scene.bodies;
+    bool bounced = false;
+    double highest = 0.0;
+    for (int frame = 0; frame < 1500; ++frame) {  // 1.5 s: the fall takes 0.45 s, the rise 0.23 s
+        world->step();
+        world->read_bodies(bodies);
+        if (!bounced && bodies[0].velocity.y() > 0.0) bounced = true;
+        if (bounced) highest = std::max(highest, bodies[0].position.y() - 0.5);
+        if (bounced && bodies[0].velocity.y() < 0.0 && bodies[0].position.y() - 0.5 > 0.05) break;  // the apex
+    }
+    return highest;
+}
+
+// A 1 m cube resting on the ground (its centre 0.5 m up), for 2 s at the bench's 1/60 s. Returns its state.
+RigidBody resting_box_after_two_seconds(std::string_view engine, int* contacts = nullptr) {
+    const Scene scene = io::read_scene_text(R"({
+      "ground": {},
+      "bodies": [{"shape": {"type": "box", "half_size": [0.5, 0.5, 0.5]}, "position": [0, 0.5, 0]}]})");
+    auto world = world_of(engine, scene);
+    std::vector<RigidBody> bodies = scene.bodies;
+    for (int frame = 0; frame < 120; ++frame) world->step();
+    world->read_bodies(bodies);
+    if (contacts) *contacts = world->touching_contacts();
+    return bodies[0];
+}
+
+// A box of half sizes (0.5, 1, 2) and 2 kg in free flight without gravity, turned 90 degrees about world x (so its
+// y axis points along world z), moving at (1, 2, 3) m/s and spinning at 2 rad/s about world z, i.e. about its own
+// y axis, a principal axis: the spin stays constant. After 30 steps of 1/60 s, by hand: the centre of mass at
+// p0 + v t = (1, 2, 3) + (1, 2, 3) 0.5 = (1.5, 3, 4.5); the orientation turned by 2 x 0.5 = 1 rad about world z
+// on top of the first turn, q = R_z(1) R_x(pi/2); the velocity and the angular velocity unchanged, in world axes.
+void check_state_hand_back(std::string_view engine) {
+    const Scene scene = io::read_scene_text(R"({
+      "gravity": [0, 0, 0],
+      "bodies": [{"shape": {"type": "box", "half_size": [0.5, 1, 2]}, "mass": 2, "position": [1, 2, 3],
+                  "orientation": [0.7071067811865476, 0.7071067811865476, 0, 0],
+                  "velocity": [1, 2, 3], "angular_velocity": [0, 0, 2]}]})");
+    auto world = world_of(engine, scene);
+    std::vector<RigidBody> bodies = scene.bodies;
+    for (int frame = 0; frame < 30; ++frame) world->step();
+    world->read_bodies(bodies);
+    const RigidBody& b = bodies[0];
+    const Quat expected =
+        Quat(Eigen::AngleAxisd(1.0, Vec3::UnitZ())) * Quat(Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitX()));
+    CHECK((b.position - Vec3(1.5, 3, 4.5)).norm() < 1e-9);
+    // ODE integrates the orientation to first order (its default "infinitesimal" rotation), hence 1e-4 rad.
+    CHECK(b.orientation.angularDistance(expected) < 1e-4);
+    CHECK(b.orientation.w() > 0.0);  // [w,x,y,z]: w = cos(angle/2) of a turn below pi is positive
+    CHECK((b.velocity - Vec3(1, 2, 3)).norm() < 1e-9);
+    CHECK((b.angular_velocity - Vec3(0, 0, 2)).norm() < 1e-6);  // world axes, not the body's (0, 2, 0)
+    // The masses and inertias stay ours.
+    CHECK(b.inverse_mass == doctest::Approx(0.5));
+}
+
+// At rest: no sideways motion or turn at all, a sink into the ground of at most `sink` m (the engine's contact
+// softness, docs/bench.md), and still at the end.
+void check_box_rests(std::string_view engine, double sink) {
+    int contacts = 0;
+    const RigidBody b = resting_box_after_two_seconds(engine, &contacts);
+    CHECK(std::hypot(b.position.x(), b.position.z()) < 1e-6);
+    CHECK(b.orientation.angularDistance(Quat::Identity()) < 1e-6);
+    CHECK(std::abs(b.position.y() - 0.5) < sink);
+    CHECK(b.velocity.norm() < 1e-3);
+    CHECK(b.angular_velocity.norm() < 1e-3);
+    CHECK(contacts >= 4);  // a face on the ground: four corners touching
+}
+
+}  // namespace
+
+TEST_CASE("an engine the build does not have is not found, and the built ones are all named") {
+    CHECK(bench::find_engine("havok") == nullptr);
+    for (const bench::EngineRow& e : bench::built_engines()) {
+        CHECK(bench::find_engine(e.name) == &e);
+        CHECK(std::find(bench::engine_names().begin(), bench::engine_names().end(), e.name) !=
+              bench::engine_names().end());
+    }
+}
+
+TEST_CASE("engines refuse a scene with contacts written by hand, naming the engine") {
+    const Scene scene = io::read_scene_text(R"({
+      "bodies": [{"shape": {"type": "sphere", "radius": 1}}],
+      "contacts": [{"bodies": [0, null], "point": [0, -1, 0], "normal": [0, 1, 0]}]})");
+    CHECK_THROWS_WITH_AS(bench::check_scene_for_engine(scene, "ode"),
+                         "contacts: ode runs scenes with collision detection only; this scene has contacts written by "
+                         "hand",
+                         io::InputError);
+}
+
+TEST_CASE("a damping share kept per second becomes the share lost per step") {
+    // By hand: keeping 0.5 per second over a step of 0.25 s keeps 0.5^0.25 = 0.8409, so 0.1591 is lost.
+    CHECK(bench::damping_per_step(0.5, 0.25) == doctest::Approx(1.0 - std::pow(0.5, 0.25)));
+    CHECK(bench::damping_per_step(1.0, 1.0 / 60) == 0.0);
+}
+
+#ifdef IMPULSE_HAVE_BULLET
+TEST_CASE("bullet: a ball with restitution 0.5 bounces to 0.25 of its drop height") {
+    // Bullet's restitution: the separating speed is c times the closing speed, so the rise is c^2 h = 0.25 m.
+    CHECK(bounce_height("bullet") == doctest::Approx(0.25).epsilon(0.03));
+}
+TEST_CASE("bullet: a box resting on the ground stays at rest") {
+    check_box_rests("bullet", 0.005);
+}
+TEST_CASE("bullet: bodies come back as centre of mass, quaternion w,x,y,z and world-frame velocities") {
+    check_state_hand_back("bullet");
+}
+#endif
+
+#ifdef IMPULSE_HAVE_ODE
+TEST_CASE("ode: a ball with restitution 0.5 bounces to 0.25 of its drop height") {
+    // ODE's bounce: the separating speed is `bounce` times the closing speed, so the rise is c^2 h = 0.25 m.
+    CHECK(bounce_height("ode") == doctest::Approx(0.25).epsilon(0.03));
+}
+TEST_CASE("ode: a box resting on the ground stays at rest") {
+    check_box_rests("ode", 0.005);
+}
+TEST_CASE("ode: bodies come back as centre of mass, quaternion w,x,y,z and world-frame velocities") {
+    check_state_hand_back("ode");
+}
+#endif
+
+#ifdef IMPULSE_HAVE_MUJOCO
+TEST_CASE("mujoco: a ball with restitution 0.5 bounces to about 0.25 of its drop height") {
+    // The adapter sets the contact's damping ratio zeta so that a damped spring returns c of the speed:
+    // exp(-pi zeta / sqrt(1 - zeta^2)) = 0.5. MuJoCo's contact lets go when its force reaches zero, a little
+    // before the spring's rest length, so the rise is near c^2 h = 0.25 m, not exactly it.
+    CHECK(bounce_height("mujoco") == doctest::Approx(0.25).epsilon(0.15));
+}
+TEST_CASE("mujoco: a box resting on the ground stays at rest") {
+    // MuJoCo's contacts are soft: at 1/60 s the stiffest time constant is 2 dt, a spring of 1 / (0.95 x 2 dt)^2 =
+    // 997 /s^2 (per unit mass), so gravity presses the box in by about 9.81 / 997 = 1 cm.
+    check_box_rests("mujoco", 0.015);
+}
+TEST_CASE("mujoco: bodies come back as centre of mass, quaternion w,x,y,z and world-frame velocities") {
+    check_state_hand_back("mujoco");
+}
+#endif
+
+}  // namespace impulse::test

@@ -8,6 +8,7 @@
 #include "bench/bench_report.hpp"
 #include "bench/bench_runs.hpp"
 #include "gui/bench_charts.hpp"
+#include "io/input_error.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 

@@ -5,6 +5,7 @@
 
 #include "bench/adapters/engine_adapter.hpp"
 #include "bench/bench_plan.hpp"
+#include "io/input_error.hpp"
 #include "io/scene_file.hpp"
 
 #include <doctest/doctest.h>

@@ -80,11 +80,19 @@ std::string model_text(const Scene& scene, int iterations) {
                contact_attributes(scene.materials.at(name), dt, false);
     };
 
-    const int bodies = static_cast<int>(scene.bodies.size());
-    const int contact_capacity = 16 * bodies + 64;
+    // Room for contacts and constraint rows: 12 points a body (a box on a box gives up to 8, and a pyramid's box
+    // rests on two) and 4 rows a point (a pyramidal cone: two directions, each both ways). MuJoCo 2.2 keeps an
+    // njmax x njmax matrix (efc_AR), so a scene needing more than 2 GB of it is refused rather than run out of
+    // memory.
+    const long contact_capacity = 12L * static_cast<long>(scene.bodies.size()) + 64;
+    const long rows = 4 * contact_capacity;
+    if (rows * rows * 12 > (2L << 30))
+        throw std::runtime_error("mujoco 2.2 would need " + std::to_string(rows * rows * 12 >> 20) +
+                                 " MB for its constraint matrix (njmax = " + std::to_string(rows) +
+                                 " rows squared): too many bodies");
     std::string xml = "<mujoco model=\"impulse-lab\">\n<compiler angle=\"radian\"/>\n<size nconmax=\"" +
-                      std::to_string(contact_capacity) + "\" njmax=\"" + std::to_string(4 * contact_capacity) +
-                      "\"/>\n";
+                      std::to_string(contact_capacity) + "\" njmax=\"" + std::to_string(rows) + "\"/>\n";
+    // MuJoCo's default pyramidal friction cone: with Newton at this step its elliptic cone leaves a stack jittering.
     xml += "<option timestep=\"" + num(dt) + "\" gravity=\"" + vec(scene.world.gravity) + "\" iterations=\"" +
            std::to_string(iterations) + "\" integrator=\"Euler\" cone=\"pyramidal\"/>\n<worldbody>\n";
     std::vector<std::pair<std::string, std::string>> geoms;  // (geom name, material) for the explicit pairs
@@ -95,7 +103,7 @@ std::string model_text(const Scene& scene, int iterations) {
                "\" zaxis=\"" + vec(plane.normal) + "\"" + geom_material(scene.ground->material) + "/>\n";
         geoms.emplace_back("ground", scene.ground->material);
     }
-    for (int i = 0; i < bodies; ++i) {
+    for (int i = 0; i < static_cast<int>(scene.bodies.size()); ++i) {
         const RigidBody& b = scene.bodies[static_cast<std::size_t>(i)];
         const std::string name = "b" + std::to_string(i);
         const Quat& q = b.orientation;

@@ -48,9 +48,10 @@ public:
         btContactSolverInfo& info = world_.getSolverInfo();
         info.m_numIterations = iterations;  // N: sweeps of the sequential-impulse solver
         info.m_splitImpulse = 1;            // penetration is pushed out by a separate velocity (no energy added)
-        info.m_splitImpulsePenetrationThreshold = -0.04;  // Bullet's default: deeper than 4 cm uses Baumgarte
-        info.m_erp2 = 0.8;                                // the split impulse's share of the error per step
-        info.m_restitutionVelocityThreshold = 0.2;        // Bullet's default: no bounce below 0.2 m/s
+        info.m_splitImpulsePenetrationThreshold =
+            -0.04;                                  // Bullet's default: split impulse for contacts deeper than 4 cm
+        info.m_erp2 = 0.8;                          // the split impulse's share of the error per step
+        info.m_restitutionVelocityThreshold = 0.2;  // Bullet's default: no bounce below 0.2 m/s
 
         if (scene.ground) {
             const HalfSpace& plane = scene.ground->plane;

@@ -47,10 +47,19 @@ public:
         world_.setGravity(to_bullet(scene.world.gravity));
         btContactSolverInfo& info = world_.getSolverInfo();
         info.m_numIterations = iterations;  // N: sweeps of the sequential-impulse solver
-        info.m_splitImpulse = 1;            // penetration is pushed out by a separate velocity (no energy added)
-        info.m_splitImpulsePenetrationThreshold =
-            -0.04;                                  // Bullet's default: split impulse for contacts deeper than 4 cm
-        info.m_erp2 = 0.8;                          // the split impulse's share of the error per step
+        // Bullet resolves penetration two ways: contacts deeper than m_splitImpulsePenetrationThreshold by the
+        // split impulse (a separate velocity that moves the bodies and is then dropped, so it adds no energy),
+        // shallower ones by Baumgarte (ERP2 x depth / dt added to the contact's target velocity, i.e. energy).
+        // Bullet's default threshold, 4 cm, leaves an impact's penetration to Baumgarte: a ball that sinks 3 cm in
+        // one 1/60 s frame leaves with 0.8 x 0.03 x 60 = 1.4 m/s on top of its bounce. The threshold is one frame
+        // of free fall, g dt^2 (2.7 mm at 1/60 s): an impact sinks deeper and is pushed out by the split impulse; a
+        // resting contact, which gravity presses in by at most that much a frame, keeps Bullet's Baumgarte, which
+        // is what holds its stacks (threshold 0 collapses stack_10 at every N; docs/bench.md, "Other engines").
+        info.m_splitImpulse = 1;
+        info.m_splitImpulsePenetrationThreshold = -scene.world.gravity.norm() * dt_ * dt_;
+        // Both ways remove ERP2 of the depth a step: 0.8, Bullet 2's default (3.24's is 0.2, with which stack_10
+        // and pyramid_20 miss their 5 cm target at N = 32; docs/bench.md).
+        info.m_erp2 = 0.8;
         info.m_restitutionVelocityThreshold = 0.2;  // Bullet's default: no bounce below 0.2 m/s
 
         if (scene.ground) {
@@ -117,6 +126,13 @@ private:
         bodies_.push_back(std::make_unique<btRigidBody>(info));
         btRigidBody& body = *bodies_.back();
         body.setActivationState(DISABLE_DEACTIVATION);  // sleeping off: a resting stack is still solved
+        // A bouncy body's contacts are solved only once the shapes touch. Bullet keeps contact points from a gap
+        // of 0.02 x the shape's bounding radius (1.7 cm for a ball of radius 0.5 m) and solves them as speculative
+        // contacts, aiming at the separating speed c |v| - gap / dt: restitution then no longer returns c of the
+        // closing speed (at 1 ms steps a ball stops on the ground without bouncing). Bullet keeps the smaller
+        // threshold of the two bodies, so a contact whose combined restitution is above 0 (the larger of the two)
+        // touches first; contacts of restitution 0 stay speculative, as Bullet ships them.
+        if (material.restitution > 0.0) body.setContactProcessingThreshold(0.0);
         world_.addRigidBody(&body);
         return body;
     }

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -23,12 +24,33 @@ constexpr ImU32 grid_major = IM_COL32(205, 205, 205, 255);
 constexpr ImU32 grid_minor = IM_COL32(236, 236, 236, 255);
 constexpr float text_size = 15.0f;
 
-// Colour-blind-safe hues (Okabe and Ito), one per method in the order given.
-ImU32 method_colour(std::size_t i) {
+// Colour-blind-safe hues (Okabe and Ito), one per method of ours in the order given; the other engines have
+// their own colours and shapes (below), whatever else is charted.
+ImU32 our_colour(std::size_t i) {
     constexpr ImU32 colours[] = {IM_COL32(0, 114, 178, 255),   IM_COL32(230, 159, 0, 255), IM_COL32(0, 158, 115, 255),
                                  IM_COL32(204, 121, 167, 255), IM_COL32(213, 94, 0, 255),  IM_COL32(86, 180, 233, 255),
                                  IM_COL32(120, 120, 0, 255)};
     return colours[i % std::size(colours)];
+}
+
+// How a method is drawn: its colour and marker shape (0-4 ours by position, 5-7 the other engines).
+struct MethodStyle {
+    ImU32 colour;
+    int shape;
+};
+
+MethodStyle method_style(const std::vector<std::string>& methods, std::size_t m) {
+    constexpr std::array<std::pair<std::string_view, MethodStyle>, 3> engines{{
+        {"bullet", {IM_COL32(20, 20, 20, 255), 5}},
+        {"ode", {IM_COL32(140, 80, 20, 255), 6}},
+        {"mujoco", {IM_COL32(130, 30, 130, 255), 7}},
+    }};
+    for (const auto& [name, style] : engines)
+        if (methods[m] == name) return style;
+    std::size_t ours = 0;  // the position among our methods only
+    for (std::size_t i = 0; i < m; ++i)
+        if (std::none_of(engines.begin(), engines.end(), [&](const auto& e) { return methods[i] == e.first; })) ++ours;
+    return {our_colour(ours), static_cast<int>(ours % 5)};
 }
 
 void text(ImDrawList& list, ImVec2 at, ImU32 colour, const std::string& s, float size = text_size) {
@@ -40,9 +62,9 @@ float text_width(const std::string& s, float size = text_size) {
 }
 
 // Marker shapes by method, so series stay apart in grey too: filled when the run held, hollow when it failed.
-void marker(ImDrawList& list, std::size_t method, ImVec2 c, ImU32 colour, bool filled, float r = 5.5f) {
+void marker(ImDrawList& list, int shape, ImVec2 c, ImU32 colour, bool filled, float r = 5.5f) {
     if (!filled) list.AddCircleFilled(c, r + 1.0f, white, 16);  // hollow: white inside, over the lines
-    switch (method % 5) {
+    switch (shape) {
         case 0:
             filled ? list.AddCircleFilled(c, r, colour, 16) : list.AddCircle(c, r, colour, 16, 2.0f);
             break;
@@ -59,6 +81,22 @@ void marker(ImDrawList& list, std::size_t method, ImVec2 c, ImU32 colour, bool f
             const float q = r * 1.3f;
             const ImVec2 a{c.x, c.y - q}, b{c.x + q, c.y}, d{c.x, c.y + q}, e{c.x - q, c.y};
             filled ? list.AddQuadFilled(a, b, d, e, colour) : list.AddQuad(a, b, d, e, colour, 2.0f);
+            break;
+        }
+        case 5: {  // bullet: a triangle pointing down
+            const ImVec2 a{c.x, c.y + r * 1.2f}, b{c.x + r * 1.1f, c.y - r * 0.8f}, d{c.x - r * 1.1f, c.y - r * 0.8f};
+            filled ? list.AddTriangleFilled(a, b, d, colour) : list.AddTriangle(a, b, d, colour, 2.0f);
+            break;
+        }
+        case 6:  // ode: a plus
+            list.AddLine({c.x - r * 1.2f, c.y}, {c.x + r * 1.2f, c.y}, colour, filled ? 3.0f : 1.5f);
+            list.AddLine({c.x, c.y - r * 1.2f}, {c.x, c.y + r * 1.2f}, colour, filled ? 3.0f : 1.5f);
+            break;
+        case 7: {  // mujoco: a hexagon
+            ImVec2 corners[6];
+            for (int k = 0; k < 6; ++k)
+                corners[k] = {c.x + r * 1.15f * std::cos(k * 1.0471976f), c.y + r * 1.15f * std::sin(k * 1.0471976f)};
+            filled ? list.AddConvexPolyFilled(corners, 6, colour) : list.AddPolyline(corners, 6, colour, true, 2.0f);
             break;
         }
         default:
@@ -116,7 +154,8 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
     for (const RunResult& r : run.rows)
         if (r.scene == spec.name) rows.push_back(&r);
     // The error axis shows a decade above the target and two below it, whatever the runs gave.
-    std::vector<double> times, errors{spec.target * 10.0, spec.target / 100.0};
+    std::vector<double> times, errors;
+    if (spec.verdict) errors = {spec.target * 10.0, spec.target / 100.0};
     int nan_runs = 0;
     for (const RunResult* r : rows) {
         if (std::isnan(r->accuracy.error)) {
@@ -162,11 +201,15 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
     const std::string x_name = "time per step (ms)";
     text(list, {(p0.x + p1.x - text_width(x_name)) / 2, p1.y + 22}, ink, x_name);
 
-    // The target: configurations below the dashed line meet it.
-    const float target_y = py(spec.target);
-    dashed_line(list, {p0.x, target_y}, {p1.x, target_y}, IM_COL32(90, 90, 90, 255));
-    const std::string target = "target " + bench::metric_text(spec, spec.target);
-    text(list, {p0.x + 4, target_y - 18}, IM_COL32(90, 90, 90, 255), target);
+    // The target: configurations below the dashed line meet it. A scene that declares none has no line.
+    if (spec.verdict) {
+        const float target_y = py(spec.target);
+        dashed_line(list, {p0.x, target_y}, {p1.x, target_y}, IM_COL32(90, 90, 90, 255));
+        const std::string target = "target " + bench::metric_text(spec, spec.target);
+        text(list, {p0.x + 4, target_y - 18}, IM_COL32(90, 90, 90, 255), target);
+    } else {
+        text(list, {p0.x + 4, p0.y + 4}, IM_COL32(90, 90, 90, 255), "no bench target declared: no verdict");
+    }
 
     // Every run's marker where its data puts it, then moved aside (with a thin line back to that place) when
     // another marker is already there: equal errors are common (two counts both at rest, 0 on the bottom edge).
@@ -207,17 +250,18 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
         for (const Placed& p : placed)
             if (p.method == m) line.push_back(p.marker);
         if (line.size() > 1)
-            list.AddPolyline(line.data(), static_cast<int>(line.size()), (method_colour(m) & 0x00FFFFFF) | 0x90000000,
-                             0, 1.5f);
+            list.AddPolyline(line.data(), static_cast<int>(line.size()),
+                             (method_style(run.methods, m).colour & 0x00FFFFFF) | 0x90000000, 0, 1.5f);
     }
     // Markers, each with a thin line from its data's place when it had to move, then N beside each in the first
     // place free of other labels and markers.
     for (const Placed& p : placed) {
         if (p.marker.x != p.at.x || p.marker.y != p.at.y) {
-            list.AddLine(p.at, p.marker, (method_colour(p.method) & 0x00FFFFFF) | 0xB0000000, 1.0f);
-            list.AddCircleFilled(p.at, 1.5f, method_colour(p.method), 8);
+            list.AddLine(p.at, p.marker, (method_style(run.methods, p.method).colour & 0x00FFFFFF) | 0xB0000000, 1.0f);
+            list.AddCircleFilled(p.at, 1.5f, method_style(run.methods, p.method).colour, 8);
         }
-        marker(list, p.method, p.marker, method_colour(p.method), p.run->accuracy.holds);
+        const MethodStyle style = method_style(run.methods, p.method);
+        marker(list, style.shape, p.marker, style.colour, p.run->accuracy.holds);
     }
     std::vector<ImVec4> taken;  // label boxes (x0, y0, x1, y1)
     // Each marker's box, a front marker's ring (radius 10) included, so no label sits on either.
@@ -246,7 +290,7 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
                 break;
             }
         taken.push_back({at.x, at.y, at.x + w, at.y + h});
-        text(list, at, method_colour(p.method), label, 14.0f);
+        text(list, at, method_style(run.methods, p.method).colour, label, 14.0f);
     }
 }
 
@@ -298,7 +342,7 @@ std::string speed_accuracy_png(const BenchRun& run) {
              "sits on the bottom edge.");
         float at = 12;
         for (std::size_t m = 0; m < run.methods.size(); ++m) {
-            marker(list, m, {at + 6, 84}, method_colour(m), true);
+            marker(list, method_style(run.methods, m).shape, {at + 6, 84}, method_style(run.methods, m).colour, true);
             text(list, {at + 16, 75}, ink, run.methods[m]);
             at += 34 + text_width(run.methods[m]);
         }

@@ -1,11 +1,18 @@
 #include "bench/bench_plan.hpp"
 
 #include "formats/input_error.hpp"
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+#include "formats/scene_file.hpp"
+#include "world/world.hpp"
 #include "methods/method_table.hpp"
+#include "bench/adapters/engine_adapter.hpp"
 
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
+#include <limits>
 
 namespace impulse::bench {
 
@@ -16,18 +23,18 @@ namespace {
 // 0.5 m high, so 0.25 m). Durations: 10 s (Bullet's figures are over 10 s), except the 1000-box grid (2 s:
 // 4000 contacts a frame for 30 configurations); the default matrix must finish within 15 minutes on 2 cores.
 const std::array<BenchScene, 12> scenes{{
-    {"stack_10", Metric::top_drift, 0.05, 0.5, 600, true},
-    {"stack_20", Metric::top_drift, 0.05, 0.5, 600, true},
-    {"pyramid_20", Metric::top_drift, 0.05, 0.5, 600, true},
-    {"brick_wall", Metric::top_drift, 0.05, 0.25, 600, true},
-    {"mass_ratio_100", Metric::top_drift, 0.05, 0.5, 600, true},
-    {"mass_ratio_1000", Metric::top_drift, 0.05, 0.5, 600, true},
-    {"deep_plank", Metric::end_penetration, 0.011, 0.05, 120, true},
-    {"box_resting", Metric::jitter, 0.005, 0.05, 600, true},
-    {"spinning_box", Metric::energy_gain, 0.01, 0.05, 300, true},
-    {"grid_1000", Metric::any_drift, 0.05, 0.5, 120, true},
-    {"sphere_drop", Metric::restitution_error, 0.01, 0.0, 120, false},
-    {"two_spheres", Metric::momentum_error, 1e-9, 0.0, 120, false},
+    {"stack_10", Metric::top_drift, 0.05, 0.5, 600, true, true},
+    {"stack_20", Metric::top_drift, 0.05, 0.5, 600, true, true},
+    {"pyramid_20", Metric::top_drift, 0.05, 0.5, 600, true, true},
+    {"brick_wall", Metric::top_drift, 0.05, 0.25, 600, true, true},
+    {"mass_ratio_100", Metric::top_drift, 0.05, 0.5, 600, true, true},
+    {"mass_ratio_1000", Metric::top_drift, 0.05, 0.5, 600, true, true},
+    {"deep_plank", Metric::end_penetration, 0.011, 0.05, 120, true, true},
+    {"box_resting", Metric::jitter, 0.005, 0.05, 600, true, true},
+    {"spinning_box", Metric::energy_gain, 0.01, 0.05, 300, true, true},
+    {"grid_1000", Metric::any_drift, 0.05, 0.5, 120, true, true},
+    {"sphere_drop", Metric::restitution_error, 0.01, 0.0, 120, false, true},
+    {"two_spheres", Metric::momentum_error, 1e-9, 0.0, 120, false, true},
 }};
 
 }  // namespace
@@ -80,7 +87,95 @@ const BenchScene* find_bench_scene(std::string_view name) {
 }
 
 std::vector<std::string> default_methods() {
-    return {"book", "sweep", "pgs", "pgs_split", "soft_step"};
+    std::vector<std::string> methods{"book", "sweep", "pgs", "pgs_split", "soft_step"};
+    for (const EngineRow& e : built_engines()) methods.emplace_back(e.name);
+    return methods;
+}
+
+std::vector<std::string> method_names() {
+    std::vector<std::string> names;
+    for (const std::string_view p : preset_names()) names.emplace_back(p);
+    for (const EngineRow& e : built_engines()) names.emplace_back(e.name);
+    return names;
+}
+
+std::span<const std::string_view> engine_names() {
+    static constexpr std::array<std::string_view, 3> names{"bullet", "ode", "mujoco"};
+    return names;
+}
+
+Metric metric_named(std::string_view name) {
+    for (const MetricWords& w : metric_words)
+        if (w.name == name) return w.metric;
+    throw std::out_of_range("no metric named " + std::string(name));
+}
+
+namespace {
+
+// Half the body's height along gravity: how far its top may drift before it counts as a collapse (half a box).
+double half_height(const Scene& scene, std::size_t body) {
+    const std::optional<Shape>& shape = scene.shapes[body];
+    if (!shape) return 0.5;
+    if (const auto* sphere = std::get_if<Sphere>(&*shape)) return sphere->radius;
+    const Vec3 up = scene.world.gravity.isZero() ? Vec3::UnitY() : Vec3(-scene.world.gravity.normalized());
+    const Vec3 along = scene.bodies[body].orientation.conjugate() * up;  // gravity in the body's axes
+    return along.cwiseAbs().dot(std::get<Box>(*shape).half_size);
+}
+
+}  // namespace
+
+bool declares_bench_block(std::string_view scene_text) {
+    const nlohmann::ordered_json document = io::parse_json_text(scene_text);
+    return document.is_object() && document.contains("bench");
+}
+
+BenchScene declared_bench_scene(std::string name, std::string_view scene_text) {
+    const nlohmann::ordered_json document = io::parse_json_text(scene_text);
+    const Scene scene = io::read_scene(document);  // validates the whole file, the bench block with it
+    const int own_frames = scene.world.frames;
+    if (!document.contains("bench"))
+        return {std::move(name),
+                Metric::top_drift,
+                std::numeric_limits<double>::quiet_NaN(),
+                std::numeric_limits<double>::infinity(),
+                own_frames,
+                false,
+                false};
+    const auto& block = document["bench"];
+    BenchScene spec{std::move(name),
+                    metric_named(block["metric"].get<std::string>()),
+                    block["target"].get<double>(),
+                    0.0,
+                    own_frames,
+                    true,
+                    true};
+    if (block.contains("duration")) {
+        const double frames = std::round(block["duration"].get<double>() / scene.settings.duration);
+        if (frames < 1.0) throw io::InputError("bench.duration", "is shorter than one frame of settings.duration");
+        spec.frames = static_cast<int>(frames);
+    }
+    spec.stress = spec.metric != Metric::restitution_error && spec.metric != Metric::momentum_error;
+    if (block.contains("failure_threshold"))
+        spec.failure_threshold = block["failure_threshold"].get<double>();
+    else if (spec.metric == Metric::top_drift || spec.metric == Metric::any_drift)
+        spec.failure_threshold = half_height(scene, highest_body(scene));
+    else if (spec.stress)
+        spec.failure_threshold = 10.0 * spec.target;
+    return spec;
+}
+
+Shard parse_shard(std::string_view text) {
+    const std::size_t slash = text.find('/');
+    Shard shard;
+    const auto whole = [](std::string_view part, int& value) {
+        const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+        return !part.empty() && error == std::errc() && end == part.data() + part.size();
+    };
+    if (slash == std::string_view::npos || !whole(text.substr(0, slash), shard.k) ||
+        !whole(text.substr(slash + 1), shard.n) || shard.n < 1 || shard.n > 10000 || shard.k < 1 || shard.k > shard.n)
+        throw io::InputError("--shard", "expected K/N with whole numbers 1 <= K <= N <= 10000 (e.g. 2/4), got \"" +
+                                            std::string(text) + "\"");
+    return shard;
 }
 
 std::vector<int> default_iterations() {

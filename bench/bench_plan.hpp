@@ -3,6 +3,8 @@
 // methods (preset names), and how one iteration count N maps onto each method's own knob.
 
 #include "settings/settings.hpp"
+#include "settings/settings.hpp"
+#include "scene/scene.hpp"
 
 #include <optional>
 #include <span>
@@ -37,14 +39,43 @@ struct BenchScene {
     double failure_threshold;
     int frames;   // frames simulated (the scene's duration is frames x 1/60 s)
     bool stress;  // a column of the stability matrix
+    // False for a scene file that declares no "bench" block: its error is the top body's drift (for the chart),
+    // it has no target (NaN) and no verdict but NaN, and it is no column of the stability matrix.
+    bool verdict;
 };
 
 // The bench's scenes in the order they are run and drawn.
 std::span<const BenchScene> bench_scenes();
 const BenchScene* find_bench_scene(std::string_view name);
 
-// Methods are preset names; the default set is every method but the chapter's text.
+// The bench scene a scene file declares (its "bench" block, docs/scenes.md), named `name`: metric, target,
+// duration (default the scene's settings.frames) and failure threshold (default: for top_drift and any_drift half
+// the top body's height along gravity, for restitution_error and momentum_error none, else 10 x the target).
+// Without a block: the general measures and no verdict. Throws io::InputError (a JSON path) for a bad scene.
+BenchScene declared_bench_scene(std::string name, std::string_view scene_text);
+// Whether the scene file's text has a "bench" block (after it was read by declared_bench_scene).
+bool declares_bench_block(std::string_view scene_text);
+Metric metric_named(std::string_view name);  // one of metric_name's; throws std::out_of_range otherwise
+
+// Methods are preset names or other engines' (bench/adapters); the default set is every method but the chapter's
+// text, then every engine this build has.
 std::vector<std::string> default_methods();
+// Every name --methods takes: the presets, then the built engines.
+std::vector<std::string> method_names();
+// The other engines a build may have, built or not ("bullet", "ode", "mujoco").
+std::span<const std::string_view> engine_names();
+
+// --shard K/N: this run is the K-th (from 1) of N shards, running configurations K-1, K-1+N, ... of the
+// scene-major, then method, then N order.
+struct Shard {
+    int k = 1;
+    int n = 1;
+    bool runs(std::size_t configuration) const {
+        return configuration % static_cast<std::size_t>(n) == static_cast<std::size_t>(k - 1);
+    }
+};
+// "2/4" -> {2, 4}; throws io::InputError("--shard", ...) unless 1 <= K <= N <= 10000.
+Shard parse_shard(std::string_view text);
 std::vector<int> default_iterations();  // 1, 2, 4, 8, 16, 32
 
 // The one place an iteration count N becomes settings:

@@ -110,11 +110,13 @@ std::vector<bool> front_flags(const std::vector<RunResult>& rows) {
     return on;
 }
 
-const BenchScene& spec_of(const std::string& name) {
-    return *find_bench_scene(name);
-}
-
 }  // namespace
+
+const BenchScene* scene_of(const BenchRun& run, const std::string& name) {
+    for (const BenchScene* s : run.scenes)
+        if (s->name == name) return s;
+    return nullptr;
+}
 
 std::string metric_text(const BenchScene& spec, double value) {
     if (std::isnan(value)) return "NaN";
@@ -156,12 +158,12 @@ std::string results_csv(const BenchRun& run) {
     for (std::size_t i = 0; i < run.rows.size(); ++i) {
         const RunResult& r = run.rows[i];
         const Accuracy& a = r.accuracy;
-        const BenchScene& spec = spec_of(r.scene);
+        const BenchScene& spec = *scene_of(run, r.scene);
         const std::vector<std::string> fields{
             r.scene,
             std::string(metric_name(spec.metric)),
             std::string(metric_unit(spec.metric)),
-            number(spec.target),
+            spec.verdict ? number(spec.target) : "",
             r.method,
             std::to_string(r.n),
             r.iteration_setting,
@@ -214,9 +216,18 @@ nlohmann::ordered_json results_json(const BenchRun& run, const Provenance& prove
     doc["methods"] = run.methods;
     doc["iterations"] = run.iterations;
     json mapping = json::object();
+    json engines = json::object();
     for (const std::string& m : run.methods)
-        if (const auto s = preset(m)) mapping[m] = iteration_setting(*s);
+        if (const auto s = preset(m)) {
+            mapping[m] = iteration_setting(*s);
+        } else if (const EngineRow* e = find_engine(m)) {
+            mapping[m] = e->iteration_setting;
+            engines[m] = e->version;
+        }
     doc["iteration_mapping"] = mapping;
+    doc["engines"] = engines;  // the other engines' library versions
+    doc["shard"] = {{"k", run.shard.k}, {"n", run.shard.n}};
+    if (!run.merged_from.empty()) doc["merged_from"] = run.merged_from;
 
     const std::vector<bool> front = front_flags(run.rows);
     json scenes = json::array();
@@ -226,9 +237,10 @@ nlohmann::ordered_json results_json(const BenchRun& run, const Provenance& prove
                       {"metric", metric_name(s->metric)},
                       {"meaning", metric_meaning(s->metric)},
                       {"unit", metric_unit(s->metric)},
-                      {"target", s->target},
+                      {"target", s->verdict ? json(s->target) : json(nullptr)},
                       {"failure_threshold", s->stress ? json(s->failure_threshold) : json(nullptr)},
                       {"stress", s->stress},
+                      {"verdict", s->verdict},
                       {"frames", frames},
                       {"warm_up_frames", warm_up_for(frames, run.timing)},
                       {"window_frames", window_for(frames, run.timing)}};
@@ -319,6 +331,10 @@ std::string stability_markdown(const BenchRun& run) {
         "scene's target: model no more than a scene needs.\n\n| scene | metric | target | cheapest | time per step | "
         "error |\n|---|---|---|---|---|---|\n";
     for (const BenchScene* s : run.scenes) {
+        if (!s->verdict) {
+            md += "| " + s->name + " | no bench block: general measures | none | no verdict | | |\n";
+            continue;
+        }
         md += "| " + s->name + " | " + std::string(metric_meaning(s->metric)) + " | <= " + metric_text(*s, s->target) +
               " | ";
         if (const auto best = cheapest_meeting_target(run.rows, s->name)) {

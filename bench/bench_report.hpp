@@ -77,7 +77,13 @@ struct BenchRun {
     Timing timing;
     std::vector<RunResult> rows;  // scene-major, then method, then N
     double wall_time = 0.0;       // s
+    Shard shard;                  // which configurations ran (1/1: all)
+    // A merged run: each shard's own provenance, k, n and wall time (results.json "merged_from"); else empty.
+    nlohmann::ordered_json merged_from = nlohmann::ordered_json::array();
 };
+
+// The spec of the scene a row names, among the run's scenes (null if it is not one of them).
+const BenchScene* scene_of(const BenchRun& run, const std::string& name);
 
 std::string results_csv(const BenchRun& run);
 nlohmann::ordered_json results_json(const BenchRun& run, const Provenance& provenance);

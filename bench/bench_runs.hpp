@@ -3,6 +3,7 @@
 // timed: every frame's step is timed, the time per step is the median over a window of frames after a
 // warm-up, and further repeats re-run that window from a snapshot of the state at its start.
 
+#include "bench/adapters/engine_adapter.hpp"
 #include "bench/bench_metrics.hpp"
 #include "bench/bench_plan.hpp"
 #include "scene/scene.hpp"
@@ -41,9 +42,15 @@ int frames_for(const BenchScene& spec, const Timing& timing);
 int warm_up_for(int frames, const Timing& timing);
 int window_for(int frames, const Timing& timing);
 
-// `scene_text` is the scene file's text; `method` a preset name. Throws io::InputError for a bad file.
+// `scene_text` is the scene file's text; `method` a preset name or an engine's (then run_engine_configuration).
+// Throws io::InputError for a bad file.
 RunResult run_configuration(const std::string& scene_text, const BenchScene& spec, std::string_view method, int n,
                             const Timing& timing);
+
+// The same for another engine (bench/adapters): `scene` as read from the file. Timing covers the engine's step
+// only; each further repeat rebuilds the engine's world and steps it untimed to the window.
+RunResult run_engine_configuration(const Scene& scene, const BenchScene& spec, const EngineRow& engine, int n,
+                                   const Timing& timing);
 
 // Median of the values (the upper one of an even count); 0 for none.
 double median(std::vector<double> values);

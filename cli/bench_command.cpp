@@ -4,6 +4,7 @@
 
 #include "bench/bench_charts.hpp"
 #include "bench/chart_canvas.hpp"
+#include "bench/bench_merge.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_runs.hpp"
 #include "cli/cli.hpp"
@@ -18,6 +19,7 @@
 #include "world/world.hpp"
 
 #include <chrono>
+#include <deque>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -150,61 +152,87 @@ int scaling(const BenchOptions& options, const fs::path& folder, std::ostream& o
 
 }  // namespace
 
-int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress) {
-    // Every flag is checked before anything runs.
-    bench::BenchRun run;
-    std::vector<std::string> scene_names;
-    for (const bench::BenchScene& s : bench::bench_scenes()) scene_names.push_back(s.name);
-    const std::vector<std::string> chosen_scenes =
-        options.scenes ? bench::parse_names(*options.scenes, scene_names, "--scenes", "bench scene") : scene_names;
-    std::vector<std::string> preset_list;
-    for (const std::string_view p : preset_names()) preset_list.emplace_back(p);
-    run.methods = options.methods ? bench::parse_names(*options.methods, preset_list, "--methods", "method")
-                                  : bench::default_methods();
-    run.iterations = options.iterations ? bench::parse_iterations(*options.iterations) : bench::default_iterations();
-    if (options.repeats < 1) throw io::InputError("--repeats", "must be >= 1, got " + std::to_string(options.repeats));
-    const fs::path folder = checked_out_folder(options.out);
-    if (options.scaling) return scaling(options, folder, out, progress);
+namespace {
 
-    run.timing.repeats = options.repeats;
-    run.timing.frames = options.frames;
-    run.timing.measure_recording = true;  // only for the representative configuration, below
-    std::vector<std::string> texts;
-    for (const std::string& name : chosen_scenes) {
-        run.scenes.push_back(bench::find_bench_scene(name));
-        texts.push_back(read_input_file(scene_path(options, name)));
+// The scenes --scenes names, each either a bench scene's name (scenes/<name>.json, judged as the table in
+// bench_plan.cpp says) or a scene file's path (judged by its "bench" block, or the general measures without one;
+// the file of a bench scene given by its path is that bench scene). `specs` owns what run.scenes points to.
+void choose_scenes(const BenchOptions& options, bench::BenchRun& run, std::deque<bench::BenchScene>& specs,
+                   std::vector<std::string>& texts, std::vector<std::string>& paths) {
+    std::vector<std::string> entries;
+    if (options.scenes) {
+        std::string_view list = *options.scenes;
+        for (std::size_t start = 0;;) {
+            const std::size_t comma = list.find(',', start);
+            entries.emplace_back(list.substr(start, comma == std::string_view::npos ? comma : comma - start));
+            if (comma == std::string_view::npos) break;
+            start = comma + 1;
+        }
+    } else {
+        for (const bench::BenchScene& s : bench::bench_scenes()) entries.push_back(s.name);
     }
-
-    // Recording overhead for one configuration per scene: the first method at the iteration count nearest 4
-    // (the book's own), so the ratio is measured where the recorder is used most.
-    int representative = run.iterations.front();
-    for (const int n : run.iterations)
-        if (std::abs(n - 4) < std::abs(representative - 4)) representative = n;
-
-    int total = 0;
-    for (const bench::BenchScene* s : run.scenes)
-        total += bench::frames_for(*s, run.timing) * static_cast<int>(run.methods.size() * run.iterations.size());
-    ProgressBar bar(progress, total);
-    int done = 0;
-    const auto start = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < run.scenes.size(); ++i)
-        for (const std::string& method : run.methods)
-            for (const int n : run.iterations) {
-                bench::Timing timing = run.timing;
-                timing.measure_recording = method == run.methods.front() && n == representative;
-                try {
-                    run.rows.push_back(bench::run_configuration(texts[i], *run.scenes[i], method, n, timing));
-                } catch (const io::InputError& e) {
-                    throw FileError{scene_path(options, run.scenes[i]->name), e.where(), e.problem()};
+    std::string known;
+    for (const bench::BenchScene& s : bench::bench_scenes()) known += (known.empty() ? "" : ", ") + s.name;
+    for (const std::string& entry : entries) {
+        const bool is_path = entry.find('/') != std::string::npos || fs::path(entry).extension() == ".json";
+        if (entry.empty()) throw io::InputError("--scenes", "an empty scene name in \"" + *options.scenes + "\"");
+        std::string path = is_path ? entry : scene_path(options, entry);
+        const bench::BenchScene* table = is_path ? nullptr : bench::find_bench_scene(entry);
+        if (!is_path && !table)
+            throw io::InputError("--scenes", "no bench scene named \"" + entry + "\" (" + known +
+                                                 "); give your own scene by its path, e.g. scenes/stack_3.json");
+        std::string text;
+        try {
+            text = read_input_file(path);
+        } catch (const FileError& e) {
+            throw io::InputError("--scenes", "cannot read '" + path + "': " + e.problem);
+        }
+        const std::string name = fs::path(path).stem().string();
+        bench::BenchScene spec;
+        try {
+            spec = bench::declared_bench_scene(name, text);
+            // A bench scene's own file given by its path is that bench scene, unless it declares its own block.
+            if (is_path && !bench::declares_bench_block(text))
+                if (const bench::BenchScene* named = bench::find_bench_scene(name)) {
+                    std::error_code error;
+                    if (fs::equivalent(path, scene_path(options, name), error)) table = named;
                 }
-                done += bench::frames_for(*run.scenes[i], run.timing);
-                bar.update(done);
-            }
-    bar.finish();
-    run.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        } catch (const io::InputError& e) {
+            throw FileError{path, e.where(), e.problem()};
+        }
+        for (const bench::BenchScene* s : run.scenes)
+            if (s->name == name)
+                throw io::InputError("--scenes", "two scenes are called \"" + name +
+                                                     "\" (a scene is named by its "
+                                                     "file's name)");
+        specs.push_back(table ? *table : spec);
+        run.scenes.push_back(&specs.back());
+        texts.push_back(std::move(text));
+        paths.push_back(path);
+    }
+}
 
-    // The files: text first, then the pictures; all staged, then renamed together.
-    const bench::Provenance where = provenance();
+std::vector<std::string> chosen_methods(const BenchOptions& options) {
+    if (!options.methods) return bench::default_methods();
+    const std::vector<std::string> known = bench::method_names();
+    // An engine this build does not have is not a typo: say why it is missing.
+    std::string_view list = *options.methods;
+    for (const std::string_view engine : bench::engine_names())
+        if (!bench::find_engine(engine))
+            for (std::size_t at = list.find(engine); at != std::string_view::npos; at = list.find(engine, at + 1)) {
+                const std::size_t end = at + engine.size();
+                if ((at == 0 || list[at - 1] == ',') && (end == list.size() || list[end] == ','))
+                    throw io::InputError("--methods",
+                                         std::string(engine) +
+                                             " is not in this build: its library was not found when "
+                                             "impulse-lab was configured (scripts/install-deps installs it)");
+            }
+    return bench::parse_names(*options.methods, known, "--methods", "method");
+}
+
+// The five files, then the summary: per scene, the cheapest configuration that meets its target.
+int write_results(const bench::BenchRun& run, const bench::Provenance& where, const fs::path& folder, std::ostream& out,
+                  std::ostream& err) {
     const io::HeldInterruptions held;  // Ctrl-C waits until every file is in place (or none is)
     std::vector<io::StagedFile> files;
     std::error_code error;
@@ -223,26 +251,29 @@ int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& 
     }
     for (io::StagedFile& f : files) f.commit();
 
-    // The summary: per scene, the cheapest configuration that meets its target.
     out << "bench: " << run.scenes.size() << " scene(s) x " << run.methods.size() << " method(s) x "
-        << run.iterations.size() << " iteration count(s) = " << run.rows.size() << " runs in "
-        << fixed("%.0f", run.wall_time) << " s (" << run.timing.repeats << " timed window(s) each)\n";
+        << run.iterations.size() << " iteration count(s)"
+        << (run.shard.n > 1 ? ", shard " + std::to_string(run.shard.k) + "/" + std::to_string(run.shard.n) : "")
+        << (run.merged_from.empty() ? "" : ", merged from " + std::to_string(run.merged_from.size()) + " shards")
+        << " = " << run.rows.size() << " runs in " << fixed("%.0f", run.wall_time) << " s (" << run.timing.repeats
+        << " timed window(s) each)\n";
     out << "scene             metric                                  target       cheapest meeting it      ms/step    "
            " "
            "error\n";
     for (const bench::BenchScene* s : run.scenes) {
         char line[256];
-        const std::string target = "<= " + bench::metric_text(*s, s->target);
-        std::string cheapest = "none", ms, error_text;
+        const std::string target = s->verdict ? "<= " + bench::metric_text(*s, s->target) : "none";
+        std::string cheapest = s->verdict ? "none" : "no verdict", ms, error_text;
         if (const auto best = bench::cheapest_meeting_target(run.rows, s->name)) {
             const bench::RunResult& r = run.rows[*best];
             cheapest = r.method + ", N = " + std::to_string(r.n);
             ms = fixed("%.3g", r.time_per_step * 1e3);
             error_text = bench::metric_text(*s, r.accuracy.error);
         }
-        std::snprintf(line, sizeof line, "%-17s %-39s %-12s %-24s %7s  %s\n", s->name.c_str(),
-                      std::string(bench::metric_meaning(s->metric)).c_str(), target.c_str(), cheapest.c_str(),
-                      ms.c_str(), error_text.c_str());
+        const std::string meaning =
+            s->verdict ? std::string(bench::metric_meaning(s->metric)) : "general measures (no bench block)";
+        std::snprintf(line, sizeof line, "%-17s %-39s %-12s %-24s %7s  %s\n", s->name.c_str(), meaning.c_str(),
+                      target.c_str(), cheapest.c_str(), ms.c_str(), error_text.c_str());
         out << line;
     }
     for (const bench::RunResult& r : run.rows)
@@ -256,6 +287,91 @@ int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& 
         return exit_internal_error;
     }
     return exit_ok;
+}
+
+// --merge DIR...: the shards' results.json joined, and the five files written from them.
+int merge(const BenchOptions& options, const fs::path& folder, std::ostream& out, std::ostream& err) {
+    for (const auto& [given, flag] : {std::pair{options.scenes.has_value(), "--scenes"},
+                                      {options.methods.has_value(), "--methods"},
+                                      {options.iterations.has_value(), "--iterations"},
+                                      {options.shard.has_value(), "--shard"},
+                                      {options.frames.has_value(), "--frames"},
+                                      {options.scaling, "--scaling"}})
+        if (given)
+            throw io::InputError("--merge",
+                                 std::string("cannot be combined with ") + flag + " (the shards say what ran)");
+    std::vector<nlohmann::ordered_json> documents;
+    for (const std::string& dir : options.merge) {
+        const fs::path file = fs::path(dir) / "results.json";
+        std::string text;
+        try {
+            text = read_input_file(file.string());
+        } catch (const FileError& e) {
+            throw io::InputError("--merge", "cannot read '" + file.string() + "': " + e.problem);
+        }
+        try {
+            documents.push_back(io::parse_json_text(text));
+        } catch (const io::InputError& e) {
+            throw io::InputError("--merge", "'" + file.string() + "' is not JSON: " + e.problem());
+        }
+    }
+    const std::unique_ptr<bench::MergedRun> merged = bench::merge_results(documents, options.merge);
+    return write_results(merged->run, merged->provenance, folder, out, err);
+}
+
+}  // namespace
+
+int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress) {
+    // Every flag is checked before anything runs.
+    const fs::path folder = checked_out_folder(options.out);
+    if (!options.merge.empty()) return merge(options, folder, out, err);
+    bench::BenchRun run;
+    run.methods = chosen_methods(options);
+    run.iterations = options.iterations ? bench::parse_iterations(*options.iterations) : bench::default_iterations();
+    if (options.repeats < 1) throw io::InputError("--repeats", "must be >= 1, got " + std::to_string(options.repeats));
+    if (options.shard) run.shard = bench::parse_shard(*options.shard);
+    std::deque<bench::BenchScene> specs;
+    std::vector<std::string> texts, paths;
+    if (!options.scaling) choose_scenes(options, run, specs, texts, paths);
+    if (options.scaling) return scaling(options, folder, out, progress);
+
+    run.timing.repeats = options.repeats;
+    run.timing.frames = options.frames;
+    run.timing.measure_recording = true;  // only for the representative configuration, below
+
+    // Recording overhead for one configuration per scene: the first method at the iteration count nearest 4
+    // (the book's own), so the ratio is measured where the recorder is used most.
+    int representative = run.iterations.front();
+    for (const int n : run.iterations)
+        if (std::abs(n - 4) < std::abs(representative - 4)) representative = n;
+
+    // Configurations are numbered scene-major, then method, then N; a shard runs every N-th from its K-th.
+    int total = 0;
+    std::size_t configuration = 0;
+    for (const bench::BenchScene* s : run.scenes)
+        for (std::size_t m = 0; m < run.methods.size() * run.iterations.size(); ++m)
+            if (run.shard.runs(configuration++)) total += bench::frames_for(*s, run.timing);
+    ProgressBar bar(progress, total);
+    int done = 0;
+    configuration = 0;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t i = 0; i < run.scenes.size(); ++i)
+        for (const std::string& method : run.methods)
+            for (const int n : run.iterations) {
+                if (!run.shard.runs(configuration++)) continue;
+                bench::Timing timing = run.timing;
+                timing.measure_recording = method == run.methods.front() && n == representative;
+                try {
+                    run.rows.push_back(bench::run_configuration(texts[i], *run.scenes[i], method, n, timing));
+                } catch (const io::InputError& e) {
+                    throw FileError{paths[i], e.where(), e.problem()};
+                }
+                done += bench::frames_for(*run.scenes[i], run.timing);
+                bar.update(done);
+            }
+    bar.finish();
+    run.wall_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return write_results(run, provenance(), folder, out, err);
 }
 
 }  // namespace impulse::cli

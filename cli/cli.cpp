@@ -1,6 +1,8 @@
 #include "cli/cli.hpp"
 #include "cli/deferred_signals.hpp"
 
+#include "bench/adapters/engine_adapter.hpp"
+#include "bench/bench_plan.hpp"
 #include "cli/commands.hpp"
 #include "cli/flags.hpp"
 #include "model/input_files.hpp"
@@ -218,13 +220,17 @@ void add_bench(CLI::App& app, BenchOptions& o, FlagCatalog& c) {
         "Example: impulse-lab bench --scenes stack_10,box_resting --methods book,pgs --iterations 1,4,16");
     bench
         ->add_option("--scenes", o.scenes,
-                     "Bench scenes, comma-separated (default: all: stack_10, stack_20, pyramid_20, brick_wall, "
-                     "mass_ratio_100, mass_ratio_1000, deep_plank, box_resting, spinning_box, grid_1000, "
-                     "sphere_drop, two_spheres)")
+                     "Bench scenes or scene files, comma-separated: a name (default: all: stack_10, stack_20, "
+                     "pyramid_20, brick_wall, mass_ratio_100, mass_ratio_1000, deep_plank, box_resting, spinning_box, "
+                     "grid_1000, sphere_drop, two_spheres) or a path (e.g. scenes/stack_3.json), judged by its "
+                     "\"bench\" block or by the general measures")
         ->type_name("LIST");
+    std::string engines;
+    for (const bench::EngineRow& e : bench::built_engines()) engines += std::string(", ") + std::string(e.name);
     bench
         ->add_option("--methods", o.methods,
-                     "Presets, comma-separated (default: book, sweep, pgs, pgs_split, soft_step)")
+                     "Presets or other engines, comma-separated (default: book, sweep, pgs, pgs_split, soft_step" +
+                         engines + "; engines in this build: " + (engines.empty() ? "none" : engines.substr(2)) + ")")
         ->type_name("LIST");
     bench
         ->add_option("--iterations", o.iterations,
@@ -243,6 +249,23 @@ void add_bench(CLI::App& app, BenchOptions& o, FlagCatalog& c) {
     folder(bench->add_option("--scene-dir", o.scene_dir,
                              "Folder of the scene files (default: the installed scenes, share/impulse-lab/scenes)"),
            c);
+    formatted(bench->add_option("--shard", o.shard,
+                                "Run only the K-th of N shares of the configurations (every N-th from the K-th, "
+                                "scene-major, then method, then N) and write their results; join the shards with "
+                                "--merge"),
+              c, "K/N", "K/N: whole numbers, 1 <= K <= N <= 10000", [](const std::string& text) -> std::string {
+                  try {
+                      bench::parse_shard(text);
+                  } catch (const io::InputError& e) {
+                      return e.problem();
+                  }
+                  return {};
+              });
+    folder(bench->add_option("--merge", o.merge,
+                             "Instead of running: join the results.json of these shard folders (each from --shard "
+                             "K/N, every K once) and write the same five files into --out"),
+           c)
+        ->expected(1, -1);
     bench->add_flag("--scaling", o.scaling,
                     "Instead: time per resolved contact of the book preset on grid_10, grid_100, grid_1000 with "
                     "worst_first_search priority_queue and full_scan; prints it and writes scaling.csv");

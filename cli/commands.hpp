@@ -115,6 +115,8 @@ struct BenchOptions {
     std::optional<int> frames;             // overrides every scene's simulated frames
     std::optional<std::string> scene_dir;  // default: the data folder's scenes/ (cli/data_folder.hpp)
     bool scaling = false;                  // instead: time per resolved contact on grid_10..grid_1000
+    std::optional<std::string> shard;      // "K/N": run every N-th configuration from the K-th
+    std::vector<std::string> merge;        // instead: join these shard folders' results into --out
 };
 // `progress` is where a progress bar may go (a terminal), or null for none.
 int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress);

@@ -126,6 +126,15 @@ CLI::Option* output_file(CLI::Option* option, FlagCatalog& catalog) {
     return option;
 }
 
+CLI::Option* formatted(CLI::Option* option, FlagCatalog& catalog, const std::string& value_name,
+                       const std::string& words, std::function<std::string(const std::string&)> check) {
+    option->check(CLI::Validator([check](std::string& text) { return check(text); }, ""));
+    option->type_name(value_name);
+    add_words(option, words);
+    catalog.value_words[option] = words;
+    return option;
+}
+
 CLI::Option* folder(CLI::Option* option, FlagCatalog& catalog) {
     option->type_name("DIR");
     catalog.kinds[option] = ValueKind::folder;

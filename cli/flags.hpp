@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -32,6 +33,10 @@ CLI::Option* whole_number(CLI::Option* option, FlagCatalog& catalog, long long l
 CLI::Option* finite_number(CLI::Option* option, FlagCatalog& catalog, double lowest, double highest);
 CLI::Option* one_of(CLI::Option* option, FlagCatalog& catalog, std::vector<std::string> names,
                     const std::string& value_name);
+// A value in a form of its own (e.g. "K/N"): `check` returns what is wrong with a text, empty when it is good;
+// `words` says the form in the help ("K/N: whole numbers, 1 <= K <= N").
+CLI::Option* formatted(CLI::Option* option, FlagCatalog& catalog, const std::string& value_name,
+                       const std::string& words, std::function<std::string(const std::string&)> check);
 CLI::Option* input_file(CLI::Option* option, FlagCatalog& catalog);
 CLI::Option* output_file(CLI::Option* option, FlagCatalog& catalog);
 CLI::Option* folder(CLI::Option* option, FlagCatalog& catalog);

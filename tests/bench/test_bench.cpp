@@ -2,18 +2,22 @@
 // on tiny runs, the results files, and its flags; and the command end to end, its five files with the pictures,
 // which it draws with no display. How the pictures are drawn is checked in tests/bench.
 
+#include "bench/bench_merge.hpp"
 #include "bench/bench_metrics.hpp"
 #include "bench/bench_plan.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_runs.hpp"
 #include "bench/bench_charts.hpp"
 #include "support/png_image.hpp"
+#include "bench/bench_charts.hpp"
+#include "formats/input_error.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
 
 #include <cstdlib>
+#include <cmath>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -164,7 +168,7 @@ TEST_CASE("a top body sinking 0.1 m a frame is reported collapsed at the frame i
     scene.body_names = {"a", "b"};
     scene.body_materials = {"default", "default"};
     scene.materials["default"] = {};
-    const bench::BenchScene spec{"stack", bench::Metric::top_drift, 0.05, 0.5, 10, true};
+    const bench::BenchScene spec{"stack", bench::Metric::top_drift, 0.05, 0.5, 10, true, true};
     bench::AccuracyTracker tracker(scene, spec, 10);
     std::vector<RigidBody> bodies = scene.bodies;
     for (int frame = 0; frame < 10; ++frame) {
@@ -220,12 +224,20 @@ TEST_CASE("bad bench flags print one line naming the flag, exit with code 2 and 
         {{"--iterations", "2,2"}, "--iterations: 2 is given twice"},
         {{"--repeats", "0"}, "--repeats: must be from 1 to 1000, got 0"},
         {{"--repeats", "three"}, "--repeats: expected a whole number from 1 to 1000, got \"three\""},
+        {{"--shard", "3/2"}, "--shard: expected K/N with whole numbers 1 <= K <= N <= 10000 (e.g. 2/4), got \"3/2\""},
+        {{"--shard", "1"}, "--shard: expected K/N"},
+        {{"--scenes", dir.file("none.json").string()}, "--scenes: cannot read '"},
+        {{"--scenes", "two_spheres,two_spheres"}, "--scenes: two scenes are called \"two_spheres\""},
+        {{"--methods", "book,havok"}, "--methods: no method named \"havok\""},
+        {{"--merge", dir.file("nowhere").string()}, "--merge: cannot read '"},
+        {{"--merge", dir.file("nowhere").string(), "--shard", "1/2"}, "--merge: cannot be combined with --shard"},
         {{"--out", dir.file("missing/deeper").string()}, "--out"},
     };
     for (const auto& [flags, message] : cases) {
         std::vector<std::string> args{"bench", "--frames", "2"};
         args.insert(args.end(), flags.begin(), flags.end());
         if (flags[0] != "--out") args.insert(args.end(), {"--out", out});
+        if (flags[0] == "--merge") args.erase(args.begin() + 1, args.begin() + 3);  // no --frames
         const CliResult r = run_cli(args);
         CAPTURE(r.err);
         CHECK(r.code == 2);
@@ -289,6 +301,159 @@ TEST_CASE("a tiny bench run writes all five files, and its charts are legible pi
     const PngImage matrix = load_png(out / "stability.png");
     CHECK(matrix.width == 510);
     CHECK(distinct_colours(matrix) > 20);
+}
+
+namespace {
+
+const char* const tower_with_block = R"({
+  "ground": {},
+  "settings": {"frames": 30},
+  "bench": {"metric": "top_drift", "target": 0.02, "duration": 2},
+  "bodies": [
+    {"name": "low", "shape": {"type": "box", "half_size": [0.5, 0.5, 0.5]}, "position": [0, 0.5, 0]},
+    {"name": "high", "shape": {"type": "box", "half_size": [1, 0.25, 1]}, "position": [0, 1.25, 0]}]})";
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+    text.replace(text.find(from), from.size(), to);
+    return text;
+}
+
+}  // namespace
+
+TEST_CASE("a scene's bench block gives its metric, target, frames and a collapse at half the top body's height") {
+    // By hand: 2 s at the default 1/60 s is 120 frames; the top body is 0.5 m tall (half size 0.25 along gravity),
+    // so it has collapsed when it drifted 0.25 m.
+    const bench::BenchScene s = bench::declared_bench_scene("tower", tower_with_block);
+    CHECK(s.name == "tower");
+    CHECK(s.metric == bench::Metric::top_drift);
+    CHECK(s.target == 0.02);
+    CHECK(s.frames == 120);
+    CHECK(s.failure_threshold == doctest::Approx(0.25));
+    CHECK(s.stress);
+    CHECK(s.verdict);
+    // Other metrics fail at 10 x the target unless the block says where; isolated impacts have no verdict column.
+    const bench::BenchScene jitter = bench::declared_bench_scene(
+        "t", replaced(tower_with_block, R"("metric": "top_drift")", R"("metric": "jitter")"));
+    CHECK(jitter.failure_threshold == doctest::Approx(0.2));
+    const bench::BenchScene own =
+        bench::declared_bench_scene("t", replaced(tower_with_block, R"("duration": 2)", R"("failure_threshold": 0.1)"));
+    CHECK(own.failure_threshold == 0.1);
+    CHECK(own.frames == 30);  // no duration: the scene's settings.frames
+    CHECK_FALSE(bench::declared_bench_scene(
+                    "t", replaced(tower_with_block, R"("metric": "top_drift")", R"("metric": "momentum_error")"))
+                    .stress);
+}
+
+TEST_CASE("a bad bench block is refused naming its field, as the rest of a scene") {
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {R"("metric": "top_drfit")", "bench.metric"},
+        {R"("target": 0.02)", "bench.target"},
+        {R"("duration": 2)", "bench.duration"},
+    };
+    const std::vector<std::string> replacements{R"("metric": "top_drfit")", R"("target": 0)", R"("duration": -1)"};
+    const std::vector<std::string> originals{R"("metric": "top_drift")", R"("target": 0.02)", R"("duration": 2)"};
+    for (std::size_t i = 0; i < originals.size(); ++i) {
+        const std::string text = replaced(tower_with_block, originals[i], replacements[i]);
+        CAPTURE(text);
+        try {
+            bench::declared_bench_scene("t", text);
+            FAIL("accepted");
+        } catch (const io::InputError& e) {
+            CHECK(e.where() == cases[i].second);
+        }
+    }
+    try {
+        bench::declared_bench_scene("t", replaced(tower_with_block, R"("duration": 2)", R"("duraton": 2)"));
+        FAIL("accepted");
+    } catch (const io::InputError& e) {
+        CHECK(e.where() == "bench.duraton");
+    }
+}
+
+TEST_CASE("a scene without a bench block gets the general measures and no verdict") {
+    const std::string text =
+        replaced(tower_with_block, R"("bench": {"metric": "top_drift", "target": 0.02, "duration": 2},)", "");
+    const bench::BenchScene s = bench::declared_bench_scene("tower", text);
+    CHECK_FALSE(s.verdict);
+    CHECK_FALSE(s.stress);
+    CHECK(s.frames == 30);
+    bench::Timing timing;
+    timing.repeats = 1;
+    const bench::RunResult r = bench::run_configuration(text, s, "pgs", 8, timing);
+    CHECK(r.accuracy.holds);
+    CHECK_FALSE(r.accuracy.meets_target);
+    CHECK(r.accuracy.failure.empty());
+    CHECK(r.accuracy.error == r.accuracy.top_drift_most);  // what the chart shows
+    bench::BenchRun run;
+    run.scenes = {&s};
+    run.methods = {"pgs"};
+    run.iterations = {8};
+    run.rows = {r};
+    // results.csv: the metric it is charted by, and an empty target.
+    CHECK(bench::results_csv(run).find("\ntower,top_drift,m,,pgs,8,") != std::string::npos);
+    CHECK(bench::results_json(run, {})["scenes"][0]["verdict"] == false);
+    CHECK(bench::stability_markdown(run).find("| tower | no bench block: general measures | none | no verdict |") !=
+          std::string::npos);
+}
+
+TEST_CASE("a shard runs every N-th configuration from the K-th") {
+    // By hand: 7 configurations in 3 shards: shard 1 runs 0, 3, 6; shard 2 runs 1, 4; shard 3 runs 2, 5.
+    const bench::Shard second{2, 3};
+    std::vector<std::size_t> ran;
+    for (std::size_t c = 0; c < 7; ++c)
+        if (second.runs(c)) ran.push_back(c);
+    CHECK(ran == std::vector<std::size_t>{1, 4});
+    CHECK(bench::parse_shard("2/3").k == 2);
+    CHECK(bench::parse_shard("2/3").n == 3);
+    CHECK_THROWS_AS(bench::parse_shard("0/3"), io::InputError);
+    CHECK_THROWS_AS(bench::parse_shard("2/"), io::InputError);
+}
+
+TEST_CASE("shards merged from their results.json give the files one run of the whole matrix gives") {
+    bench::BenchRun whole;
+    whole.scenes = {bench::find_bench_scene("two_spheres"), bench::find_bench_scene("sphere_drop")};
+    whole.methods = {"book", "pgs"};
+    whole.iterations = {1, 2};
+    whole.timing.frames = 12;
+    whole.timing.repeats = 1;
+    for (const bench::BenchScene* s : whole.scenes)
+        for (const std::string& m : whole.methods)
+            for (const int n : whole.iterations)
+                whole.rows.push_back(bench::run_configuration(scene_text(s->name), *s, m, n, whole.timing));
+    whole.rows[3].recording_ratio = 1.25;
+    // Three shards of the 8 configurations, as --shard K/3 runs them, their results.json given in another order.
+    std::vector<nlohmann::ordered_json> documents;
+    std::vector<std::string> folders;
+    for (const int k : {2, 3, 1}) {
+        bench::BenchRun shard = whole;
+        shard.shard = {k, 3};
+        shard.rows.clear();
+        for (std::size_t c = 0; c < whole.rows.size(); ++c)
+            if (shard.shard.runs(c)) shard.rows.push_back(whole.rows[c]);
+        documents.push_back(nlohmann::ordered_json::parse(bench::results_json(shard, {}).dump()));
+        folders.push_back("shard-" + std::to_string(k));
+    }
+    const auto merged = bench::merge_results(documents, folders);
+    CHECK(bench::results_csv(merged->run) == bench::results_csv(whole));
+    CHECK(bench::stability_markdown(merged->run) == bench::stability_markdown(whole));
+    CHECK(bench::results_json(merged->run, {})["merged_from"].size() == 3);
+
+    // A shard missing, a shard twice, a shard of another matrix: refused naming --merge.
+    const auto refused = [](const std::vector<nlohmann::ordered_json>& docs, const std::vector<std::string>& names,
+                            const std::string& problem) {
+        try {
+            bench::merge_results(docs, names);
+            FAIL("merged");
+        } catch (const io::InputError& e) {
+            CHECK(e.where() == "--merge");
+            CHECK(e.problem().find(problem) != std::string::npos);
+        }
+    };
+    refused({documents[0], documents[1]}, {"a", "b"}, "shard 1/3 is missing");
+    refused({documents[0], documents[0]}, {"a", "b"}, "'b' and 'a' both hold shard 2/3");
+    nlohmann::ordered_json other = documents[1];
+    other["methods"] = {"book"};
+    refused({documents[0], other}, {"a", "b"}, "'b' holds a shard of another matrix than 'a'");
 }
 
 }  // namespace impulse::test

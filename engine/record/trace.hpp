@@ -3,6 +3,7 @@
 // trace file stores it (engine/io/trace_json), and the inspector, lessons and `diff` read it back.
 
 #include "record/iteration_records.hpp"
+#include "record/words.hpp"
 #include "resolver/prepared_contact.hpp"
 #include "scene/scene.hpp"
 
@@ -12,7 +13,7 @@
 
 namespace impulse {
 
-inline constexpr int trace_format_version = 1;
+inline constexpr int trace_format_version = words::format_version;
 
 // The part of a body's state that resolution changes.
 struct BodyState {
@@ -66,7 +67,7 @@ inline void end_recording_before(TraceFilter& filter, int frame) {
 }
 
 struct Trace {
-    int version = trace_format_version;
+    int version = trace_format_version;  // the format the file was written in (a reader upgrades older ones)
     Scene scene;  // the bodies and contacts as loaded, with the settings that ran
     TraceFilter recording;
     std::vector<FrameRecord> frames;

@@ -28,14 +28,16 @@ bool is_csv(const std::string& file) {
 }
 
 coursework::DiffReport diff_file(const io::json& reference, const std::string& file,
-                                 const coursework::Tolerance& tolerance) {
+                                 const coursework::Tolerance& tolerance, std::ostream& err) {
     const std::string text = read_input_file(file);
     try {
         if (is_csv(file)) return coursework::diff_worksheet(reference, coursework::read_worksheet_csv(text), tolerance);
-        const io::json document = io::parse_json_text(text);
+        io::json document = io::parse_json_text(text);
         if (coursework::is_worksheet(document))
             return coursework::diff_worksheet(reference, coursework::read_worksheet_json(document), tolerance);
         if (document.is_object() && document.contains("format") && document["format"] == io::trace_format_name) {
+            // A format-1 trace is compared in today's words: its renamed keys moved first.
+            if (io::upgrade_trace_document(document)) err << io::format1_note(file) << '\n';
             io::read_trace(document);  // its schema, and that every index names a body or contact
             return coursework::diff_traces(reference, document, tolerance);
         }
@@ -117,7 +119,7 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     int code = exit_ok;
     if (files.size() == 1 && !folder) {
         // One file: its every mismatch; a file that cannot be read is bad input.
-        const coursework::DiffReport r = diff_file(reference, files.front(), tolerance);
+        const coursework::DiffReport r = diff_file(reference, files.front(), tolerance, err);
         const coursework::DiffSubject subject{options.reference, files.front(), tolerance};
         report = options.format == "json"  ? coursework::report_json(r, subject)
                  : options.format == "csv" ? coursework::report_csv(r)
@@ -129,7 +131,7 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
         std::vector<coursework::ClassRow> rows;
         for (const std::string& file : files) {
             try {
-                rows.push_back({file, diff_file(reference, file, tolerance), ""});
+                rows.push_back({file, diff_file(reference, file, tolerance, err), ""});
                 if (!rows.back().report->all_match()) code = exit_failure;
             } catch (const FileError& e) {
                 const std::string error = (e.where.empty() ? "" : e.where + ": ") + e.problem;

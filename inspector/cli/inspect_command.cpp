@@ -1,5 +1,6 @@
 // `impulse-lab inspect FILE`: open a case, scene or trace in the inspector, in a window or headless.
 
+#include "io/trace_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
 #include "gui/display.hpp"
@@ -53,6 +54,7 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
 
     const auto start = std::chrono::steady_clock::now();
     inspect::Session session = inspect::Session::open(options.file, options.open);
+    if (session.trace().version != trace_format_version) err << io::format1_note(options.file) << '\n';
     if (session.recording_stopped_at())
         err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
     // Shown up to the frame before it: the frames that led there are what there is to debug.

@@ -1,6 +1,7 @@
 // `impulse-lab worksheet FILE --out sheet.json|.csv`: the inputs and blank cells of chosen derivation steps
 // of a lesson, case, scene or trace, for students to fill in by hand or with their own engine (docs/coursework.md).
 
+#include "io/trace_json.hpp"
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
@@ -44,6 +45,7 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
         lesson.emplace(lessons::prepare_lesson(lessons::read_lesson(options.file)));
     }
     const inspect::Session session = lesson ? lesson->session : inspect::Session::open(options.file, options.open);
+    if (session.trace().version != trace_format_version) err << io::format1_note(options.file) << '\n';
     if (session.recording_stopped_at())
         err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
     // A worksheet's numbers must be re-made exactly by diff; a run that broke is not coursework.

@@ -55,6 +55,7 @@ struct Lesson {
     std::vector<std::string> record;  // as --record takes them: frames=A..B, contacts=I,J
     std::string introduction;         // the text before the first section
     std::vector<Step> steps;
+    std::vector<std::string> notes;  // old words read by their new names: "steps[2].at: step \"a\" is now \"b\""
 };
 
 // How many of the lesson's steps ask a question.

@@ -1,5 +1,7 @@
 #include "model/navigator.hpp"
 
+#include "record/words.hpp"
+
 #include "explain/format.hpp"
 #include "io/input_error.hpp"
 
@@ -42,7 +44,7 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
              chosen},
             {what, v, "", "", "its value now, after the visits before this one", {}, what, v_exact},
         };
-        return {"choice", "choice — " + place + " visits contact " + chosen, std::move(rows)};
+        return {std::string(words::step::choice), "choice — " + place + " visits contact " + chosen, std::move(rows)};
     }
     std::vector<Row> rows{
         {"iteration", count + pass, "", "", "iterations count from 0 within the phase", {}, "iteration", count + pass},
@@ -64,7 +66,7 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
          "epsilon",
          e_exact},
     };
-    return {"choice", "choice — iteration " + count + " picks contact " + chosen, std::move(rows)};
+    return {std::string(words::step::choice), "choice — iteration " + count + " picks contact " + chosen, std::move(rows)};
 }
 
 // A position iteration's pass, as the choice table words it.
@@ -417,13 +419,17 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
     }
     if (spec.step) {
         const std::vector<StepTable> tables = step_tables(trace, cursor);
+        // A step's name from before format 2 (velocity_per_unit_impulse, accumulated_impulse) is read as today's.
+        std::string wanted = *spec.step;
+        for (const words::StepRename& r : words::step_renames())
+            if (wanted == r.old_name) wanted = std::string(r.new_name);
         // A step's own name first; else the first table that shows the quantity.
         std::optional<int> found;
         for (std::size_t i = 0; i < tables.size() && !found; ++i)
-            if (tables[i].step == *spec.step) found = static_cast<int>(i);
+            if (tables[i].step == wanted) found = static_cast<int>(i);
         for (std::size_t i = 0; i < tables.size() && !found; ++i)
             for (const Row& r : tables[i].rows)
-                if (!found && (r.quantity == *spec.step || r.quantity.rfind(*spec.step + "[", 0) == 0))
+                if (!found && (r.quantity == wanted || r.quantity.rfind(wanted + "[", 0) == 0))
                     found = static_cast<int>(i);
         if (!found) {
             std::string names;

@@ -94,7 +94,7 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
                                             "relative_position",
                                             "torque_per_unit_impulse",
                                             "rotation_per_unit_impulse",
-                                            "velocity_per_unit_impulse",
+                                            "point_velocity_per_unit_impulse",
                                             "angular_component",
                                             "linear_component",
                                             "delta_velocity_per_unit_impulse",
@@ -110,11 +110,12 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
                                             "desired_delta_velocity"};
     CHECK(keys == expected);
     const io::json& position = j["frames"][0]["phases"][0]["iterations"][0];
-    for (const char* key : {"linear_inertia", "angular_inertia", "total_inertia", "linear_move", "angular_move",
-                            "angular_limit", "linear_change", "angular_change", "updates"})
+    for (const char* key :
+         {"linear_inertia", "angular_inertia", "penetration_inertia", "move_split", "angular_limit", "position_change",
+          "updates"})
         CHECK_MESSAGE(position.contains(key), key);
     const io::json& velocity = j["frames"][0]["phases"][1]["iterations"][0];
-    for (const char* key : {"contact_velocity", "desired_delta_velocity", "impulse_contact", "impulse_world",
+    for (const char* key : {"contact_velocity", "desired_delta_velocity", "impulse", "impulse_world",
                             "velocity_change", "rotation_change", "updates"})
         CHECK_MESSAGE(velocity.contains(key), key);
 }

@@ -7,7 +7,13 @@
 // runs, each run repeating the call until --min-seconds have passed.
 //
 //   impulse-bench-resolve [--boxes 1,10,100] [--friction 0.5] [--repeats 15] [--min-seconds 0.2] [--csv FILE]
+//
+// The CSV (RFC 4180) is written atomically when the run is done; --csv - puts it on standard output and the table
+// on standard error.
 
+#include "explain/csv.hpp"
+#include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
 
@@ -17,9 +23,9 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <iostream>
+#include <sstream>
 #include <vector>
 
 using namespace impulse;
@@ -70,6 +76,13 @@ double median_seconds(const std::function<void()>& call, int repeats, double min
     return samples[static_cast<std::size_t>(repeats / 2)];
 }
 
+// A number as a CSV cell: as many digits as a stream prints by default.
+std::string cell(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -88,18 +101,27 @@ int main(int argc, char** argv) {
     app.add_option("--csv", csv, "Also write the figures as CSV");
     try {
         app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
+    } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "impulse-bench-resolve: " << e.what() << " (see impulse-bench-resolve --help)\n";
+        return 2;
     }
+    // The CSV is checked before the run and written whole after it; on standard output, the table moves to stderr.
+    const bool csv_to_stdout = csv == "-";
+    try {
+        if (!csv.empty() && !csv_to_stdout) io::check_writable(csv, "--csv");
+    } catch (const io::InputError& e) {
+        std::cerr << "impulse-bench-resolve: " << e.what() << '\n';
+        return 2;
+    }
+    std::FILE* table = csv_to_stdout ? stderr : stdout;
 
     const ResolverSettings settings = *preset("book");
-    std::printf("%6s %9s %11s %13s %13s %8s\n", "boxes", "contacts", "iterations", "off ns/contact", "on ns/contact",
-                "on/off");
-    std::ofstream out;
-    if (!csv.empty()) {
-        out.open(csv);
-        out << "boxes,contacts,iterations,friction,off_ns_per_contact,on_ns_per_contact,recording_ratio\n";
-    }
+    std::fprintf(table, "%6s %9s %11s %13s %13s %8s\n", "boxes", "contacts", "iterations", "off ns/contact",
+                 "on ns/contact", "on/off");
+    std::string rows = explain::csv_row(
+        {"boxes", "contacts", "iterations", "friction", "off_ns_per_contact", "on_ns_per_contact", "recording_ratio"});
     for (int count : boxes) {
         const Landing scene = landing_boxes(count, friction);
         std::vector<RigidBody> bodies;
@@ -121,11 +143,21 @@ int main(int argc, char** argv) {
             repeats, min_seconds);
         const double contacts = static_cast<double>(scene.contacts.size());
         const int iterations = summary.position.iterations_used + summary.velocity.iterations_used;
-        std::printf("%6d %9zu %11d %13.0f %13.0f %8.2f\n", count, scene.contacts.size(), iterations,
-                    off / contacts * 1e9, on / contacts * 1e9, on / off);
-        if (out)
-            out << count << ',' << scene.contacts.size() << ',' << iterations << ',' << friction << ','
-                << off / contacts * 1e9 << ',' << on / contacts * 1e9 << ',' << on / off << '\n';
+        std::fprintf(table, "%6d %9zu %11d %13.0f %13.0f %8.2f\n", count, scene.contacts.size(), iterations,
+                     off / contacts * 1e9, on / contacts * 1e9, on / off);
+        rows +=
+            explain::csv_row({std::to_string(count), std::to_string(scene.contacts.size()), std::to_string(iterations),
+                              cell(friction), cell(off / contacts * 1e9), cell(on / contacts * 1e9), cell(on / off)});
+    }
+    if (csv_to_stdout) {
+        std::cout << rows << std::flush;
+    } else if (!csv.empty()) {
+        try {
+            io::write_file_atomically(csv, rows, "--csv");
+        } catch (const io::InputError& e) {
+            std::cerr << "impulse-bench-resolve: " << e.what() << '\n';
+            return 2;
+        }
     }
     return 0;
 }

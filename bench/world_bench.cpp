@@ -2,10 +2,16 @@
 //
 //   impulse-bench-world SCENE... [--frames N] [--repeats R] [--set NAME=VALUE]... [--csv FILE]
 //
+// A scene may be - (standard input). The CSV (RFC 4180) is written atomically when every scene has run; --csv -
+// puts it on standard output and the table on standard error.
+//
 // Each repeat simulates the scene from its start for N frames (default: the scene's own frames); the
 // reported time per frame is the median over repeats of each repeat's mean. Drift comes from the first repeat
 // (every repeat is identical: runs are deterministic).
 
+#include "cli/input_files.hpp"
+#include "explain/csv.hpp"
+#include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/scene_file.hpp"
@@ -16,7 +22,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -58,6 +63,13 @@ Figures simulate(const Scene& scene, int frames) {
     return f;
 }
 
+// A number as a CSV cell: as many digits as a stream prints by default.
+std::string cell(double value) {
+    std::ostringstream text;
+    text << value;
+    return text.str();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -67,7 +79,7 @@ int main(int argc, char** argv) {
     std::optional<int> frames;
     int repeats = 3;
     std::string csv;
-    app.add_option("SCENE", scenes, "Scene files")->required()->check(CLI::ExistingFile);
+    app.add_option("SCENE", scenes, "Scene files (- for standard input)")->required();
     app.add_option("--frames", frames, "Frames per run (default: each scene's settings.frames)")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--repeats", repeats, "Runs per scene; the median time is reported")->check(CLI::Range(1, 100));
@@ -75,28 +87,38 @@ int main(int argc, char** argv) {
     app.add_option("--csv", csv, "Also write the figures as CSV");
     try {
         app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
+    } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "impulse-bench-world: " << e.what() << " (see impulse-bench-world --help)\n";
+        return 2;
     }
+    // The CSV is checked before the runs and written whole after them; on standard output, the table moves to stderr.
+    const bool csv_to_stdout = csv == "-";
+    try {
+        if (!csv.empty() && !csv_to_stdout) io::check_writable(csv, "--csv");
+    } catch (const io::InputError& e) {
+        std::cerr << "impulse-bench-world: " << e.what() << '\n';
+        return 2;
+    }
+    std::FILE* table = csv_to_stdout ? stderr : stdout;
 
-    std::ofstream out;
-    if (!csv.empty()) {
-        out.open(csv);
-        out << "scene,bodies,frames,contacts_per_frame,pairs_per_frame,ms_per_frame,integrate_ms,broad_phase_ms,"
-               "pair_tests_ms,resolve_ms,limited_frames,top_drift_end_mm,top_drift_most_mm\n";
-    }
-    std::printf("%-22s %6s %6s %9s %9s %10s %9s %9s %9s %9s %8s %11s %11s\n", "scene", "bodies", "frames", "contacts",
-                "pairs", "ms/frame", "integr.", "broad", "pairs ms", "resolve", "limited", "drift end", "drift most");
+    std::string rows = explain::csv_row({"scene", "bodies", "frames", "contacts_per_frame", "pairs_per_frame",
+                                         "ms_per_frame", "integrate_ms", "broad_phase_ms", "pair_tests_ms",
+                                         "resolve_ms", "limited_frames", "top_drift_end_mm", "top_drift_most_mm"});
+    std::fprintf(table, "%-22s %6s %6s %9s %9s %10s %9s %9s %9s %9s %8s %11s %11s\n", "scene", "bodies", "frames",
+                 "contacts", "pairs", "ms/frame", "integr.", "broad", "pairs ms", "resolve", "limited", "drift end",
+                 "drift most");
     for (const std::string& file : scenes) {
         Scene scene;
         try {
-            std::ifstream in(file);
-            std::stringstream text;
-            text << in.rdbuf();
-            scene = io::read_scene_text(text.str());
+            scene = io::read_scene_text(cli::read_input_file(file));
             for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+        } catch (const cli::FileError& e) {
+            std::cerr << "impulse-bench-world: " << e.file << ": " << e.problem << '\n';
+            return 2;
         } catch (const io::InputError& e) {
-            std::cerr << "impulse-bench-world: " << file << ": " << e.what() << '\n';
+            std::cerr << "impulse-bench-world: " << cli::input_name(file) << ": " << e.what() << '\n';
             return 2;
         }
         const int n = frames.value_or(scene.world.frames);
@@ -107,16 +129,26 @@ int main(int argc, char** argv) {
                   [](const Figures& a, const Figures& b) { return a.frame_ms < b.frame_ms; });
         const Figures& median = sorted[sorted.size() / 2];
         const Figures& first = runs.front();
-        const std::string name = file.substr(file.find_last_of('/') + 1);
-        std::printf("%-22s %6zu %6d %9.1f %9.1f %10.3f %9.3f %9.3f %9.3f %9.3f %8d %11.2f %11.2f\n", name.c_str(),
-                    scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms, median.stage_ms.integrate,
-                    median.stage_ms.broad_phase, median.stage_ms.narrow_phase, median.stage_ms.resolve,
-                    first.limited_frames, first.drift_end_mm, first.drift_most_mm);
-        if (out)
-            out << name << ',' << scene.bodies.size() << ',' << n << ',' << first.contacts << ',' << first.pairs << ','
-                << median.frame_ms << ',' << median.stage_ms.integrate << ',' << median.stage_ms.broad_phase << ','
-                << median.stage_ms.narrow_phase << ',' << median.stage_ms.resolve << ',' << first.limited_frames << ','
-                << first.drift_end_mm << ',' << first.drift_most_mm << '\n';
+        const std::string name = cli::input_name(file.substr(file.find_last_of('/') + 1));
+        std::fprintf(table, "%-22s %6zu %6d %9.1f %9.1f %10.3f %9.3f %9.3f %9.3f %9.3f %8d %11.2f %11.2f\n",
+                     name.c_str(), scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms,
+                     median.stage_ms.integrate, median.stage_ms.broad_phase, median.stage_ms.narrow_phase,
+                     median.stage_ms.resolve, first.limited_frames, first.drift_end_mm, first.drift_most_mm);
+        rows += explain::csv_row({name, std::to_string(scene.bodies.size()), std::to_string(n), cell(first.contacts),
+                                  cell(first.pairs), cell(median.frame_ms), cell(median.stage_ms.integrate),
+                                  cell(median.stage_ms.broad_phase), cell(median.stage_ms.narrow_phase),
+                                  cell(median.stage_ms.resolve), std::to_string(first.limited_frames),
+                                  cell(first.drift_end_mm), cell(first.drift_most_mm)});
+    }
+    if (csv_to_stdout) {
+        std::cout << rows << std::flush;
+    } else if (!csv.empty()) {
+        try {
+            io::write_file_atomically(csv, rows, "--csv");
+        } catch (const io::InputError& e) {
+            std::cerr << "impulse-bench-world: " << e.what() << '\n';
+            return 2;
+        }
     }
     return 0;
 }

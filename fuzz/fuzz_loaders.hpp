@@ -4,7 +4,7 @@
 // bad input throws io::InputError; anything else (another exception, a crash, a sanitizer report, a hang,
 // a runaway allocation) is a bug. No loader writes a file or reads one.
 
-#include "coursework/diff_report.hpp"
+#include "coursework/class_report.hpp"
 #include "coursework/filled_worksheet.hpp"
 #include "coursework/worksheet.hpp"
 #include "io/input_error.hpp"
@@ -54,11 +54,13 @@ inline void load_progress_text(std::string_view text) {
 // `diff` on two inputs, in memory: the reference trace, a NUL byte, then the other file: a trace or a JSON
 // worksheet when it starts with "{", else a CSV worksheet. The reference is read and written back as `diff`
 // does with a trace it is given, the other goes through the checks of diff_command.cpp, then the comparison
-// and its three reports. Without a NUL there is nothing to compare.
+// and its three reports, worded as the worksheet words them, and the class report of it. Without a NUL there is
+// nothing to compare.
 inline void load_diff(std::string_view input) {
     const std::size_t separator = input.find('\0');
     if (separator == std::string_view::npos) return;
-    const io::json reference = io::trace_json(io::read_trace_text(input.substr(0, separator)));
+    const Trace trace = io::read_trace_text(input.substr(0, separator));
+    const io::json reference = io::trace_json(trace);
     const std::string_view other = input.substr(separator + 1);
     const coursework::Tolerance tolerance;
     const std::size_t first = other.find_first_not_of(" \t\r\n");
@@ -74,10 +76,18 @@ inline void load_diff(std::string_view input) {
             report = coursework::diff_traces(reference, document, tolerance);
         }
     }
+    coursework::word_findings(report, trace, reference);
     const coursework::DiffSubject subject{"reference.json", "other", tolerance};
     coursework::report_text(report, subject);
     coursework::report_json(report, subject);
     coursework::report_csv(report);
+    const std::vector<coursework::ClassRow> rows{{"other", report, ""}};
+    const coursework::ClassSubject class_subject{"reference.json", "trace", tolerance};
+    coursework::summary_text(rows, class_subject);
+    coursework::summary_json(rows, class_subject);
+    coursework::summary_csv(rows);
+    coursework::cells_csv(rows);
+    coursework::feedback_markdown(rows.front(), class_subject);
 }
 
 struct Loader {

@@ -13,6 +13,7 @@
 #include "collision/collision.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -32,7 +33,8 @@ struct Oriented {
     Vec3 half;
 };
 
-double projected_radius(const Oriented& box, const Vec3& axis) {
+// (Always inlined, as overlap_along: they run 15 times per pair, and a call costs as much as their arithmetic.)
+[[gnu::always_inline]] inline double projected_radius(const Oriented& box, const Vec3& axis) {
     return box.half.x() * std::abs(axis.dot(box.axes.col(0))) + box.half.y() * std::abs(axis.dot(box.axes.col(1))) +
            box.half.z() * std::abs(axis.dot(box.axes.col(2)));
 }
@@ -47,8 +49,8 @@ struct Axis {
 // Overlap along `direction` (any length > 0); negative means the axis separates the boxes. The direction is
 // turned to point from b to a; when the centres do not differ along it, the body indices decide, so that
 // swapping the two boxes still flips the normal.
-double overlap_along(const Oriented& a, const Oriented& b, const Vec3& between, Vec3 direction, bool a_first,
-                     Vec3& oriented) {
+[[gnu::always_inline]] inline double overlap_along(const Oriented& a, const Oriented& b, const Vec3& between,
+                                                   Vec3 direction, bool a_first, Vec3& oriented) {
     direction.normalize();
     const double along = direction.dot(between);
     if (along < 0.0 || (along == 0.0 && !a_first)) direction = -direction;
@@ -68,12 +70,38 @@ struct ClipPoint {
     Feature onward;   // what the polygon's side from this point to the next lies on: an edge, or the face
 };
 
+// At most N items in place (no allocation: a box pair is tested hundreds of times a frame). The incident face
+// has 4 corners and each of the 4 side planes clips off at most one corner of a convex polygon, adding at most
+// one point: 8 at most.
+template <typename T, std::size_t N>
+class Few {
+public:
+    void push_back(const T& item) {
+        assert(count_ < N);
+        items_[count_++] = item;
+    }
+    T& back() { return items_[count_ - 1]; }
+    const T& operator[](std::size_t k) const { return items_[k]; }
+    std::size_t size() const { return count_; }
+    bool empty() const { return count_ == 0; }
+    const T* begin() const { return items_.data(); }
+    const T* end() const { return items_.data() + count_; }
+    T* begin() { return items_.data(); }
+    T* end() { return items_.data() + count_; }
+
+private:
+    std::array<T, N> items_;  // only the first count_ are set
+    std::size_t count_ = 0;
+};
+
+constexpr std::size_t most_points = 8;
+using Polygon = Few<ClipPoint, most_points>;
+
 // Keeps the part of the polygon with plane_normal . x <= plane_offset (Sutherland-Hodgman). A point made
 // where a side crosses the plane lies on that side's feature; the new side it starts along the plane runs
 // across the incident face.
-std::vector<ClipPoint> clip(const std::vector<ClipPoint>& polygon, const Vec3& plane_normal, double plane_offset,
-                            const Feature& incident_face) {
-    std::vector<ClipPoint> kept;
+Polygon clip(const Polygon& polygon, const Vec3& plane_normal, double plane_offset, const Feature& incident_face) {
+    Polygon kept;
     for (std::size_t k = 0; k < polygon.size(); ++k) {
         const ClipPoint& p = polygon[k];
         const ClipPoint& q = polygon[(k + 1) % polygon.size()];
@@ -112,8 +140,8 @@ double hull_area(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s, con
 // Of more than four points, keep the deepest, the one farthest from it, the one making the largest triangle
 // with those two, and the one adding the most area to that triangle: the quadrilateral that best keeps the
 // support area.
-std::vector<std::size_t> reduce_to_four(const std::vector<Vec3>& points, const std::vector<double>& depth,
-                                        const Vec3& normal) {
+Few<std::size_t, 4> reduce_to_four(const Few<Vec3, most_points>& points, const Few<double, most_points>& depth,
+                                   const Vec3& normal) {
     const std::size_t first = static_cast<std::size_t>(std::max_element(depth.begin(), depth.end()) - depth.begin());
     const auto best = [&points](auto score) {
         std::size_t chosen = 0;
@@ -128,9 +156,11 @@ std::vector<std::size_t> reduce_to_four(const std::vector<Vec3>& points, const s
     const std::size_t third = best([&](const Vec3& q) { return std::abs((p2 - p1).cross(q - p1).dot(normal)); });
     const Vec3& p3 = points[third];
     const std::size_t fourth = best([&](const Vec3& q) { return hull_area(p1, p2, p3, q, normal); });
-    std::vector<std::size_t> keep{first, second, third, fourth};
-    std::sort(keep.begin(), keep.end());
-    keep.erase(std::unique(keep.begin(), keep.end()), keep.end());
+    std::array<std::size_t, 4> sorted{first, second, third, fourth};
+    std::sort(sorted.begin(), sorted.end());
+    Few<std::size_t, 4> keep;
+    for (std::size_t k = 0; k < sorted.size(); ++k)
+        if (k == 0 || sorted[k] != sorted[k - 1]) keep.push_back(sorted[k]);
     return keep;
 }
 
@@ -156,7 +186,7 @@ void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
     const int u = (inc_axis + 1) % 3, v = (inc_axis + 2) % 3;
     // Its four corners in order round the face, with their vertex numbers, and the edges between them.
     const Feature incident_face{FeatureKind::face, box_face(inc_axis, inc_negative)};
-    std::vector<ClipPoint> polygon;
+    Polygon polygon;
     const std::array<std::array<int, 2>, 4> corners{{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
     for (std::size_t k = 0; k < 4; ++k) {
         std::array<int, 3> negative{};
@@ -181,9 +211,9 @@ void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
     }
 
     // Keep the points below the reference face; each is on the incident box, `depth` inside the reference box.
-    std::vector<Vec3> points;
-    std::vector<double> depth;
-    std::vector<Feature> features;
+    Few<Vec3, most_points> points;
+    Few<double, most_points> depth;
+    Few<Feature, most_points> features;
     const double face_level = ref_normal.dot(face_centre);
     for (const ClipPoint& p : polygon) {
         const double d = face_level - ref_normal.dot(p.position);
@@ -192,9 +222,12 @@ void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
         depth.push_back(d);
         features.push_back(p.feature);
     }
-    std::vector<std::size_t> chosen(points.size());
-    for (std::size_t k = 0; k < chosen.size(); ++k) chosen[k] = k;
-    if (points.size() > 4) chosen = reduce_to_four(points, depth, ref_normal);
+    Few<std::size_t, most_points> chosen;
+    if (points.size() > 4) {
+        for (const std::size_t k : reduce_to_four(points, depth, ref_normal)) chosen.push_back(k);
+    } else {
+        for (std::size_t k = 0; k < points.size(); ++k) chosen.push_back(k);
+    }
 
     for (std::size_t k : chosen) {
         Contact c;

@@ -6,7 +6,8 @@ namespace impulse {
 
 DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double restitution, const Vec3& normal,
                                             const PerBody<BodyMotion>& motion, double duration,
-                                            const VelocityRefinements& refinements) {
+                                            const VelocityRefinements& refinements,
+                                            std::optional<double> position_bias) {
     DesiredDeltaVelocity d;
     d.separating_velocity = separating_velocity;
     d.restitution = restitution;
@@ -26,6 +27,9 @@ DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double r
     // last step is not bounced back, so a resting contact asks only to stop, not to leap.
     d.desired_delta_velocity =
         -separating_velocity - d.restitution_used * (separating_velocity - d.velocity_from_acceleration);
+    // Baumgarte: also separate at the bias speed, so the bodies drift apart over the next frames.
+    d.position_bias = position_bias;
+    if (position_bias) d.desired_delta_velocity += *position_bias;
     return d;
 }
 

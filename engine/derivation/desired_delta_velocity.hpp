@@ -1,7 +1,8 @@
 #pragma once
 // Step 5, `desired_delta_velocity`: the change of separating velocity the impulse must make.
 // The chapter: v_s' = -c v_s, so delta v = -(1 + c) v_s. The reference engine adds two chapter-15
-// refinements, each a named, recorded option here.
+// refinements, each a named, recorded option here. Baumgarte stabilisation (settings `baumgarte`) adds a
+// third term, the position bias: the separating speed that closes a share of the penetration in one frame.
 
 #include "derivation/contact_velocity.hpp"
 #include "math/types.hpp"
@@ -28,13 +29,17 @@ struct DesiredDeltaVelocity {
     double restitution_used;                  // c, or 0 when the cut-off applied
     bool velocity_from_acceleration_applied;  // the refinement is on
     double velocity_from_acceleration;        // (a0 - a1) . n x duration; 0 when off
-    double desired_delta_velocity;            // -v_s - c_used (v_s - velocity_from_acceleration)
+    std::optional<double> position_bias;      // Baumgarte: beta max(penetration - slop, 0) / h; absent when off
+    double desired_delta_velocity;            // -v_s - c_used (v_s - velocity_from_acceleration) + position_bias
 
     bool operator==(const DesiredDeltaVelocity&) const = default;
 };
 
+// `position_bias` is the Baumgarte term, given when it is on (it is fixed for the frame: the penetration as
+// prepared), so every evaluation of step 5 (preparation, the bookkeeping's re-evaluations) includes it once.
 DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double restitution, const Vec3& normal,
                                             const PerBody<BodyMotion>& motion, double duration,
-                                            const VelocityRefinements& refinements);
+                                            const VelocityRefinements& refinements,
+                                            std::optional<double> position_bias = std::nullopt);
 
 }  // namespace impulse

@@ -26,7 +26,7 @@ Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_pos
 
 FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
                              const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
-                             double desired_delta_velocity, double friction) {
+                             double desired_delta_velocity, double friction, SlidingFriction sliding) {
     FrictionSolve s;
     s.delta_velocity_matrix = delta_velocity_matrix(basis, relative_position, mass);
     s.target_delta_velocity = {desired_delta_velocity, -contact_velocity.y(), -contact_velocity.z()};
@@ -38,16 +38,24 @@ FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_p
     s.cone_limit = friction * s.static_impulse.x();
 
     if (s.solvable && s.tangential_impulse > s.cone_limit) {
-        // Outside the cone the contact slides: keep the direction of the static tangential impulse, put its
-        // size on the cone (mu g_n), and choose g_n so the normal velocity still changes by exactly the
-        // desired amount: K00 g_n + K01 mu y g_n + K02 mu z g_n = desired.
+        // Outside the cone the contact slides: choose a unit tangential direction (y, z) (the reference engine
+        // keeps the static tangential impulse's; against_slip opposes the current slip), put the tangential
+        // impulse's size on the cone (mu g_n), and choose g_n so the normal velocity still changes by exactly
+        // the desired amount: K00 g_n + K01 mu y g_n + K02 mu z g_n = desired.
         const Mat3& k = s.delta_velocity_matrix;
         // The test uses the unclamped normal impulse (as the reference engine does), so a contact with no
         // tangential impulse still counts as outside the cone when that normal impulse is negative; the
         // direction is then zero and only the normal impulse remains.
         Eigen::Vector2d direction = Eigen::Vector2d::Zero();
-        if (s.tangential_impulse > 0.0)
-            direction = Eigen::Vector2d(s.static_impulse.y(), s.static_impulse.z()) / s.tangential_impulse;
+        if (sliding == SlidingFriction::reference) {
+            if (s.tangential_impulse > 0.0)
+                direction = Eigen::Vector2d(s.static_impulse.y(), s.static_impulse.z()) / s.tangential_impulse;
+        } else {
+            // Coulomb: the sliding impulse opposes the slip the contact has now. With no slip there is nothing
+            // to oppose, and only the normal impulse remains, as above.
+            const double slip = std::hypot(contact_velocity.y(), contact_velocity.z());
+            if (slip > 0.0) direction = -Eigen::Vector2d(contact_velocity.y(), contact_velocity.z()) / slip;
+        }
         s.sliding_direction = direction;
         s.sliding_normal_response = k(0, 0) + friction * (k(0, 1) * direction.x() + k(0, 2) * direction.y());
     }
@@ -56,12 +64,14 @@ FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_p
 
 Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relative_position,
                           const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
-                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction) {
+                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
+                          SlidingFriction sliding) {
     Impulse g;
     g.model = ImpulseModel::frictionless;
     g.impulse_contact = frictionless_impulse(desired_delta_velocity, delta_velocity_per_unit_impulse);
     if (friction != 0.0) {
-        g.friction = friction_solve(basis, relative_position, mass, contact_velocity, desired_delta_velocity, friction);
+        g.friction =
+            friction_solve(basis, relative_position, mass, contact_velocity, desired_delta_velocity, friction, sliding);
         const FrictionSolve& s = *g.friction;
         if (!s.sliding_normal_response) {
             if (s.solvable) {

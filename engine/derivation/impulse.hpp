@@ -12,6 +12,16 @@
 
 namespace impulse {
 
+// Where the sliding impulse points when the impulse that would stop the slip lies outside the friction cone.
+enum class SlidingFriction {
+    // The reference engine's: along the in-plane part of the static 3x3 impulse (K^-1 target). At a corner,
+    // where K couples the directions, that is not against the slip: only cos(angle between them) of the
+    // friction opposes it, and the rest pushes the body sideways (docs/methods.md measures it).
+    reference,
+    // Coulomb's: exactly against the contact's current slip, -(v_t1, v_t2) / |v_t|.
+    against_slip,
+};
+
 enum class ImpulseModel {
     frictionless,      // g = delta v / d along the normal only
     static_friction,   // the solve's impulse lies inside the cone: sliding stops
@@ -27,9 +37,9 @@ struct FrictionSolve {
     Vec3 static_impulse;         // K^-1 target: the impulse if friction can hold
     double tangential_impulse;   // |(g_t1, g_t2)| of the static impulse
     double cone_limit;           // mu g_n of the static impulse
-    // Sliding only: the tangential direction kept from the static solution, and the normal velocity change
-    // per unit normal impulse when the tangential impulse follows it on the cone,
-    // K00 + mu (K01 y + K02 z).
+    // Sliding only: the unit tangential direction of the impulse (the static solution's, or against the slip,
+    // as SlidingFriction says), and the normal velocity change per unit normal impulse when the tangential
+    // impulse follows it on the cone, K00 + mu (K01 y + K02 z).
     std::optional<Eigen::Vector2d> sliding_direction;
     std::optional<double> sliding_normal_response;
 
@@ -55,11 +65,13 @@ Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_pos
 
 FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
                              const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
-                             double desired_delta_velocity, double friction);
+                             double desired_delta_velocity, double friction,
+                             SlidingFriction sliding = SlidingFriction::reference);
 
 // The whole step: picks the model, returns the impulse in contact and world coordinates.
 Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relative_position,
                           const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
-                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction);
+                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
+                          SlidingFriction sliding = SlidingFriction::reference);
 
 }  // namespace impulse

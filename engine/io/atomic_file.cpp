@@ -5,7 +5,9 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <fcntl.h>
+#include <poll.h>
 #include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -14,23 +16,165 @@ namespace impulse::io {
 
 namespace {
 
-[[noreturn]] void fail(std::string_view flag, const std::filesystem::path& path, const std::string& reason) {
+namespace fs = std::filesystem;
+
+[[noreturn]] void fail(std::string_view flag, const fs::path& path, const std::string& reason) {
     throw InputError(std::string(flag), "cannot write '" + path.string() + "': " + reason);
+}
+
+// The folder a replaced file's temporary goes in.
+fs::path folder_of(const fs::path& file) {
+    return file.has_parent_path() ? file.parent_path() : fs::path(".");
+}
+
+bool same_file(const struct stat& a, const struct stat& b) {
+    return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}
+
+// Follows a chain of symbolic links from `path` to the first name that is not one (which may not exist yet).
+// A relative link is read from the folder the link is in, as the kernel reads it.
+fs::path end_of_links(const fs::path& path, std::string_view flag) {
+    fs::path at = path;
+    for (int hops = 0;; ++hops) {
+        struct stat info {};
+        if (::lstat(at.c_str(), &info) != 0) {
+            if (errno == ENOENT) return at;
+            fail(flag, path, std::strerror(errno));
+        }
+        if (!S_ISLNK(info.st_mode)) return at;
+        if (hops == 40) fail(flag, path, std::strerror(ELOOP));
+        std::error_code error;
+        const fs::path next = fs::read_symlink(at, error);
+        if (error) fail(flag, path, error.message());
+        at = next.is_absolute() ? next : at.parent_path() / next;
+    }
+}
+
+// SIGINT or SIGTERM is waiting to be delivered (held back by DeferredSignals).
+bool interrupt_pending() {
+    sigset_t pending;
+    sigemptyset(&pending);
+    ::sigpending(&pending);
+    return sigismember(&pending, SIGINT) == 1 || sigismember(&pending, SIGTERM) == 1;
+}
+
+constexpr const char* interrupted_waiting = "interrupted while waiting for its reader";
+
+// Opens a FIFO, device or terminal for writing without blocking, or returns -1 and why not. A FIFO nobody reads
+// yet is waited for in short pauses, so that a Ctrl-C held back meanwhile still ends the wait.
+int open_in_place(const fs::path& target, std::string& reason) {
+    struct stat info {};
+    const bool regular = ::stat(target.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+    const int flags = O_WRONLY | O_NOCTTY | O_CLOEXEC | (regular ? O_TRUNC : O_NONBLOCK);
+    while (true) {
+        const int fd = ::open(target.c_str(), flags);
+        if (fd >= 0) return fd;
+        if (errno == EINTR) continue;
+        if (errno != ENXIO) {  // ENXIO: a FIFO with no reader yet
+            reason = std::strerror(errno);
+            return -1;
+        }
+        if (interrupt_pending()) {
+            reason = interrupted_waiting;
+            return -1;
+        }
+        const timespec pause{0, 20'000'000};
+        ::nanosleep(&pause, nullptr);
+    }
+}
+
+// Writes all of `text` to an open FIFO, device or terminal; returns why it could not, or "". A reader that stops
+// reading is waited for in short polls, for the same reason as above.
+std::string write_all(int fd, std::string_view text) {
+    std::size_t written = 0;
+    while (written < text.size()) {
+        const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
+        if (n >= 0) {
+            written += static_cast<std::size_t>(n);
+            continue;
+        }
+        if (errno == EINTR) continue;
+        if (errno != EAGAIN) return std::strerror(errno);
+        pollfd ready{fd, POLLOUT, 0};
+        if (interrupt_pending() || (::poll(&ready, 1, 100) < 0 && errno == EINTR)) return interrupted_waiting;
+    }
+    return {};
+}
+
+// Writes `text` in place. A reader that goes away gives an error, not a SIGPIPE that would end the program
+// between two files of a set.
+void write_in_place(const fs::path& target, std::string_view text, std::string_view flag, const fs::path& path) {
+    sigset_t pipe_signal, previous, pending;
+    sigemptyset(&pipe_signal);
+    sigaddset(&pipe_signal, SIGPIPE);
+    pthread_sigmask(SIG_BLOCK, &pipe_signal, &previous);
+    sigemptyset(&pending);
+    ::sigpending(&pending);
+    const bool pipe_pending_before = sigismember(&pending, SIGPIPE) == 1;
+
+    std::string reason;
+    const int fd = open_in_place(target, reason);
+    if (fd >= 0) {
+        reason = write_all(fd, text);
+        if (::close(fd) != 0 && reason.empty() && errno != EINTR) reason = std::strerror(errno);
+    }
+    // A SIGPIPE this write caused is taken back before the mask is restored.
+    sigemptyset(&pending);
+    ::sigpending(&pending);
+    if (!pipe_pending_before && sigismember(&pending, SIGPIPE) == 1) {
+        const timespec now{0, 0};
+        ::sigtimedwait(&pipe_signal, nullptr, &now);
+    }
+    pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+    if (!reason.empty()) fail(flag, path, reason);
 }
 
 }  // namespace
 
-StagedFile::StagedFile(const std::filesystem::path& path, std::string_view contents, std::string_view flag)
-    : path_(path), flag_(flag) {
+OutputTarget output_target(const fs::path& path, std::string_view flag) {
     if (path.empty()) fail(flag, path, "empty file name");
-    const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
-    std::string temporary = (directory / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) {
+        // Nothing there yet, or a link to nothing yet: the file is made where the last link points.
+        if (errno != ENOENT) fail(flag, path, std::strerror(errno));
+        return {OutputKind::replaced, end_of_links(path, flag)};
+    }
+    if (S_ISDIR(info.st_mode)) fail(flag, path, std::strerror(EISDIR));
+    if (S_ISFIFO(info.st_mode) || S_ISCHR(info.st_mode)) return {OutputKind::in_place, path};
+    if (S_ISBLK(info.st_mode)) fail(flag, path, "is a block device, not a file");
+    if (S_ISSOCK(info.st_mode)) fail(flag, path, "is a socket, not a file");
+    // A regular file, perhaps at the end of links. A link that the kernel resolves by other means than its text
+    // (/proc/self/fd/1 standing for an open file, perhaps one since deleted) has no name to rename over: it is
+    // written in place.
+    const fs::path file = end_of_links(path, flag);
+    struct stat end {};
+    if (::lstat(file.c_str(), &end) != 0 || !same_file(info, end)) return {OutputKind::in_place, path};
+    return {OutputKind::replaced, file};
+}
+
+StagedFile::StagedFile(const fs::path& path, std::string_view contents, std::string_view flag)
+    : path_(path), flag_(flag) {
+    const OutputTarget target = output_target(path, flag);
+    target_ = target.path;
+    kind_ = target.kind;
+    if (kind_ == OutputKind::in_place) {
+        in_place_ = contents;
+        pending_ = true;
+        return;
+    }
+    std::string temporary = (folder_of(target_) / ("." + target_.filename().string() + ".tmp-XXXXXX")).string();
     const int fd = ::mkstemp(temporary.data());
     if (fd < 0) fail(flag, path, std::strerror(errno));
-    // mkstemp creates the file 0600; give it the permissions a normally created file would have.
-    const mode_t mask = ::umask(0);
-    ::umask(mask);
-    ::fchmod(fd, 0666 & ~mask);
+    // mkstemp creates the file 0600: give it the permissions of the file it replaces, or those a newly created
+    // file would have.
+    struct stat old {};
+    if (::stat(target_.c_str(), &old) == 0) {
+        ::fchmod(fd, old.st_mode & 07777);
+    } else {
+        const mode_t mask = ::umask(0);
+        ::umask(mask);
+        ::fchmod(fd, 0666 & ~mask);
+    }
 
     std::size_t written = 0;
     while (written < contents.size()) {
@@ -53,25 +197,38 @@ StagedFile::StagedFile(const std::filesystem::path& path, std::string_view conte
         fail(flag, path, reason);
     }
     temporary_ = temporary;
+    pending_ = true;
 }
 
 StagedFile::StagedFile(StagedFile&& other) noexcept
-    : path_(std::move(other.path_)), temporary_(std::move(other.temporary_)), flag_(std::move(other.flag_)) {
+    : path_(std::move(other.path_)),
+      target_(std::move(other.target_)),
+      kind_(other.kind_),
+      temporary_(std::move(other.temporary_)),
+      in_place_(std::move(other.in_place_)),
+      pending_(other.pending_),
+      flag_(std::move(other.flag_)) {
     other.temporary_.clear();
+    other.pending_ = false;
 }
 
 StagedFile::~StagedFile() {
-    if (!temporary_.empty()) ::unlink(temporary_.c_str());
+    if (pending_ && kind_ == OutputKind::replaced) ::unlink(temporary_.c_str());
 }
 
 void StagedFile::commit() {
-    if (std::rename(temporary_.c_str(), path_.c_str()) != 0) {
+    if (!pending_) return;
+    pending_ = false;
+    if (kind_ == OutputKind::in_place) {
+        const std::string text = std::move(in_place_);
+        write_in_place(target_, text, flag_, path_);
+        return;
+    }
+    if (std::rename(temporary_.c_str(), target_.c_str()) != 0) {
         const std::string reason = std::strerror(errno);
         ::unlink(temporary_.c_str());
-        temporary_.clear();
         fail(flag_, path_, reason);
     }
-    temporary_.clear();
 }
 
 DeferredSignals::DeferredSignals() {
@@ -82,21 +239,26 @@ DeferredSignals::DeferredSignals() {
     pthread_sigmask(SIG_BLOCK, &held, &previous_);
 }
 
-DeferredSignals::~DeferredSignals() { pthread_sigmask(SIG_SETMASK, &previous_, nullptr); }
+DeferredSignals::~DeferredSignals() {
+    pthread_sigmask(SIG_SETMASK, &previous_, nullptr);
+}
 
-void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view flag) {
+void write_file_atomically(const fs::path& path, std::string_view contents, std::string_view flag) {
     const DeferredSignals held;
     StagedFile(path, contents, flag).commit();
 }
 
-void check_writable(const std::filesystem::path& path, std::string_view flag) {
-    if (path.empty()) fail(flag, path, "empty file name");
-    const std::filesystem::path directory = path.has_parent_path() ? path.parent_path() : ".";
-    std::error_code error;
-    if (!std::filesystem::exists(directory, error)) fail(flag, path, "No such file or directory");
-    if (!std::filesystem::is_directory(directory, error)) fail(flag, path, "Not a directory");
-    if (std::filesystem::is_directory(path, error)) fail(flag, path, "Is a directory");
-    if (::access(directory.c_str(), W_OK) != 0) fail(flag, path, std::strerror(errno));
+void check_writable(const fs::path& path, std::string_view flag) {
+    const OutputTarget target = output_target(path, flag);
+    if (target.kind == OutputKind::in_place) {
+        if (::access(path.c_str(), W_OK) != 0) fail(flag, path, std::strerror(errno));
+        return;
+    }
+    const fs::path folder = folder_of(target.path);
+    struct stat info {};
+    if (::stat(folder.c_str(), &info) != 0) fail(flag, path, std::strerror(errno));
+    if (!S_ISDIR(info.st_mode)) fail(flag, path, std::strerror(ENOTDIR));
+    if (::access(folder.c_str(), W_OK) != 0) fail(flag, path, std::strerror(errno));
 }
 
 }  // namespace impulse::io

@@ -3,6 +3,11 @@
 // to disk, and is renamed over the target. A reader (or a crash, or Ctrl-C) sees the old file or the whole
 // new one, never half of it. A command that writes several files stages them all first and renames them
 // only when every one was written, so a failure leaves none of them changed.
+//
+// What is replaced is a file, never what a path stands for: a symbolic link is followed (the whole chain) and
+// its target replaced in the target's folder, so the link stays a link; a FIFO, a character device or a
+// terminal (/dev/null, a pipe a reader waits on) cannot be replaced by a rename and is written in place;
+// a directory, a socket or a block device is refused.
 
 #include <csignal>
 #include <filesystem>
@@ -11,7 +16,23 @@
 
 namespace impulse::io {
 
-// A file written to its temporary name, waiting to be renamed into place.
+// How an output path is written.
+enum class OutputKind {
+    replaced,  // a regular file, or none yet: a temporary in its folder renamed over it
+    in_place,  // a FIFO, character device or terminal: opened and written directly, no temporary, no rename
+};
+
+struct OutputTarget {
+    OutputKind kind = OutputKind::replaced;
+    std::filesystem::path path;  // replaced: the file itself (a link's final target); in place: the path as given
+};
+
+// Where and how `path` would be written. Throws InputError(flag, "cannot write '<path>': <reason>") for a
+// directory, a socket, a block device, a loop of links or a path through something that is not a folder.
+OutputTarget output_target(const std::filesystem::path& path, std::string_view flag);
+
+// A file written to its temporary name, waiting to be renamed into place. An output written in place keeps its
+// text until commit() writes it.
 class StagedFile {
 public:
     // Throws InputError(flag, "cannot write '<path>': <reason>"); no temporary is left behind.
@@ -22,11 +43,15 @@ public:
     StagedFile& operator=(const StagedFile&) = delete;
     StagedFile& operator=(StagedFile&&) = delete;
 
-    void commit();  // renames it over the target; throws InputError like the constructor
+    void commit();  // renames it over the target (or writes it in place); throws InputError like the constructor
 
 private:
-    std::filesystem::path path_;
-    std::string temporary_;
+    std::filesystem::path path_;    // as the user named it, for messages
+    std::filesystem::path target_;  // what is replaced or written
+    OutputKind kind_ = OutputKind::replaced;
+    std::string temporary_;  // replaced: the temporary's name until committed
+    std::string in_place_;   // in place: the text, until committed
+    bool pending_ = false;
     std::string flag_;
 };
 
@@ -47,8 +72,9 @@ private:
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view contents, std::string_view flag);
 
-// Throws InputError(flag, ...) now if `path` could not be written later: its directory is missing or is
-// not a directory, or the path is a directory. Lets a long run fail before it starts, not after.
+// Throws InputError(flag, ...) now if `path` could not be written later: it is a directory (or a socket or a
+// block device), the folder it would be written in is missing, is not a folder or is not writable, or a FIFO
+// or device is not writable. Lets a long run fail before it starts, not after.
 void check_writable(const std::filesystem::path& path, std::string_view flag);
 
 }  // namespace impulse::io

@@ -149,6 +149,8 @@ std::optional<Ground> read_ground(const json& document, const std::map<std::stri
 }  // namespace
 
 Scene read_scene(const json& document, const std::optional<std::string>& preset_override) {
+    if (document.is_object() && document.contains("settings"))
+        refuse_renamed_settings(document["settings"], "settings");
     validate_scene_document(document);
     Scene c;
     c.materials = read_materials(document);

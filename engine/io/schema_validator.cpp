@@ -266,8 +266,20 @@ Result check_values(const json& schema, const Node& node) {
     if (const json* allowed = keyword(schema, "enum")) {
         if (std::find(allowed->begin(), allowed->end(), node.value) == allowed->end()) {
             std::string list;
-            for (const json& v : *allowed) list += (list.empty() ? "" : ", ") + describe(v);
-            return fail(node, "must be one of " + list + "; got " + describe(node.value));
+            std::vector<std::string> words;
+            for (const json& v : *allowed) {
+                list += (list.empty() ? "" : ", ") + describe(v);
+                if (v.is_string()) words.push_back(v.get<std::string>());
+            }
+            // A guess only for a word long enough that its few wrong letters are a slip, not another word.
+            std::string guess;
+            if (node.value.is_string()) {
+                const std::string& word = node.value.get_ref<const std::string&>();
+                if (const auto closest = closest_name(word, words);
+                    closest && 3 * edit_distance(word, *closest) <= word.size())
+                    guess = " (did you mean \"" + *closest + "\"?)";
+            }
+            return fail(node, "must be one of " + list + "; got " + describe(node.value) + guess);
         }
     }
     if (const json* expected = keyword(schema, "const"); expected && *expected != node.value) {

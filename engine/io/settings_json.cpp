@@ -24,8 +24,10 @@ void apply_fields(Scene& scene, const json& object, std::string_view path) {
     if (has("velocity_method")) s.velocity_method = read_enum(velocity_method_names, object["velocity_method"]);
     if (has("worst_first_search"))
         s.worst_first_search = read_enum(worst_first_search_names, object["worst_first_search"]);
+    if (has("sliding_friction")) s.sliding_friction = read_enum(sliding_friction_names, object["sliding_friction"]);
     if (has("sweeps")) s.sweeps = object["sweeps"].get<int>();
     if (has("warm_start")) s.warm_start = object["warm_start"].get<bool>();
+    if (has("baumgarte")) s.baumgarte = object["baumgarte"].get<bool>();
     if (has("position_bias")) {
         const json& bias = object["position_bias"];
         if (bias.contains("factor")) s.position_bias.factor = bias["factor"].get<double>();
@@ -36,8 +38,7 @@ void apply_fields(Scene& scene, const json& object, std::string_view path) {
         if (soft.contains("substeps")) s.soft_step.substeps = soft["substeps"].get<int>();
         if (soft.contains("contact_hertz")) s.soft_step.contact_hertz = soft["contact_hertz"].get<double>();
         if (soft.contains("damping_ratio")) s.soft_step.damping_ratio = soft["damping_ratio"].get<double>();
-        if (soft.contains("max_push_velocity"))
-            s.soft_step.max_push_velocity = soft["max_push_velocity"].get<double>();
+        if (soft.contains("max_push_velocity")) s.soft_step.max_push_velocity = soft["max_push_velocity"].get<double>();
     }
     if (has("angular_limit")) {
         const json& limit = object["angular_limit"];
@@ -88,14 +89,15 @@ void read_settings(Scene& scene, const json* settings, std::string_view path,
     if (settings && settings->contains("preset")) preset_name = (*settings)["preset"].get<std::string>();
     if (preset_override) preset_name = *preset_override;
     const std::optional<ResolverSettings> s = preset(preset_name);
-    if (!s) throw InputError("--preset", "unknown preset \"" + preset_name + "\"; expected one of " + preset_list_text());
+    if (!s)
+        throw InputError("--preset", "unknown preset \"" + preset_name + "\"; expected one of " + preset_list_text());
     scene.settings = *s;
     if (settings) apply_fields(scene, *settings, path);
 }
 
 json settings_json(const ResolverSettings& s, const WorldSettings& world) {
     const auto fixed_limit = [](const std::optional<int>& v) { return v ? json(*v) : json(nullptr); };
-    return {
+    json out = {
         {"preset", s.preset},
         {"phase_order", name_of(phase_order_names, s.phase_order)},
         {"position_method", name_of(position_method_names, s.position_method)},
@@ -126,6 +128,22 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
         {"linear_damping", world.linear_damping},
         {"angular_damping", world.angular_damping},
     };
+    // Settings added after trace format 1 was fixed are written only when they differ from what older versions
+    // did without them (no Baumgarte term in step 5 unless the old `baumgarte` position method was chosen, the
+    // reference sliding friction), so the traces older versions can read stay byte-identical and readable.
+    if (s.baumgarte) out["baumgarte"] = true;
+    if (s.sliding_friction != SlidingFriction::reference)
+        out["sliding_friction"] = name_of(sliding_friction_names, s.sliding_friction);
+    return out;
+}
+
+void refuse_renamed_settings(const json& settings, std::string_view path) {
+    if (!settings.is_object() || !settings.contains("position_method")) return;
+    const json& method = settings["position_method"];
+    if (method.is_string() && method.get_ref<const std::string&>() == "baumgarte")
+        throw InputError(json_path_child(path, "position_method"),
+                         "\"baumgarte\" is no longer a position method: Baumgarte's bias is now a term of step 5 "
+                         "(did you mean \"position_method\": \"none\" with \"baumgarte\": true?)");
 }
 
 void apply_setting(Scene& scene, std::string_view assignment, std::string_view flag) {
@@ -152,12 +170,15 @@ void apply_setting(Scene& scene, std::string_view assignment, std::string_view f
     if (object.contains("preset")) {
         const std::optional<ResolverSettings> base =
             preset(object["preset"].is_string() ? object["preset"].get<std::string>() : "");
-        if (!base) throw InputError(std::string(flag), "preset: must be one of " + preset_list_text() + ", got " + value.dump());
+        if (!base)
+            throw InputError(std::string(flag),
+                             "preset: must be one of " + preset_list_text() + ", got " + value.dump());
         scene.settings = *base;
         return;
     }
     // Errors read "--set angular_limit.factor: must be >= 0, got -1".
     try {
+        refuse_renamed_settings(object, "");
         validate_settings_object(object, "");
         apply_fields(scene, object, "");
     } catch (const InputError& e) {

@@ -21,6 +21,11 @@ void read_settings(Scene& scene, const json* settings, std::string_view path,
 
 json settings_json(const ResolverSettings& settings, const WorldSettings& world);
 
+// Settings values that were renamed get an error saying what replaced them, before the schema's plainer
+// "must be one of": `position_method` "baumgarte" (now the step-5 setting `baumgarte` with position_method
+// "none"). `settings` may be anything; only an object is looked at. Throws InputError under `path`.
+void refuse_renamed_settings(const json& settings, std::string_view path);
+
 // Applies one `name=value` override, as `--set` gives it (value in JSON syntax, or a bare word for a
 // name); throws InputError naming `flag`. `preset=P` starts the resolver settings over from that preset.
 void apply_setting(Scene& scene, std::string_view assignment, std::string_view flag);

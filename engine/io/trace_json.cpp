@@ -58,14 +58,20 @@ void write_desired(json& out, const DesiredDeltaVelocity& d) {
     out["restitution_used"] = d.restitution_used;
     out["velocity_from_acceleration_applied"] = d.velocity_from_acceleration_applied;
     out["velocity_from_acceleration"] = d.velocity_from_acceleration;
+    if (d.position_bias) out["position_bias"] = *d.position_bias;  // absent when Baumgarte is off
     out["desired_delta_velocity"] = d.desired_delta_velocity;
 }
 
 DesiredDeltaVelocity read_desired(const json& j) {
-    return {j["separating_velocity"].get<double>(),        j["restitution"].get<double>(),
-            j["restitution_cutoff"].get<double>(),         j["restitution_cutoff_applied"].get<bool>(),
-            j["restitution_used"].get<double>(),           j["velocity_from_acceleration_applied"].get<bool>(),
-            j["velocity_from_acceleration"].get<double>(), j["desired_delta_velocity"].get<double>()};
+    return {j["separating_velocity"].get<double>(),
+            j["restitution"].get<double>(),
+            j["restitution_cutoff"].get<double>(),
+            j["restitution_cutoff_applied"].get<bool>(),
+            j["restitution_used"].get<double>(),
+            j["velocity_from_acceleration_applied"].get<bool>(),
+            j["velocity_from_acceleration"].get<double>(),
+            j.contains("position_bias") ? std::optional(j["position_bias"].get<double>()) : std::nullopt,
+            j["desired_delta_velocity"].get<double>()};
 }
 
 // --- why a contact exists ------------------------------------------------------------------------------
@@ -293,7 +299,6 @@ json velocity_iteration_json(const VelocityIteration& it) {
     if (const auto& r = it.resolution) {
         out["contact_velocity"] = vec3_json(r->contact_velocity);
         write_desired(out, r->desired_delta_velocity);
-        if (r->position_bias) out["position_bias"] = *r->position_bias;
         out["impulse_model"] = name_of(impulse_model_names, r->impulse.model);
         if (r->impulse.friction) out["friction_solve"] = friction_solve_json(*r->impulse.friction);
         out["impulse"] = vec3_json(r->impulse.impulse_contact);
@@ -335,7 +340,6 @@ VelocityIteration read_velocity_iteration(const json& j) {
         VelocityResolution r;
         r.contact_velocity = read_vec3(j["contact_velocity"]);
         r.desired_delta_velocity = read_desired(j);
-        if (j.contains("position_bias")) r.position_bias = j["position_bias"].get<double>();
         r.impulse.model = read_enum(impulse_model_names, j["impulse_model"]);
         if (j.contains("friction_solve")) r.impulse.friction = read_friction_solve(j["friction_solve"]);
         r.impulse.impulse_contact = read_vec3(j["impulse"]);
@@ -399,8 +403,8 @@ json frame_json(const FrameRecord& f, const ResolverSettings& settings) {
     }
     json contacts = json::array();
     for (const ContactPreparation& c : f.contacts) contacts.push_back(preparation_json(c));
-    const json position = phase_json("position", name_of(position_method_names, settings.position_method), f.position,
-                                     position_iteration_json);
+    const json position = phase_json("position", name_of(position_method_names, position_method_in_effect(settings)),
+                                     f.position, position_iteration_json);
     const json velocity = phase_json("velocity", name_of(velocity_method_names, settings.velocity_method), f.velocity,
                                      velocity_iteration_json);
     json after = json::array();
@@ -614,6 +618,7 @@ json trace_json(const Trace& trace) {
 }
 
 Trace read_trace(const json& given) {
+    if (given.is_object() && given.contains("settings")) refuse_renamed_settings(given["settings"], "settings");
     json upgraded;
     const json* read = &given;
     if (given.is_object() && given.contains("version") && given["version"] == 1) {

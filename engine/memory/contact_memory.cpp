@@ -1,5 +1,6 @@
 #include "memory/contact_memory.hpp"
 
+#include <cstdint>
 #include <functional>
 
 namespace impulse {
@@ -11,6 +12,7 @@ ContactKey key_of(const Contact& contact) {
 std::size_t ContactKeyHash::operator()(const ContactKey& key) const {
     std::size_t h = 0;
     const auto mix = [&h](int value) { h = h * 1000003u ^ std::hash<int>{}(value); };
+    // (The table keeps the low bits: the final multiply and fold spread every input into them.)
     mix(key.bodies[0]);
     mix(key.bodies[1]);
     mix(static_cast<int>(key.origin.test));
@@ -18,18 +20,57 @@ std::size_t ContactKeyHash::operator()(const ContactKey& key) const {
         mix(static_cast<int>(f.kind));
         mix(f.index);
     }
-    return h;
+    const std::uint64_t spread = (h ^ (h >> 29)) * 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(spread ^ (spread >> 32));
+}
+
+namespace {
+
+// Field by field (the defaulted comparison calls memcmp for the arrays).
+bool same_key(const ContactKey& a, const ContactKey& b) {
+    return a.bodies[0] == b.bodies[0] && a.bodies[1] == b.bodies[1] && a.origin.test == b.origin.test &&
+           a.origin.features[0].kind == b.origin.features[0].kind &&
+           a.origin.features[0].index == b.origin.features[0].index &&
+           a.origin.features[1].kind == b.origin.features[1].kind &&
+           a.origin.features[1].index == b.origin.features[1].index;
+}
+
+}  // namespace
+
+std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key) const {
+    if (index_.empty()) return -1;
+    const std::size_t mask = index_.size() - 1;
+    for (std::size_t at = ContactKeyHash{}(key)&mask;; at = (at + 1) & mask) {
+        const std::int32_t entry = index_[at];
+        if (entry < 0) return -1;
+        if (same_key(entries_[static_cast<std::size_t>(entry)].first, key)) return entry;
+    }
 }
 
 std::optional<Vec3> ContactMemory::recall(const ContactKey& key) const {
-    const auto found = impulses_.find(key);
-    if (found == impulses_.end()) return std::nullopt;
-    return found->second;
+    const std::ptrdiff_t slot = slot_of(key);
+    if (slot < 0) return std::nullopt;
+    return impulse_at(slot);
 }
 
-void ContactMemory::remember(const std::vector<std::pair<ContactKey, Vec3>>& impulses) {
-    impulses_.clear();
-    for (const auto& [key, impulse] : impulses) impulses_.emplace(key, impulse);
+void ContactMemory::remember(std::vector<std::pair<ContactKey, Vec3>> impulses) {
+    entries_ = std::move(impulses);
+    std::size_t size = 16;
+    while (size < 2 * entries_.size()) size *= 2;
+    index_.assign(size, -1);
+    const std::size_t mask = size - 1;
+    for (std::size_t e = 0; e < entries_.size(); ++e) {
+        const ContactKey& key = entries_[e].first;
+        std::size_t at = ContactKeyHash{}(key)&mask;
+        while (index_[at] >= 0 && !same_key(entries_[static_cast<std::size_t>(index_[at])].first, key))
+            at = (at + 1) & mask;
+        if (index_[at] < 0) index_[at] = static_cast<std::int32_t>(e);  // else the first with this key keeps it
+    }
+}
+
+void ContactMemory::clear() {
+    entries_.clear();
+    index_.clear();
 }
 
 }  // namespace impulse

@@ -7,8 +7,9 @@
 #include "math/types.hpp"
 
 #include <cstddef>
+#include <cstdint>
+#include <array>
 #include <optional>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -34,15 +35,23 @@ public:
     // turned a little between frames still receives the same push), or nothing for a new contact.
     std::optional<Vec3> recall(const ContactKey& key) const;
 
+    // The same as an index into what was remembered (below size()), or -1: a solver that must warm start each
+    // remembered impulse once can mark the ones it took.
+    std::ptrdiff_t slot_of(const ContactKey& key) const;
+    const Vec3& impulse_at(std::ptrdiff_t slot) const { return entries_[static_cast<std::size_t>(slot)].second; }
+
     // Replaces what was remembered with this frame's totals. When two contacts share a key (explicit contacts
     // written by hand carry no features), the first keeps it, so recall stays deterministic.
-    void remember(const std::vector<std::pair<ContactKey, Vec3>>& impulses);
+    void remember(std::vector<std::pair<ContactKey, Vec3>> impulses);
 
-    std::size_t size() const { return impulses_.size(); }
-    void clear() { impulses_.clear(); }
+    std::size_t size() const { return entries_.size(); }
+    void clear();
 
 private:
-    std::unordered_map<ContactKey, Vec3, ContactKeyHash> impulses_;
+    // The totals as given, and an open-addressing index over them (linear probing, at most half full, -1 =
+    // empty): a frame's remembering writes 4 bytes per slot and allocates nothing once the index has grown.
+    std::vector<std::pair<ContactKey, Vec3>> entries_;
+    std::vector<std::int32_t> index_;
 };
 
 }  // namespace impulse

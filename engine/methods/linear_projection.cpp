@@ -3,6 +3,7 @@
 // isn't very realistic": a box resting on one corner slides sideways out of the ground instead of tipping.
 
 #include "methods/position_resolution.hpp"
+#include "resolver/phases.hpp"
 
 namespace impulse {
 
@@ -29,6 +30,26 @@ PositionResolution linear_projection(const PreparedContact& contact, double amou
     }
     r.change = position_change(r.moves, d.normal, d.velocity_per_unit_impulse);
     return r;
+}
+
+namespace {
+
+PositionResolution project(const PreparedContact& contact, double amount, const PositionPhaseState& /*state*/,
+                           const FrameContext& /*frame*/) {
+    return linear_projection(contact, amount);
+}
+
+// A contact whose bodies cannot translate cannot be moved by this method at all.
+bool can_translate(const PreparedContact& contact) {
+    for (const auto& m : contact.mass)
+        if (m && m->inverse_mass > 0.0) return true;
+    return false;
+}
+
+}  // namespace
+
+PhaseOutcome linear_projection_positions(FrameContext& frame) {
+    return worst_first_positions(frame, project, can_translate);
 }
 
 }  // namespace impulse

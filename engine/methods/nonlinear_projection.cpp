@@ -4,6 +4,7 @@
 // stops a small-inertia body from spinning itself out of a deep contact.
 
 #include "methods/position_resolution.hpp"
+#include "resolver/phases.hpp"
 
 namespace impulse {
 
@@ -20,6 +21,19 @@ PositionResolution nonlinear_projection(const PreparedContact& contact, double a
         angular_limit(r.moves, limit, d.normal, d.relative_position, d.velocity_per_unit_impulse, orientation_update);
     r.change = position_change(r.moves, d.normal, d.velocity_per_unit_impulse);
     return r;
+}
+
+namespace {
+
+PositionResolution project(const PreparedContact& contact, double amount, const PositionPhaseState& /*state*/,
+                           const FrameContext& frame) {
+    return nonlinear_projection(contact, amount, frame.settings.angular_limit, frame.settings.orientation_update);
+}
+
+}  // namespace
+
+PhaseOutcome nonlinear_projection_positions(FrameContext& frame) {
+    return worst_first_positions(frame, project, nullptr);
 }
 
 }  // namespace impulse

@@ -5,17 +5,12 @@
 // (not the increment) to what a contact can do, and applies only the change of the total. A contact that an
 // earlier visit pushed too hard can therefore give impulse back, which the book's methods cannot.
 //
-// Normal row (the book's step 3 gives K_n = d, the delta velocity per unit impulse):
-//   target      = v_restitution + position_bias
-//                 v_restitution = v_s + desired delta v of step 5 at preparation, i.e. -c_used (v_s - v_acc):
+// The rows are methods/contact_rows.hpp's (normal row, two friction rows against the slip, the cone), with
+//   target      = v_s + desired delta v of step 5 at preparation = -c_used (v_s - v_acc) + position_bias:
 //                 the bounce judged once, on the closing speed before any impulse (restitution cut-off and
-//                 velocity from acceleration as the settings say); position_bias = beta max(d - slop, 0)/h
-//                 when position_method is baumgarte, else 0
-//   d lambda_n  = (target - v_n) / K_n
-//   lambda_n    = max(lambda_n + d lambda_n, 0)                               (push only)
-// Friction rows, on the tangential velocity the normal change leaves, v_t' = v_t + K_tn (change of lambda_n):
-//   d lambda_t  = -K_tt^-1 v_t'          (K_tt the 2x2 tangent block of the 3x3 K; its diagonal if singular)
-//   lambda_t    = lambda_t + d lambda_t, scaled back onto |lambda_t| <= mu lambda_n    (friction cone)
+//                 velocity from acceleration as the settings say), plus Baumgarte's term when `baumgarte` is on
+//   slip offset = step 4's tangential acceleration term (when the refinement is on): the bodies' last-frame
+//                 acceleration does not change during the frame, so it is added as a constant.
 // Applied this visit: lambda_after - lambda_before, through step 7 (velocity_change).
 //
 // Warm starting (settings.warm_start): before the sweeps, each contact found in the ContactMemory (by
@@ -25,256 +20,206 @@
 // switched on mid-run). When two contacts of a frame share a key (hand-written contacts have no features),
 // only the first is warm started: the memory keeps the first one's total.
 //
-// The contact velocity is read from the bodies at every visit (step 4 on their current motion), never from
-// the linearised bookkeeping, so recorded and unrecorded runs compute the same bits. The sweeps stop early
-// when no visit of a whole sweep changed its own contact's velocity by more than the velocity epsilon
-// (|K (lambda_after - lambda_before)| per component); settings.iterations does not apply.
+// The sweeps stop early when no visit of a whole sweep changed its own contact's velocity by more than the
+// velocity epsilon, |K (lambda_after - lambda_before)| (a norm: no basis decides it); settings.iterations does
+// not apply.
 //
-// Recorded per visit (and per warm start, stage warm_start): a VelocityIteration with sweep {0, pass, stage},
-// accumulated {before, unclamped, after, clamp}, and a resolution whose contact_velocity is the velocity read
-// from the bodies, whose desired_delta_velocity is step 5 at preparation with separating_velocity = the
-// current v_n and desired_delta_velocity = target - v_n (the value compared with the epsilon), whose
-// position_bias is the Baumgarte bias (when on), and whose impulse_contact / impulse_world is the increment
-// applied (model frictionless, static_friction, or sliding_friction when the cone clamped; no friction_solve:
-// that is the book's 3x3 solve, not this one). The updates list is filled as worst-first fills it (the
-// linearised bookkeeping of every contact sharing a body), but with desired delta v read in this method's
-// terms, target - v_n; it costs a scan of the contacts per visit and is made only while recording.
+// Recorded per visit (and per warm start, stage warm_start), only when the recorder keeps iterations (the loop
+// is compiled twice from one template, the same arithmetic both ways): a VelocityIteration with sweep
+// {0, pass, stage}, accumulated {before, unclamped, after, clamp}, and a resolution whose contact_velocity is
+// the velocity read from the bodies, whose desired_delta_velocity is step 5 at preparation with
+// separating_velocity = the current v_n and desired_delta_velocity = target - v_n (the value compared with the
+// epsilon), and whose impulse_contact / impulse_world is the increment applied (model frictionless,
+// static_friction, or sliding_friction when the cone clamped; no friction_solve: that is the book's 3x3
+// solve, not this one). The updates list is filled as worst-first fills it (the linearised bookkeeping of
+// every contact sharing a body), but with desired delta v read in this method's terms, target - v_n.
 
-#include "derivation/impulse.hpp"
+#include "methods/contact_rows.hpp"
 #include "methods/solver_common.hpp"
+#include "methods/method.hpp"
 #include "resolver/bookkeeping.hpp"
-#include "resolver/phases.hpp"
+#include "resolver/worst_first_selector.hpp"
 
 #include <algorithm>
-#include <cmath>
-#include <unordered_set>
 
 namespace impulse {
 
 namespace {
 
-// What a contact's rows need, fixed for the whole phase.
-struct ContactRows {
-    bool active;                    // not inert: an impulse changes its velocity
-    double target_normal_velocity;  // v_restitution + position bias (m/s)
-    Mat3 delta_velocity_matrix;     // K, contact coordinates
-    Vec3 total = Vec3::Zero();      // lambda: the accumulated impulse, contact coordinates (N s)
-};
-
-ContactRows rows_for(const PreparedContact& contact) {
-    const ContactPreparation& d = contact.derivation;
-    ContactRows rows{};
-    rows.active = !d.inert;
-    rows.target_normal_velocity = d.desired_delta_velocity.separating_velocity +
-                                  d.desired_delta_velocity.desired_delta_velocity + contact.position_bias.value_or(0.0);
-    rows.delta_velocity_matrix = delta_velocity_matrix(d.basis, d.relative_position, contact.mass);
-    rows.total = Vec3::Zero();
-    return rows;
-}
-
-// Scales the tangential part of `total` back onto the cone |lambda_t| <= mu lambda_n; true when it had to.
-bool clamp_to_cone(Vec3& total, double friction) {
-    const double limit = friction * total.x();
-    const double tangential = std::hypot(total.y(), total.z());
-    if (tangential <= limit) return false;
-    const double scale = tangential > 0.0 ? std::max(limit, 0.0) / tangential : 0.0;
-    total.y() *= scale;
-    total.z() *= scale;
-    return true;
-}
-
-ImpulseClamp clamp_of(bool push_only, bool friction) {
-    return push_only && friction ? ImpulseClamp::both
-           : push_only           ? ImpulseClamp::push_only
-           : friction            ? ImpulseClamp::friction
-                                 : ImpulseClamp::none;
-}
-
-// The accumulated-impulse update of one visit: normal row, then the friction rows on what it leaves.
-AccumulatedImpulse visit_rows(const ContactRows& rows, const ContactPreparation& d, const Vec3& velocity) {
-    AccumulatedImpulse a;
-    a.before = rows.total;
-    a.unclamped = rows.total;
-    a.unclamped.x() += (rows.target_normal_velocity - velocity.x()) /
-                       d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;  // (target - v_n) / K_n
-    a.after = a.unclamped;
-    const bool push_only = a.after.x() < 0.0;
-    if (push_only) a.after.x() = 0.0;
-    bool friction = false;
-    if (d.friction != 0.0) {
-        const Mat3& k = rows.delta_velocity_matrix;
-        // The tangential velocity once the normal change is applied: v_t + K_tn (lambda_n after - before).
-        const Eigen::Vector2d sliding =
-            Eigen::Vector2d(velocity.y(), velocity.z()) + k.block<2, 1>(1, 0) * (a.after.x() - a.before.x());
-        const Eigen::Matrix2d k_tt = k.block<2, 2>(1, 1);
-        Eigen::Vector2d change = Eigen::Vector2d::Zero();
-        if (k_tt.determinant() > 0.0) {
-            change = -k_tt.inverse() * sliding;  // d lambda_t = -K_tt^-1 v_t'
-        } else {
-            for (int t = 0; t < 2; ++t)
-                if (k_tt(t, t) > 0.0) change(t) = -sliding(t) / k_tt(t, t);
-        }
-        a.unclamped.y() += change.x();
-        a.unclamped.z() += change.y();
-        a.after.y() = a.unclamped.y();
-        a.after.z() = a.unclamped.z();
-        friction = clamp_to_cone(a.after, d.friction);
-    } else {
-        a.after.y() = a.after.z() = 0.0;
-    }
-    a.clamp = clamp_of(push_only, friction);
-    return a;
-}
-
-ImpulseModel model_of(const ContactPreparation& d, ImpulseClamp clamp) {
-    if (d.friction == 0.0) return ImpulseModel::frictionless;
+ImpulseModel model_of(double friction, ImpulseClamp clamp) {
+    if (friction == 0.0) return ImpulseModel::frictionless;
     return clamp == ImpulseClamp::friction || clamp == ImpulseClamp::both ? ImpulseModel::sliding_friction
                                                                           : ImpulseModel::static_friction;
 }
 
-class PgsSolver {
+class ProjectedGaussSeidel {
 public:
-    PgsSolver(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts, const ResolverSettings& settings,
-              Recorder& recorder)
-        : bodies_(bodies), contacts_(contacts), settings_(settings), recorder_(recorder) {
-        if (recorder_.wants_updates()) by_body_.emplace(contacts, bodies.size());
-        rows_.reserve(contacts.size());
-        for (const PreparedContact& c : contacts) rows_.push_back(rows_for(c));
+    explicit ProjectedGaussSeidel(FrameContext& frame)
+        : frame_(frame), bodies_(solver_bodies(frame.bodies, frame.mass)) {
+        rows_.reserve(frame.contacts.size());
+        targets_.reserve(frame.contacts.size());
+        active_.reserve(frame.contacts.size());
+        keys_.reserve(frame.contacts.size());
+        for (int i = 0; i < static_cast<int>(frame.contacts.size()); ++i) {
+            const PreparedContact& c = frame.contacts[static_cast<std::size_t>(i)];
+            const ContactPreparation& d = c.derivation;
+            if (d.inert) continue;  // nothing can move it: no visits
+            ContactRow& row = rows_.emplace_back();
+            fill_contact_row(row, i, c, bodies_.data());
+            if (frame.settings.refinements.tangential_acceleration_velocity)
+                for (int b = 0; b < 2; ++b)
+                    if (const auto& term = d.contact_velocity.tangential_acceleration_velocity[b]) {
+                        row.slip_offset[0] += body_sign(b) * term->y();
+                        row.slip_offset[1] += body_sign(b) * term->z();
+                    }
+            targets_.push_back(d.desired_delta_velocity.separating_velocity +
+                               d.desired_delta_velocity.desired_delta_velocity);
+            keys_.push_back(contact_key(d));
+            active_.push_back(i);
+        }
     }
 
-    int active_count() const {
-        return static_cast<int>(
-            std::count_if(rows_.begin(), rows_.end(), [](const ContactRows& r) { return r.active; }));
-    }
+    int active_count() const { return static_cast<int>(rows_.size()); }
 
     // Last frame's totals, re-projected and clamped, applied before the first sweep. Returns how many.
+    template <bool recording>
     int warm_start(const ContactMemory& memory) {
+        RememberedTotals remembered(memory);
         int started = 0;
-        std::unordered_set<ContactKey, ContactKeyHash> seen;
-        for (int i = 0; i < static_cast<int>(contacts_.size()); ++i) {
-            ContactRows& rows = rows_[static_cast<std::size_t>(i)];
-            const ContactPreparation& d = contacts_[static_cast<std::size_t>(i)].derivation;
-            const ContactKey key = contact_key(d);
-            if (!seen.insert(key).second || !rows.active) continue;
-            const std::optional<Vec3> remembered = memory.recall(key);
-            if (!remembered) continue;
-            AccumulatedImpulse a;
-            a.before = Vec3::Zero();
-            a.unclamped = to_contact(d.basis, *remembered);
-            a.after = a.unclamped;
-            const bool push_only = a.after.x() < 0.0;
-            if (push_only) a.after.x() = 0.0;
-            bool friction = false;
-            if (d.friction == 0.0) {
-                friction = a.after.y() != 0.0 || a.after.z() != 0.0;
-                a.after.y() = a.after.z() = 0.0;
-            } else {
-                friction = clamp_to_cone(a.after, d.friction);
-            }
-            a.clamp = clamp_of(push_only, friction);
-            visit(i, a, SweepPlace{0, 0, SolverStage::warm_start},
-                  current_contact_velocity(contacts_[static_cast<std::size_t>(i)], bodies_, settings_));
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
+            const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]);
+            if (!total) continue;
+            Axes velocity;
+            if constexpr (recording) velocity = row_velocity(rows_[r], bodies_.data());
+            visit<recording>(r, *total, SweepPlace{0, 0, SolverStage::warm_start}, velocity);
+            warm_started_.push_back(rows_[r].contact);
             ++started;
         }
         return started;
     }
 
-    // One sweep over every active contact in index order; returns the largest velocity change a visit made at
-    // its own contact.
+    // One sweep over every active contact in index order; returns the largest |K (after - before)|^2 a visit
+    // made at its own contact.
+    template <bool recording>
     double sweep(int pass) {
         double largest = 0.0;
-        for (int i = 0; i < static_cast<int>(contacts_.size()); ++i) {
-            const ContactRows& rows = rows_[static_cast<std::size_t>(i)];
-            if (!rows.active) continue;
-            const PreparedContact& contact = contacts_[static_cast<std::size_t>(i)];
-            const Vec3 velocity = current_contact_velocity(contact, bodies_, settings_);
-            const AccumulatedImpulse a = visit_rows(rows, contact.derivation, velocity);
-            const Vec3 change = rows.delta_velocity_matrix * (a.after - a.before);
-            largest = std::max(largest, change.cwiseAbs().maxCoeff());
-            visit(i, a, SweepPlace{0, pass, SolverStage::solve}, velocity);
+        SolverBody* bodies = bodies_.data();
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
+            const Axes velocity = row_velocity(rows_[r], bodies);
+            const RowVisit v = solve_rows(rows_[r], velocity, NormalTarget{targets_[r]});
+            largest = std::max(largest, velocity_change_squared(rows_[r], v.increment()));
+            visit<recording>(r, v, SweepPlace{0, pass, SolverStage::solve}, velocity);
         }
         return largest;
     }
 
-    void remember(ContactMemory& memory) const {
-        std::vector<std::pair<ContactKey, Vec3>> totals;
-        totals.reserve(contacts_.size());
-        for (std::size_t i = 0; i < contacts_.size(); ++i)
-            if (rows_[i].active)
-                totals.emplace_back(contact_key(contacts_[i].derivation),
-                                    to_world(contacts_[i].derivation.basis, rows_[i].total));
-        memory.remember(totals);
+    // Writes the velocities back to the bodies, remembers the totals.
+    void finish(ContactMemory* memory) {
+        store_velocities(bodies_, frame_.bodies);
+        if (memory) remember_totals(rows_, keys_, *memory);
     }
 
+    // The contacts of the last visits, in visit order: every sweep visits every active contact in index order.
+    std::span<const int> last_visited(int sweeps) const {
+        return sweeps > 0 ? std::span<const int>(active_) : std::span<const int>(warm_started_);
+    }
     int iterations() const { return iterations_; }
 
 private:
-    // Applies the change of contact i's total, a.after - a.before, and reports the visit.
-    void visit(int i, const AccumulatedImpulse& a, const SweepPlace& place, const Vec3& velocity) {
-        ContactRows& rows = rows_[static_cast<std::size_t>(i)];
-        const PreparedContact& contact = contacts_[static_cast<std::size_t>(i)];
-        const ContactPreparation& d = contact.derivation;
-        VelocityResolution r;
-        r.contact_velocity = velocity;
-        r.desired_delta_velocity = d.desired_delta_velocity;
-        r.desired_delta_velocity.separating_velocity = velocity.x();
-        r.desired_delta_velocity.desired_delta_velocity = rows.target_normal_velocity - velocity.x();
-        r.position_bias = contact.position_bias;
-        r.impulse.model = model_of(d, a.clamp);
-        r.impulse.impulse_contact = a.after - a.before;
-        r.impulse.impulse_world = to_world(d.basis, r.impulse.impulse_contact);
-        r.velocity_change = velocity_change(r.impulse.impulse_world, d.relative_position, contact.mass);
-        rows.total = a.after;
-
-        VelocityIteration record{.iteration = iterations_,
-                                 .contact = i,
-                                 .desired_delta_velocity = r.desired_delta_velocity.desired_delta_velocity,
-                                 .epsilon = settings_.velocity_epsilon,
-                                 .sweep = place,
-                                 .accumulated = a,
-                                 .resolution = r,
-                                 .updates = {}};
-        apply_velocity_change(bodies_, d.bodies, r.velocity_change);
-        if (recorder_.wants_updates()) {
-            // The bookkeeping is never read by this method; it is kept up to date only to give the updates.
-            by_body_->sharing(d.bodies, sharing_);
-            update_contact_velocities(contacts_, sharing_, d.bodies, r.velocity_change, settings_, &record.updates);
-            for (VelocityUpdate& u : record.updates) {
-                const double target = rows_[static_cast<std::size_t>(u.contact)].target_normal_velocity;
-                u.desired_delta_velocity_before = target - u.before.x();
-                u.desired_delta_velocity_after = target - u.after.x();
-            }
+    // Applies the change of row r's total, v.after - v.before, and (recording) reports the visit.
+    template <bool recording>
+    [[gnu::always_inline]] void visit(std::size_t r, const RowVisit& v, const SweepPlace& place, const Axes& velocity) {
+        ContactRow& row = rows_[r];
+        const Axes increment = v.increment();
+        const Vec3 impulse = world_impulse(row, increment);
+        keep_total(row, v.after);
+        if constexpr (!recording) {
+            apply_impulse(row, bodies_.data(), impulse, nullptr);
+        } else {
+            VelocityChange change;
+            apply_impulse(row, bodies_.data(), impulse, &change);
+            record(r, v, place, vector_of(velocity), vector_of(increment), impulse, change);
         }
-        recorder_.velocity_iteration(record);
         ++iterations_;
     }
 
-    std::vector<RigidBody>& bodies_;
-    std::vector<PreparedContact>& contacts_;
-    const ResolverSettings& settings_;
-    Recorder& recorder_;
-    std::vector<ContactRows> rows_;
-    std::optional<ContactsByBody> by_body_;  // only to give the recorder its updates
-    std::vector<int> sharing_;
+    void record(std::size_t r, const RowVisit& v, const SweepPlace& place, const Vec3& velocity, const Vec3& increment,
+                const Vec3& impulse, const VelocityChange& change) {
+        const int i = rows_[r].contact;
+        const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(i)].derivation;
+        VelocityResolution resolution;
+        resolution.contact_velocity = velocity;
+        resolution.desired_delta_velocity = d.desired_delta_velocity;
+        resolution.desired_delta_velocity.separating_velocity = velocity.x();
+        resolution.desired_delta_velocity.desired_delta_velocity = targets_[r] - velocity.x();
+        resolution.impulse.model = model_of(d.friction, v.clamp());
+        resolution.impulse.impulse_contact = increment;
+        resolution.impulse.impulse_world = impulse;
+        resolution.velocity_change = change;
+        VelocityIteration iteration{.iteration = iterations_,
+                                    .contact = i,
+                                    .desired_delta_velocity = targets_[r] - velocity.x(),
+                                    .epsilon = frame_.settings.velocity_epsilon,
+                                    .sweep = place,
+                                    .accumulated = v.accumulated(),
+                                    .resolution = resolution,
+                                    .updates = {}};
+        // The bookkeeping is never read by this method; it is kept up to date only to give the updates, with
+        // each contact's desired delta v in this method's terms.
+        if (!by_body_) {
+            by_body_.emplace(frame_.contacts, frame_.bodies.size());
+            target_of_.assign(frame_.contacts.size(), 0.0);
+            for (std::size_t k = 0; k < rows_.size(); ++k)
+                target_of_[static_cast<std::size_t>(rows_[k].contact)] = targets_[k];
+        }
+        by_body_->sharing(d.bodies, sharing_);
+        update_contact_velocities(frame_.contacts, sharing_, d.bodies, change, frame_.settings, &iteration.updates);
+        for (VelocityUpdate& u : iteration.updates) {
+            const double target = target_of_[static_cast<std::size_t>(u.contact)];
+            u.desired_delta_velocity_before = target - u.before.x();
+            u.desired_delta_velocity_after = target - u.after.x();
+        }
+        frame_.recorder.velocity_iteration(iteration);
+    }
+
+    FrameContext& frame_;
+    std::vector<SolverBody> bodies_;
+    std::vector<ContactRow> rows_;   // the active contacts, in index order
+    std::vector<double> targets_;    // per row: the normal velocity it asks for (m/s)
+    std::vector<int> active_;        // per row: its contact's index
+    std::vector<ContactKey> keys_;   // per row: its contact's key in the ContactMemory
+    std::vector<int> warm_started_;  // the contacts warm started, in order
     int iterations_ = 0;
+    // Only to give the recorder its updates:
+    std::optional<ContactsByBody> by_body_;
+    std::vector<double> target_of_;  // per contact
+    std::vector<int> sharing_;
 };
+
+template <bool recording>
+PhaseOutcome solve(FrameContext& frame) {
+    const ResolverSettings& settings = frame.settings;
+    ProjectedGaussSeidel pgs(frame);
+    const int warm_started = settings.warm_start && frame.memory ? pgs.warm_start<recording>(*frame.memory) : 0;
+    PhaseOutcome outcome;
+    outcome.iteration_limit = warm_started + std::max(settings.sweeps, 0) * pgs.active_count();
+    const double epsilon_squared = settings.velocity_epsilon * settings.velocity_epsilon;
+    bool converged = pgs.active_count() == 0;
+    int sweeps = 0;
+    for (; sweeps < settings.sweeps && !converged; ++sweeps)
+        converged = pgs.sweep<recording>(sweeps) <= epsilon_squared;
+    pgs.finish(frame.memory);
+    if constexpr (!recording) frame.recorder.contacts_visited(pgs.last_visited(sweeps));
+    outcome.iterations_used = pgs.iterations();
+    outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
+    frame.recorder.end_phase(Phase::velocity, outcome);
+    return outcome;
+}
 
 }  // namespace
 
-PhaseOutcome pgs_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                            const ResolverSettings& settings, Recorder& recorder, ContactMemory* memory) {
-    PgsSolver solver(bodies, contacts, settings, recorder);
-    const int warm_started = settings.warm_start && memory ? solver.warm_start(*memory) : 0;
-    PhaseOutcome outcome;
-    outcome.iteration_limit = warm_started + std::max(settings.sweeps, 0) * solver.active_count();
-    bool converged = solver.active_count() == 0;
-    for (int pass = 0; pass < settings.sweeps && !converged; ++pass)
-        converged = solver.sweep(pass) <= settings.velocity_epsilon;
-    if (memory) solver.remember(*memory);
-    outcome.iterations_used = solver.iterations();
-    outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
-    recorder.end_phase(Phase::velocity, outcome);
-    return outcome;
+PhaseOutcome projected_gauss_seidel_velocities(FrameContext& frame) {
+    return frame.recorder.wants_updates() ? solve<true>(frame) : solve<false>(frame);
 }
 
 }  // namespace impulse

@@ -12,12 +12,25 @@
 
 namespace impulse {
 
-PhaseOutcome relax_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                             const ResolverSettings& settings, Recorder& recorder) {
+namespace {
+
+PositionResolution project(const PreparedContact& contact, double amount, const PositionPhaseState& /*state*/,
+                           const FrameContext& frame) {
+    PositionResolution r =
+        nonlinear_projection(contact, amount, frame.settings.angular_limit, frame.settings.orientation_update);
+    r.method = PositionMethod::relaxation;
+    return r;
+}
+
+}  // namespace
+
+PhaseOutcome relaxation_positions(FrameContext& frame) {
+    const ResolverSettings& settings = frame.settings;
+    std::vector<PreparedContact>& contacts = frame.contacts;
     PhaseOutcome outcome;
     outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));
-    PositionPhaseState state = position_phase_state(bodies.size());
-    WorstFirstSelector selector = penetration_selector(contacts, bodies.size(), settings);
+    PositionPhaseState state{std::vector<double>(frame.bodies.size(), 0.0)};
+    WorstFirstSelector selector = penetration_selector(frame, nullptr);
     bool cut_short = false;  // the iteration limit stopped a pass with a contact still waiting for its turn
     for (int pass = 0; pass < settings.relaxation.passes && !cut_short; ++pass) {
         if (!any_penetration_above(contacts, settings.position_epsilon)) break;
@@ -30,8 +43,7 @@ PhaseOutcome relax_positions(std::vector<RigidBody>& bodies, std::vector<Prepare
             selector.set_aside(*chosen);  // one visit per pass
             const double amount =
                 settings.relaxation.fraction * contacts[static_cast<std::size_t>(*chosen)].penetration;
-            resolve_penetration(bodies, contacts, state, selector, *chosen, amount, outcome.iterations_used, pass,
-                                settings, recorder);
+            resolve_penetration(frame, project, state, selector, *chosen, amount, outcome.iterations_used, pass);
             ++outcome.iterations_used;
         }
     }
@@ -41,7 +53,7 @@ PhaseOutcome relax_positions(std::vector<RigidBody>& bodies, std::vector<Prepare
     outcome.stop = !remaining  ? StopReason::resolved
                    : cut_short ? StopReason::iteration_limit
                                : StopReason::passes_complete;
-    recorder.end_phase(Phase::position, outcome);
+    frame.recorder.end_phase(Phase::position, outcome);
     return outcome;
 }
 

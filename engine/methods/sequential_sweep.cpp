@@ -18,10 +18,24 @@
 #include "resolver/bookkeeping.hpp"
 #include "resolver/phases.hpp"
 
+#include <algorithm>
+
 namespace impulse {
 
-PhaseOutcome sweep_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                              const ResolverSettings& settings, Recorder& recorder) {
+namespace {
+
+bool any_desired_delta_velocity_above(const std::vector<PreparedContact>& contacts, double epsilon) {
+    return std::any_of(contacts.begin(), contacts.end(),
+                       [epsilon](const PreparedContact& c) { return !c.derivation.inert && desired_of(c) > epsilon; });
+}
+
+}  // namespace
+
+PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
+    std::vector<RigidBody>& bodies = frame.bodies;
+    std::vector<PreparedContact>& contacts = frame.contacts;
+    const ResolverSettings& settings = frame.settings;
+    Recorder& recorder = frame.recorder;
     PhaseOutcome outcome;
     outcome.iteration_limit = std::max(settings.sweeps, 0) * static_cast<int>(contacts.size());
     const ContactsByBody by_body(contacts, bodies.size());  // so a visit updates its neighbours, not every contact
@@ -37,7 +51,7 @@ PhaseOutcome sweep_velocities(std::vector<RigidBody>& bodies, std::vector<Prepar
                                      .epsilon = settings.velocity_epsilon,
                                      .sweep = SweepPlace{0, pass, SolverStage::solve},
                                      .accumulated = {},
-                                     .resolution = resolve_velocity(contact),
+                                     .resolution = resolve_velocity(contact, settings.sliding_friction),
                                      .updates = {}};
             const std::array<int, 2> changed = contact.derivation.bodies;
             const VelocityChange& change = record.resolution->velocity_change;
@@ -52,7 +66,7 @@ PhaseOutcome sweep_velocities(std::vector<RigidBody>& bodies, std::vector<Prepar
         if (!resolved_any) break;
     }
     outcome.stop = any_desired_delta_velocity_above(contacts, settings.velocity_epsilon) ? StopReason::sweeps_complete
-                                                                                          : StopReason::resolved;
+                                                                                         : StopReason::resolved;
     recorder.end_phase(Phase::velocity, outcome);
     return outcome;
 }

@@ -28,20 +28,23 @@
 // not be stiffer than the sub-step can follow). A separated point (p < 0) is speculative: bias = -p / h_s,
 // with mass_scale 1 and impulse_scale 0, so the bodies may close the gap in this sub-step but no further.
 // Relax uses mass_scale 1, impulse_scale 0 and no bias for p >= 0: a rigid velocity solve.
-// Friction: both tangent rows take -v_t / K_tt (K from derivation/impulse.hpp) on the tangential velocity the
-// normal increment leaves, and their total is scaled back onto the cone |lambda_t| <= mu lambda_n.
+// The rows are methods/contact_rows.hpp's: the normal row with the soft scales above, and the two friction rows
+// solved together against the slip the normal increment leaves, the total on or inside the cone
+// |lambda_t| <= mu lambda_n and, when sliding, exactly against the slip (rigid, as in Box2D).
 //
 // The penetration is recomputed from how the bodies moved since the frame began, with the anchors fixed in
 // the bodies (Box2D: separation + dot(d, normal)):
 //   p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)],
 // dx_i the body's move and R_i its turn since the frame began, r_i the relative position at preparation. The
-// velocities use the anchors and world inverse inertia fixed at preparation, as Box2D does.
+// bodies move only when the positions are integrated, so p is computed once per contact per sub-step, there,
+// and serves that sub-step's relax and the next one's solve. The velocities use the anchors and world
+// inverse inertia fixed at preparation, as Box2D does.
 //
 // Warm starting across frames is `settings.warm_start`; within a frame every sub-step's warm start applies the
 // current totals whatever the setting (as in Box2D v3, where the setting only scales last step's impulses).
 //
-// What is recorded (only when the recorder wants iteration details, recorder.wants_updates(); the numbers
-// are computed the same way either way, so recorded and unrecorded runs are bit-identical): the frame's
+// What is recorded (only when the recorder wants iteration details, recorder.wants_updates(); the loop is
+// compiled twice from one template, so recorded and unrecorded runs compute the same bits): the frame's
 // bodies before, the prepared contacts (steps 1-5, as for every method), an empty position phase, then every
 // contact visit as a VelocityIteration with sweep = {substep, pass, stage}, the accumulated impulse
 // {before, unclamped, after, clamp} and a VelocityResolution:
@@ -49,23 +52,16 @@
 //   desired_delta_velocity  target - current along the normal: solve: position_bias - v_n; relax: -v_n (or
 //                           the speculative bias); restitution: -c v_n(before) - v_n; warm start (which has no
 //                           target): the normal velocity change the re-applied impulse makes, (K lambda)_n;
-//   position_bias           the separating velocity the soft bias asks for, -bias (m/s; solve and relax);
+//   position_bias           step 5's term here: the separating velocity the soft bias asks for, -bias (m/s;
+//                           solve and relax);
 //   impulse                 the increment applied, after - before (frictionless, static or sliding);
 //   velocity_change         step 7 of that increment: exactly what was added to the bodies.
 // For a warm start `before` is 0: the total counts what this sub-step has applied, and the warm start applies
 // all of lambda at once. The bodies' moves by sub-step integration are not recorded per visit: bodies_after
 // holds the frame's end. Every visit counts as an iteration of the velocity phase.
 
-#include "body/rigid_body.hpp"
-#include "contact/contact.hpp"
-#include "memory/contact_memory.hpp"
-#include "record/recorder.hpp"
-#include "resolver/resolver.hpp"
+#include "methods/method.hpp"
 #include "resolver/settings.hpp"
-#include "world/integrate.hpp"
-
-#include <span>
-#include <vector>
 
 namespace impulse {
 
@@ -83,17 +79,7 @@ Softness soft_contact(double hertz, double damping_ratio, double h);
 // The soft contact soft step uses for `settings`: hertz capped at a quarter of the sub-step rate.
 Softness soft_step_softness(const ResolverSettings& settings);
 
-// What acts on the bodies between contacts during the frame.
-struct SoftStepForces {
-    Vec3 gravity = Vec3::Zero();
-    Damping damping{};
-};
-
-// One frame of soft step: moves every body in `bodies` over settings.duration (contacts or not) and resolves
-// `contacts` on the way. Reports to `recorder` as resolve_contacts does; reads and replaces `memory` (may be
-// null: start cold, remember nothing).
-ResolutionSummary solve_soft_step(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
-                                  const ResolverSettings& settings, const SoftStepForces& forces, Recorder& recorder,
-                                  int frame, ContactMemory* memory);
+// The method itself is soft_step(FrameContext&) (methods/method.hpp): it owns the whole step, moving every
+// body over settings.duration under frame.forces (contacts or not) while it resolves the contacts.
 
 }  // namespace impulse

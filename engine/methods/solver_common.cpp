@@ -7,15 +7,14 @@
 
 namespace impulse {
 
-VelocityResolution resolve_velocity(const PreparedContact& contact) {
+VelocityResolution resolve_velocity(const PreparedContact& contact, SlidingFriction sliding) {
     const ContactPreparation& d = contact.derivation;
     VelocityResolution r;
     r.contact_velocity = contact.contact_velocity;
     r.desired_delta_velocity = contact.desired_delta_velocity;
-    r.position_bias = contact.position_bias;
     r.impulse = calculate_impulse(d.basis, d.relative_position, contact.mass, contact.contact_velocity,
                                   contact.desired_delta_velocity.desired_delta_velocity,
-                                  d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, d.friction);
+                                  d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, d.friction, sliding);
     r.velocity_change = velocity_change(r.impulse.impulse_world, d.relative_position, contact.mass);
     return r;
 }

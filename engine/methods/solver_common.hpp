@@ -16,9 +16,10 @@
 
 namespace impulse {
 
-// Steps 6 and 7 for one contact, on its bookkeeping velocity and desired delta v (which hold the Baumgarte
-// bias when the contact carries one): worst-first and the sequential sweep both visit a contact this way.
-VelocityResolution resolve_velocity(const PreparedContact& contact);
+// Steps 6 and 7 for one contact, on its bookkeeping velocity and desired delta v (step 5, with the Baumgarte
+// term when it is on), the sliding impulse as `sliding` says: worst-first and the sequential sweep both visit
+// a contact this way.
+VelocityResolution resolve_velocity(const PreparedContact& contact, SlidingFriction sliding);
 
 // Adds step 7's velocity_change and rotation_change to the contact's bodies (the world never changes).
 void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int, 2>& changed,

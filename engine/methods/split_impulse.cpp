@@ -5,7 +5,7 @@
 // thrown away. The real velocities never see the push, so separating overlapping bodies adds no kinetic
 // energy (Baumgarte's bias does), and the real velocity solve runs without any position bias.
 //
-// Per contact, normal row only (friction has no business moving positions):
+// Per contact, the normal row of methods/contact_rows.hpp only (friction has no business moving positions):
 //   target          = beta max(penetration - slop, 0) / h     penetration as prepared (methods/position_bias.hpp)
 //   v_push          = sum over bodies of +-(pseudo v + pseudo w x q_rel) . n           (9.5, body 0 minus body 1)
 //   d lambda        = (target - v_push) / d                   d = step 3's delta velocity per unit impulse
@@ -30,12 +30,15 @@
 // total_inertia = d; linear_move and angular_move = how far this visit moved each body's contact point along n
 // by translation and by rotation, (linear_change) . n and (angular_change x q_rel) . n, body 1's negative as
 // in the book; no angular limit; linear_change and angular_change = the moves applied. The penetration
-// updates are the book's linearised bookkeeping (resolver/bookkeeping.cpp) of every contact sharing a body.
+// updates are the book's linearised bookkeeping (resolver/bookkeeping.cpp) of every contact sharing a body,
+// kept only while recording (the pushes never read it). The loop is compiled twice from one template, with and
+// without the records, on the same arithmetic.
 
-#include "derivation/velocity_change.hpp"
+#include "methods/contact_rows.hpp"
+#include "methods/method.hpp"
 #include "methods/position_bias.hpp"
 #include "resolver/bookkeeping.hpp"
-#include "resolver/phases.hpp"
+#include "resolver/worst_first_selector.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -44,89 +47,93 @@ namespace impulse {
 
 namespace {
 
-struct PseudoVelocity {
-    Vec3 linear = Vec3::Zero();
-    Vec3 angular = Vec3::Zero();
-};
-
-// v_push: the pseudo separating velocity of the contact points along the normal.
-double push_velocity(const ContactPreparation& d, const std::vector<PseudoVelocity>& pseudo) {
-    double v = 0.0;
-    for (int i = 0; i < 2; ++i) {
-        if (d.bodies[i] == world_body) continue;
-        const PseudoVelocity& p = pseudo[static_cast<std::size_t>(d.bodies[i])];
-        v += body_sign(i) * (p.linear + p.angular.cross(*d.relative_position[i])).dot(d.normal);
-    }
-    return v;
-}
-
-}  // namespace
-
-PhaseOutcome split_impulse_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                                     const ResolverSettings& settings, Recorder& recorder) {
+template <bool recording>
+PhaseOutcome push_apart(FrameContext& frame) {
+    const ResolverSettings& settings = frame.settings;
+    std::vector<PreparedContact>& contacts = frame.contacts;
     const double h = settings.duration;
-    std::vector<PseudoVelocity> pseudo(bodies.size());
-    std::vector<double> targets, totals(contacts.size(), 0.0);
-    targets.reserve(contacts.size());
-    int active = 0;
-    for (const PreparedContact& c : contacts) {
+    // The pseudo velocities: zero at the start of every frame, with the bodies' mass as prepared.
+    std::vector<SolverBody> pseudo = solver_bodies(frame.bodies, frame.mass);
+    for (SolverBody& p : pseudo) p.velocity = p.angular_velocity = Vec3::Zero();
+    std::vector<ContactRow> rows;
+    std::vector<double> targets;
+    std::vector<int> active;
+    for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
+        const PreparedContact& c = contacts[static_cast<std::size_t>(i)];
+        if (c.derivation.inert) continue;
+        fill_contact_row(rows.emplace_back(), i, c, pseudo.data(), false);
         targets.push_back(position_bias(c.derivation.penetration, settings.position_bias, h));
-        if (!c.derivation.inert) ++active;
+        active.push_back(i);
     }
 
-    const ContactsByBody by_body(contacts, bodies.size());  // a push updates its neighbours, not every contact
+    std::optional<ContactsByBody> by_body;  // a push updates its neighbours' bookkeeping, not every contact
+    if constexpr (recording) by_body.emplace(contacts, frame.bodies.size());
     std::vector<int> sharing;
     PhaseOutcome outcome;
-    outcome.iteration_limit = std::max(settings.sweeps, 0) * active;
-    bool converged = active == 0;
-    for (int pass = 0; pass < settings.sweeps && !converged; ++pass) {
+    outcome.iteration_limit = std::max(settings.sweeps, 0) * static_cast<int>(rows.size());
+    bool converged = rows.empty();
+    int pass = 0;
+    for (; pass < settings.sweeps && !converged; ++pass) {
         double largest = 0.0;
-        for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
-            const auto index = static_cast<std::size_t>(i);
-            const PreparedContact& contact = contacts[index];
-            const ContactPreparation& d = contact.derivation;
-            if (d.inert) continue;
-            const double delta_velocity_per_unit_impulse = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;
-            const double before = totals[index];
-            totals[index] =
-                std::max(before + (targets[index] - push_velocity(d, pseudo)) / delta_velocity_per_unit_impulse, 0.0);
-            const double push = totals[index] - before;
-            largest = std::max(largest, std::abs(push) * delta_velocity_per_unit_impulse);
+        for (std::size_t r = 0; r < rows.size(); ++r) {
+            ContactRow& row = rows[r];
+            const RowVisit v = solve_normal_row(row, row_normal_velocity(row, pseudo.data()), NormalTarget{targets[r]});
+            keep_total(row, v.after);
+            const double push = v.after.n - v.before.n;
+            largest = std::max(largest, std::abs(push) / row.normal_mass);
 
-            const VelocityChange change = velocity_change(d.normal * push, d.relative_position, contact.mass);
-            PositionResolution r;
-            r.method = PositionMethod::split_impulse;
-            r.penetration = contact.penetration;
-            r.amount = push;
-            r.inertia = penetration_inertia(d.velocity_per_unit_impulse);
+            VelocityChange change;
+            apply_impulse(row, pseudo.data(), Vec3(row.normal * push), &change);
+            PositionChange moves;
             for (int b = 0; b < 2; ++b) {
-                if (d.bodies[b] == world_body) continue;
-                PseudoVelocity& p = pseudo[static_cast<std::size_t>(d.bodies[b])];
-                p.linear += *change.velocity_change[b];
-                p.angular += *change.rotation_change[b];
-                const Vec3 linear_change = *change.velocity_change[b] * h;
-                const Vec3 angular_change = *change.rotation_change[b] * h;
-                r.change.linear_change[b] = linear_change;
-                r.change.angular_change[b] = angular_change;
-                r.moves.linear_move[b] = linear_change.dot(d.normal);
-                r.moves.angular_move[b] = angular_change.cross(*d.relative_position[b]).dot(d.normal);
-                RigidBody& body = bodies[static_cast<std::size_t>(d.bodies[b])];
-                body.position += linear_change;
-                body.orientation = rotated(body.orientation, angular_change, settings.orientation_update);
+                if (row.body[b] < 0) continue;
+                moves.linear_change[b] = *change.velocity_change[b] * h;
+                moves.angular_change[b] = *change.rotation_change[b] * h;
+                RigidBody& body = frame.bodies[static_cast<std::size_t>(row.body[b])];
+                body.position += *moves.linear_change[b];
+                body.orientation = rotated(body.orientation, *moves.angular_change[b], settings.orientation_update);
             }
-            PositionIteration record{
-                outcome.iterations_used, i, contact.penetration, settings.position_bias.slop, pass, r, {}};
-            by_body.sharing(d.bodies, sharing);
-            update_penetrations(contacts, sharing, d.bodies, r.change,
-                                recorder.wants_updates() ? &record.updates : nullptr);
-            recorder.position_iteration(record);
+            if constexpr (recording) {
+                const PreparedContact& contact = contacts[static_cast<std::size_t>(row.contact)];
+                const ContactPreparation& d = contact.derivation;
+                PositionResolution resolution;
+                resolution.method = PositionMethod::split_impulse;
+                resolution.penetration = contact.penetration;
+                resolution.amount = push;
+                resolution.inertia = penetration_inertia(d.velocity_per_unit_impulse);
+                for (int b = 0; b < 2; ++b) {
+                    if (row.body[b] < 0) continue;
+                    resolution.moves.linear_move[b] = moves.linear_change[b]->dot(d.normal);
+                    resolution.moves.angular_move[b] =
+                        moves.angular_change[b]->cross(*d.relative_position[b]).dot(d.normal);
+                }
+                resolution.change = moves;
+                PositionIteration record{outcome.iterations_used,
+                                         row.contact,
+                                         contact.penetration,
+                                         settings.position_bias.slop,
+                                         pass,
+                                         resolution,
+                                         {}};
+                by_body->sharing(d.bodies, sharing);
+                update_penetrations(contacts, sharing, d.bodies, moves, &record.updates);
+                frame.recorder.position_iteration(record);
+            }
             ++outcome.iterations_used;
         }
         converged = largest <= settings.velocity_epsilon;
     }
+    if constexpr (!recording)
+        if (pass > 0) frame.recorder.contacts_visited(active);
     outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
-    recorder.end_phase(Phase::position, outcome);
+    frame.recorder.end_phase(Phase::position, outcome);
     return outcome;
+}
+
+}  // namespace
+
+PhaseOutcome split_impulse_positions(FrameContext& frame) {
+    return frame.recorder.wants_updates() ? push_apart<true>(frame) : push_apart<false>(frame);
 }
 
 }  // namespace impulse

@@ -9,6 +9,7 @@
 // the whole turn can exceed the limit by theta-dot t.
 
 #include "methods/position_resolution.hpp"
+#include "resolver/phases.hpp"
 
 #include <algorithm>
 
@@ -54,6 +55,30 @@ PositionResolution velocity_based(const PreparedContact& contact, const PerBody<
     }
     r.rewind = rewind;
     return r;
+}
+
+namespace {
+
+// The bodies' motion as it is now, and the time left of the frame for the body that has used most of it.
+PositionResolution project(const PreparedContact& contact, double /*amount*/, const PositionPhaseState& state,
+                           const FrameContext& frame) {
+    const ResolverSettings& settings = frame.settings;
+    PerBody<BodyMotion> motion;
+    double time_left = settings.duration;
+    for (int i = 0; i < 2; ++i) {
+        const int id = contact.derivation.bodies[i];
+        if (id == world_body) continue;
+        const RigidBody& body = frame.bodies[static_cast<std::size_t>(id)];
+        motion[i] = BodyMotion{body.velocity, body.angular_velocity, body.last_frame_acceleration};
+        time_left = std::min(time_left, settings.duration - state.rewound_time[static_cast<std::size_t>(id)]);
+    }
+    return velocity_based(contact, motion, time_left, settings.angular_limit, settings.orientation_update);
+}
+
+}  // namespace
+
+PhaseOutcome velocity_based_positions(FrameContext& frame) {
+    return worst_first_positions(frame, project, nullptr);
 }
 
 }  // namespace impulse

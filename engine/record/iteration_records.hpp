@@ -57,9 +57,9 @@ struct PositionIteration {
 
 struct VelocityResolution {
     Vec3 contact_velocity;                        // step 4 as the bookkeeping has it now
-    DesiredDeltaVelocity desired_delta_velocity;  // step 5 re-evaluated on that velocity
-    std::optional<double> position_bias;          // baumgarte / split impulse / soft step: velocity added to the
-                                                  // target to push the bodies apart (m/s), included above
+    DesiredDeltaVelocity desired_delta_velocity;  // step 5 re-evaluated on that velocity; its position_bias is
+                                                  // Baumgarte's (or soft step's soft push): the separating speed
+                                                  // added to push the bodies apart (m/s)
     Impulse impulse;                              // step 6 (for an accumulating solver: the clamped increment)
     VelocityChange velocity_change;               // step 7
 
@@ -68,9 +68,9 @@ struct VelocityResolution {
 
 // Which limit an accumulating solver (projected Gauss-Seidel, soft step) applied to a contact's running total.
 enum class ImpulseClamp {
-    none,      // the total stayed inside its limits
-    push_only, // the normal total would have pulled (< 0): set to 0
-    friction,  // the tangential total left the cone |f_t| <= mu f_n: scaled back onto it
+    none,       // the total stayed inside its limits
+    push_only,  // the normal total would have pulled (< 0): set to 0
+    friction,   // the tangential total left the cone |f_t| <= mu f_n: scaled back onto it
     both,
 };
 

@@ -15,8 +15,9 @@ class Recorder {
 public:
     virtual ~Recorder() = default;
 
-    // Whether iterations should carry their lists of updates to other contacts (an allocation per
-    // iteration, skipped when nobody listens).
+    // Whether this frame's iterations are kept: then iterations carry their lists of updates to other contacts
+    // (an allocation per iteration, skipped when nobody listens), and the sweeping methods run their recorded
+    // loop, which builds a record per visit; otherwise their lean loop, with the same arithmetic.
     virtual bool wants_updates() const { return false; }
 
     virtual void begin_frame(int /*frame*/, std::span<const RigidBody> /*bodies*/,
@@ -24,6 +25,10 @@ public:
     virtual void contacts_prepared(std::span<const PreparedContact> /*contacts*/) {}
     virtual void position_iteration(const PositionIteration& /*iteration*/) {}
     virtual void velocity_iteration(const VelocityIteration& /*iteration*/) {}
+    // A sweeping method that does not report each visit (wants_updates() is false: nobody keeps them) reports
+    // once per phase the contacts of its last visits, in the order it made them, so a listener can still tell
+    // which contact last changed each body (world/non_finite_check.hpp).
+    virtual void contacts_visited(std::span<const int> /*contacts*/) {}
     virtual void end_phase(Phase /*phase*/, const PhaseOutcome& /*outcome*/) {}
     virtual void end_frame(std::span<const RigidBody> /*bodies*/) {}
 };

@@ -76,9 +76,9 @@ void update_contact_velocities_of(std::vector<PreparedContact>& contacts, const 
         other.contact_velocity += delta;
         // The reference engine re-runs step 5 on the partly resolved velocity, so the restitution cut-off is
         // judged again against the current closing speed.
-        other.desired_delta_velocity = desired_delta_velocity(other.contact_velocity.x(), d.restitution, d.normal,
-                                                              other.motion, settings.duration, settings.refinements);
-        if (other.position_bias) other.desired_delta_velocity.desired_delta_velocity += *other.position_bias;
+        other.desired_delta_velocity =
+            desired_delta_velocity(other.contact_velocity.x(), d.restitution, d.normal, other.motion, settings.duration,
+                                   settings.refinements, d.desired_delta_velocity.position_bias);
         if (log)
             log->push_back({d.contact, moved[m], slot, delta, before, other.contact_velocity, desired_before,
                             other.desired_delta_velocity.desired_delta_velocity});

@@ -1,13 +1,11 @@
 #pragma once
-// The two phases of resolution, each a worst-first loop (the book's): pick the contact whose value is
-// largest above the epsilon, resolve it alone, update every contact that shares a body, repeat until
-// nothing is above the epsilon or the iteration limit is reached.
+// What the book's worst-first loops share between the methods built on them: the chooser of the worst
+// contact, and the position phase's loop (pick the deepest contact above the epsilon, move its bodies by the
+// method's projection, update every contact sharing a body, repeat until nothing is above the epsilon or the
+// iteration limit is reached). Each position method (methods/*.cpp) supplies its projection.
 
-#include "body/rigid_body.hpp"
-#include "memory/contact_memory.hpp"
-#include "record/recorder.hpp"
-#include "resolver/prepared_contact.hpp"
-#include "resolver/settings.hpp"
+#include "methods/method.hpp"
+#include "methods/position_resolution.hpp"
 #include "resolver/worst_first_selector.hpp"
 
 #include <optional>
@@ -15,56 +13,33 @@
 
 namespace impulse {
 
-// The phase's chooser (worst_first_selector.hpp): every non-inert contact, by the value the phase compares.
-WorstFirstSelector penetration_selector(const std::vector<PreparedContact>& contacts, std::size_t body_count,
-                                        const ResolverSettings& settings);
-
 // Whether any non-inert contact is still above the epsilon (tells "resolved" from the other stop reasons);
 // one scan, once per phase.
 bool any_penetration_above(const std::vector<PreparedContact>& contacts, double epsilon);
-bool any_desired_delta_velocity_above(const std::vector<PreparedContact>& contacts, double epsilon);
 
 // What the position phase carries from one iteration to the next besides the contacts.
 struct PositionPhaseState {
     std::vector<double> rewound_time;  // per body: how far velocity-based resolution moved it back this frame (s)
 };
 
-PositionPhaseState position_phase_state(std::size_t body_count);
+// A position method's move for one contact: removes `amount` of its penetration (step 8).
+using Projection = PositionResolution (*)(const PreparedContact& contact, double amount,
+                                          const PositionPhaseState& state, const FrameContext& frame);
 
-// Whether the configured method can move this contact at all: linear projection cannot move a contact whose
-// bodies cannot translate, and choosing it again would only spend iterations.
-bool movable_by(PositionMethod method, const PreparedContact& contact);
+// Whether a method can move a contact at all (linear projection cannot move bodies that cannot translate,
+// and choosing such a contact again would only spend iterations).
+using Movable = bool (*)(const PreparedContact& contact);
 
-// Removes `amount` of contact `chosen`'s penetration with the configured method, moves its bodies, updates
-// the penetration of every contact sharing them (telling `selector`), and reports the iteration.
-void resolve_penetration(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                         PositionPhaseState& state, WorstFirstSelector& selector, int chosen, double amount,
-                         int iteration, std::optional<int> pass, const ResolverSettings& settings, Recorder& recorder);
+// The phase's chooser (worst_first_selector.hpp): every non-inert contact the method can move, by penetration.
+WorstFirstSelector penetration_selector(const FrameContext& frame, Movable movable);
 
-PhaseOutcome resolve_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                               const ResolverSettings& settings, Recorder& recorder);
+// Removes `amount` of contact `chosen`'s penetration with `projection`, moves its bodies, updates the
+// penetration of every contact sharing them (telling `selector`), and reports the iteration.
+void resolve_penetration(FrameContext& frame, Projection projection, PositionPhaseState& state,
+                         WorstFirstSelector& selector, int chosen, double amount, int iteration,
+                         std::optional<int> pass);
 
-// Relaxation's position phase (methods/relaxation.cpp): passes instead of one worst-first run.
-PhaseOutcome relax_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                             const ResolverSettings& settings, Recorder& recorder);
-
-// Baumgarte's position phase (methods/baumgarte.cpp): nothing to move, the bias is in the velocity targets.
-PhaseOutcome baumgarte_positions(const ResolverSettings& settings, Recorder& recorder);
-
-// The split impulse's position phase (methods/split_impulse.cpp): a push solve on pseudo-velocities.
-PhaseOutcome split_impulse_positions(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                                     const ResolverSettings& settings, Recorder& recorder);
-
-// The velocity phase of the configured method; `memory` carries projected Gauss-Seidel's totals between frames.
-PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                                const ResolverSettings& settings, Recorder& recorder, ContactMemory* memory = nullptr);
-
-// The sequential sweep's velocity phase (methods/sequential_sweep.cpp).
-PhaseOutcome sweep_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                              const ResolverSettings& settings, Recorder& recorder);
-
-// Projected Gauss-Seidel's velocity phase (methods/projected_gauss_seidel.cpp).
-PhaseOutcome pgs_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                            const ResolverSettings& settings, Recorder& recorder, ContactMemory* memory);
+// The book's position phase with the given projection: worst first until nothing is above the epsilon.
+PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, Movable movable);
 
 }  // namespace impulse

@@ -50,16 +50,15 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     d.inert = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse <= 0.0;
     d.contact_velocity = contact_velocity(d.basis, d.relative_position, p.motion, settings.duration,
                                           settings.refinements.tangential_acceleration_velocity);
+    const std::optional<double> bias =
+        settings.baumgarte ? std::optional(position_bias(d.penetration, settings.position_bias, settings.duration))
+                           : std::nullopt;
     d.desired_delta_velocity = desired_delta_velocity(d.contact_velocity.contact_velocity.x(), d.restitution, d.normal,
-                                                      p.motion, settings.duration, settings.refinements);
+                                                      p.motion, settings.duration, settings.refinements, bias);
 
     p.penetration = d.penetration;
     p.contact_velocity = d.contact_velocity.contact_velocity;
     p.desired_delta_velocity = d.desired_delta_velocity;
-    if (settings.position_method == PositionMethod::baumgarte) {
-        p.position_bias = position_bias(d.penetration, settings.position_bias, settings.duration);
-        p.desired_delta_velocity.desired_delta_velocity += *p.position_bias;
-    }
     return p;
 }
 

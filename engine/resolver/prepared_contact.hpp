@@ -46,15 +46,12 @@ struct PreparedContact {
     double penetration;
     Vec3 contact_velocity;
     DesiredDeltaVelocity desired_delta_velocity;
-    // Baumgarte only (position_method baumgarte): beta max(penetration - slop, 0) / h, fixed at preparation and
-    // already added to desired_delta_velocity above (but not to the recorded step 5 in `derivation`), so
-    // worst-first and the sequential sweep push the bodies apart through their velocities.
-    std::optional<double> position_bias;
 
     bool operator==(const PreparedContact&) const = default;
 };
 
-// The Δv a velocity method compares with its epsilon and resolves: the bookkeeping's, bias included.
+// The Δv a velocity method compares with its epsilon and resolves: the bookkeeping's (with the Baumgarte term
+// of step 5 when it is on).
 inline double desired_of(const PreparedContact& c) {
     return c.desired_delta_velocity.desired_delta_velocity;
 }

@@ -1,31 +1,29 @@
 #include "resolver/resolver.hpp"
 
-#include "methods/soft_step.hpp"
-#include "resolver/phases.hpp"
+#include "methods/method_table.hpp"
 #include "resolver/prepared_contact.hpp"
 
 namespace impulse {
 
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
                                    const ResolverSettings& settings, Recorder& recorder, int frame,
-                                   ContactMemory* memory) {
-    // Soft step integrates the bodies itself, sub-step by sub-step, so it takes the whole frame: here, with no
-    // gravity, it moves the bodies by their velocities over settings.duration while it resolves the contacts.
-    if (settings.velocity_method == VelocityMethod::soft_step)
-        return solve_soft_step(bodies, contacts, settings, SoftStepForces{}, recorder, frame, memory);
-
+                                   ContactMemory* memory, const Forces& forces) {
     const std::vector<MassProperties> mass = mass_properties(bodies);
     recorder.begin_frame(frame, bodies, mass);
     std::vector<PreparedContact> prepared = prepare_contacts(contacts, bodies, mass, settings);
     recorder.contacts_prepared(prepared);
 
+    FrameContext context{bodies, prepared, mass, settings, recorder, memory, forces};
+    const MethodRow<VelocityMethod>& velocities = method_row(settings.velocity_method);
+    const MethodRow<PositionMethod>& positions = method_row(position_method_in_effect(settings));
     ResolutionSummary summary;
-    if (settings.phase_order == PhaseOrder::positions_first) {
-        summary.position = resolve_positions(bodies, prepared, settings, recorder);
-        summary.velocity = resolve_velocities(bodies, prepared, settings, recorder, memory);
+    // A method that owns the whole step runs after an empty position phase, whatever the phase order.
+    if (settings.phase_order == PhaseOrder::positions_first || velocities.scope == MethodScope::whole_step) {
+        summary.position = positions.solve(context);
+        summary.velocity = velocities.solve(context);
     } else {
-        summary.velocity = resolve_velocities(bodies, prepared, settings, recorder, memory);
-        summary.position = resolve_positions(bodies, prepared, settings, recorder);
+        summary.velocity = velocities.solve(context);
+        summary.position = positions.solve(context);
     }
     recorder.end_frame(bodies);
     return summary;

@@ -5,6 +5,7 @@
 #include "body/rigid_body.hpp"
 #include "contact/contact.hpp"
 #include "memory/contact_memory.hpp"
+#include "methods/method.hpp"
 #include "record/recorder.hpp"
 #include "resolver/settings.hpp"
 
@@ -21,13 +22,14 @@ struct ResolutionSummary {
 };
 
 // Resolves `contacts` between `bodies` once (one frame), changing the bodies' positions, orientations and
-// velocities. Contacts must name bodies inside the list, body 0 and body 1 different, unit normals.
-// `memory` carries warm-starting solvers' impulses from frame to frame (nothing = start cold every frame).
-// Soft step (methods/soft_step.hpp) integrates the bodies itself: here it moves them by their velocities over
-// settings.duration, with no gravity, while it resolves the contacts.
+// velocities: prepares them (steps 1-5), then runs the position and velocity methods the settings name
+// (methods/method_table.hpp). Contacts must name bodies inside the list, body 0 and body 1 different, unit
+// normals. `memory` carries warm-starting solvers' impulses from frame to frame (nothing = start cold every
+// frame). A velocity method that owns the whole step integrates the bodies itself under `forces` (none: they
+// move by their velocities over settings.duration while it resolves the contacts).
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
                                    const ResolverSettings& settings, Recorder& recorder, int frame = 0,
-                                   ContactMemory* memory = nullptr);
+                                   ContactMemory* memory = nullptr, const Forces& forces = {});
 
 // The same with nobody listening.
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,

@@ -44,14 +44,15 @@ std::optional<ResolverSettings> preset(std::string_view name) {
     }
     if (name == "pgs" || name == "pgs_split") {
         s.velocity_method = VelocityMethod::projected_gauss_seidel;
-        s.position_method = name == "pgs" ? PositionMethod::baumgarte : PositionMethod::split_impulse;
+        s.position_method = name == "pgs" ? PositionMethod::none : PositionMethod::split_impulse;
+        s.baumgarte = name == "pgs";
         // Bullet: ERP 0.2 for Baumgarte; its split impulse pushes with ERP2 0.8 on the pseudo-velocities.
         s.position_bias.factor = name == "pgs" ? 0.2 : 0.8;
         return s;
     }
     if (name == "soft_step") {
         s.velocity_method = VelocityMethod::soft_step;
-        s.position_method = PositionMethod::baumgarte;  // the soft contact carries its own push (see SoftStepSettings)
+        s.position_method = PositionMethod::none;  // the soft contact carries its own push (see SoftStepSettings)
         s.sweeps = 1;
         return s;
     }

@@ -3,6 +3,7 @@
 // toggles). Presets fill it; a case file or flag may then change single fields.
 
 #include "derivation/desired_delta_velocity.hpp"
+#include "derivation/impulse.hpp"
 #include "derivation/position_change.hpp"
 #include "math/rotation.hpp"
 
@@ -20,10 +21,10 @@ enum class PositionMethod {
     nonlinear_projection,  // move and turn them, in proportion to linear and angular inertia (the book)
     velocity_based,        // move them back along their paths, then project whatever remains
     relaxation,            // nonlinear projection of a fraction of each contact's penetration per pass
-    baumgarte,             // no position phase: the velocity targets gain a bias beta (d - slop) / h that
-                           // pushes the bodies apart over the next frames (Baumgarte stabilisation)
     split_impulse,         // a second velocity solve on pseudo-velocities that only move positions and are
                            // then discarded, so pushing apart adds no energy (Bullet's split impulse)
+    none,                  // no position phase: nothing moves the bodies apart but their velocities (with
+                           // `baumgarte`, step 5's position bias; soft step's soft contact)
 };
 
 enum class VelocityMethod {
@@ -42,11 +43,11 @@ enum class WorstFirstSearch {
     full_scan,       // the book's scan of every contact per iteration
 };
 
-// The velocity-level position correction of baumgarte and split_impulse: the target separating velocity
-// gains factor x max(penetration - slop, 0) / duration.
+// The velocity-level position correction of `baumgarte` (a term of step 5) and of split_impulse (the push's
+// target): factor x max(penetration - slop, 0) / duration.
 struct PositionBiasSettings {
-    double factor = 0.2;   // beta: share of the penetration removed per frame
-    double slop = 0.005;   // m: penetration left alone, so resting contacts do not jitter
+    double factor = 0.2;  // beta: share of the penetration removed per frame
+    double slop = 0.005;  // m: penetration left alone, so resting contacts do not jitter
 
     bool operator==(const PositionBiasSettings&) const = default;
 };
@@ -84,13 +85,17 @@ struct ResolverSettings {
     PositionMethod position_method = PositionMethod::nonlinear_projection;
     VelocityMethod velocity_method = VelocityMethod::worst_first;
     WorstFirstSearch worst_first_search = WorstFirstSearch::priority_queue;
+    SlidingFriction sliding_friction = SlidingFriction::reference;  // worst_first, sequential_sweep
     AngularLimitSettings angular_limit{};
     RelaxationSettings relaxation{};
     double position_epsilon = 0.01;  // m: penetrations at or below this are left alone
     double velocity_epsilon = 0.01;  // m/s: desired velocity changes at or below this are left alone
     IterationLimits iterations{};
-    int sweeps = 10;          // sequential_sweep, projected_gauss_seidel, soft_step (per sub-step), split_impulse
-    bool warm_start = true;   // projected_gauss_seidel and soft_step: start from last frame's impulses
+    int sweeps = 10;         // sequential_sweep, projected_gauss_seidel, soft_step (per sub-step), split_impulse
+    bool warm_start = true;  // projected_gauss_seidel and soft_step: start from last frame's impulses
+    // Baumgarte stabilisation: step 5 gains the term position_bias = factor max(penetration - slop, 0) / h
+    // (position_bias below), so the velocity methods that read step 5 push the bodies apart.
+    bool baumgarte = false;
     PositionBiasSettings position_bias{};
     SoftStepSettings soft_step{};
     VelocityRefinements refinements{};
@@ -111,7 +116,8 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 //            chapter-15 refinements, the text's fixed angular limit of 0.5; otherwise as book.
 //   sweep    the book's impulses and projections, but contacts visited in order, `sweeps` sweeps.
 //   pgs      sequential impulses as production engines use them: projected Gauss-Seidel with accumulated,
-//            clamped, warm-started impulses and Baumgarte bias 0.2 (Bullet's defaults, 10 iterations).
+//            clamped, warm-started impulses, no position phase and Baumgarte bias 0.2 (Bullet's defaults,
+//            10 iterations).
 //   pgs_split   pgs with split impulse instead of Baumgarte (Bullet's split-impulse mode).
 //   soft_step   Box2D v3: 4 sub-steps of soft contacts, one relax sweep each, restitution after.
 std::span<const std::string_view> preset_names();

@@ -5,6 +5,7 @@
 #include "contact/contact.hpp"
 #include "derivation/basis.hpp"
 #include "derivation/impulse.hpp"
+#include "methods/method_table.hpp"
 #include "record/iteration_records.hpp"
 #include "resolver/settings.hpp"
 
@@ -22,23 +23,22 @@ inline constexpr NameTable<PhaseOrder, 2> phase_order_names{{
     {PhaseOrder::positions_first, "positions_first"},
     {PhaseOrder::velocities_first, "velocities_first"},
 }};
-inline constexpr NameTable<PositionMethod, 6> position_method_names{{
-    {PositionMethod::linear_projection, "linear_projection"},
-    {PositionMethod::nonlinear_projection, "nonlinear_projection"},
-    {PositionMethod::velocity_based, "velocity_based"},
-    {PositionMethod::relaxation, "relaxation"},
-    {PositionMethod::baumgarte, "baumgarte"},
-    {PositionMethod::split_impulse, "split_impulse"},
-}};
-inline constexpr NameTable<VelocityMethod, 4> velocity_method_names{{
-    {VelocityMethod::worst_first, "worst_first"},
-    {VelocityMethod::sequential_sweep, "sequential_sweep"},
-    {VelocityMethod::projected_gauss_seidel, "projected_gauss_seidel"},
-    {VelocityMethod::soft_step, "soft_step"},
-}};
+// The methods' names live in their table (methods/method_table.hpp), once.
+template <typename Id, std::size_t N>
+constexpr NameTable<Id, N> names_of_methods(const std::array<MethodRow<Id>, N>& rows) {
+    NameTable<Id, N> names{};
+    for (std::size_t i = 0; i < N; ++i) names[i] = {rows[i].id, rows[i].name};
+    return names;
+}
+inline constexpr auto position_method_names = names_of_methods(position_methods);
+inline constexpr auto velocity_method_names = names_of_methods(velocity_methods);
 inline constexpr NameTable<WorstFirstSearch, 2> worst_first_search_names{{
     {WorstFirstSearch::priority_queue, "priority_queue"},
     {WorstFirstSearch::full_scan, "full_scan"},
+}};
+inline constexpr NameTable<SlidingFriction, 2> sliding_friction_names{{
+    {SlidingFriction::reference, "reference"},
+    {SlidingFriction::against_slip, "against_slip"},
 }};
 inline constexpr NameTable<AngularLimitPolicy, 4> angular_limit_policy_names{{
     {AngularLimitPolicy::none, "none"},

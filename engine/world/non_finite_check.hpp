@@ -25,7 +25,8 @@ struct NonFiniteBody {
 
 // Passes every report on to the caller's recorder and remembers, per body, the last contact an iteration
 // resolved (in resolution order, both phases): who to blame if the body ends the step non-finite. One store
-// per iteration, so the recorder-off path stays as fast.
+// per iteration, or per contact of a sweeping method's last visits (contacts_visited), so the recorder-off
+// path stays as fast.
 class LastTouch final : public Recorder {
 public:
     LastTouch(Recorder& inner, std::span<const Contact> contacts, std::size_t body_count)
@@ -43,6 +44,10 @@ public:
     void velocity_iteration(const VelocityIteration& iteration) override {
         touched(iteration.contact);
         inner_.velocity_iteration(iteration);
+    }
+    void contacts_visited(std::span<const int> contacts) override {
+        for (const int c : contacts) touched(c);
+        inner_.contacts_visited(contacts);
     }
     void end_phase(Phase phase, const PhaseOutcome& outcome) override { inner_.end_phase(phase, outcome); }
     void end_frame(std::span<const RigidBody> bodies) override { inner_.end_frame(bodies); }

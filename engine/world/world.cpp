@@ -2,7 +2,7 @@
 
 #include "collision/broad_phase.hpp"
 #include "collision/collision.hpp"
-#include "methods/soft_step.hpp"
+#include "methods/method_table.hpp"
 #include "world/integrate.hpp"
 
 #include <algorithm>
@@ -23,9 +23,9 @@ Placement placement_of(const RigidBody& body) {
 }
 
 // Gives the contacts a pair test just appended (from `first` on) the combined material of the two surfaces.
-void stamp_material(std::vector<Contact>& contacts, std::size_t first, const Scene& scene, const std::string& a,
-                    const std::string& b) {
-    const Material m = combine(scene.materials.at(a), scene.materials.at(b));
+void stamp_material(std::vector<Contact>& contacts, std::size_t first, const Material& a, const Material& b) {
+    if (first == contacts.size()) return;  // no contact: nothing to combine
+    const Material m = combine(a, b);
     for (std::size_t k = first; k < contacts.size(); ++k) {
         contacts[k].restitution = m.restitution;
         contacts[k].friction = m.friction;
@@ -42,13 +42,20 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
     std::vector<Placement> placements;
     placements.reserve(bodies.size());
     for (const RigidBody& body : bodies) placements.push_back(placement_of(body));
+    // Each body's material looked up by name once, not once per pair tested.
+    std::vector<const Material*> materials;
+    materials.reserve(bodies.size());
+    for (std::size_t i = 0; i < bodies.size(); ++i) materials.push_back(&scene.materials.at(scene.body_materials[i]));
+    // Room for four contacts a body (a box resting on a face), so the list rarely regrows.
+    out.reserve(4 * bodies.size());
 
     if (scene.ground) {
+        const Material& ground = scene.materials.at(scene.ground->material);
         for (std::size_t i = 0; i < bodies.size(); ++i) {
             if (!scene.shapes[i] || is_immovable(bodies[i])) continue;
             const std::size_t first = out.size();
             collide_with_ground(*scene.shapes[i], placements[i], static_cast<int>(i), scene.ground->plane, out);
-            stamp_material(out, first, scene, scene.body_materials[i], scene.ground->material);
+            stamp_material(out, first, *materials[i], ground);
         }
     }
 
@@ -68,7 +75,7 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
         const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
         const std::size_t first = out.size();
         collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out);
-        stamp_material(out, first, scene, scene.body_materials[ui], scene.body_materials[uj]);
+        stamp_material(out, first, *materials[ui], *materials[uj]);
     }
     if (times) {
         times->broad_phase += broad;
@@ -91,12 +98,12 @@ StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& re
     report.frame = frame;
     const double dt = scene.settings.duration;
 
-    // Soft step integrates the bodies itself, sub-step by sub-step: it takes the contacts at the current positions
-    // and the forces, and its integration counts as resolution time.
-    const bool soft_step = scene.settings.velocity_method == VelocityMethod::soft_step;
+    // A method that owns the whole step (soft step) integrates the bodies itself, sub-step by sub-step: it takes
+    // the contacts at the current positions and the forces, and its integration counts as resolution time.
+    const bool integrates_itself = method_row(scene.settings.velocity_method).scope == MethodScope::whole_step;
     auto start = Clock::now();
     const Damping damping{scene.world.linear_damping, scene.world.angular_damping};
-    if (!soft_step)
+    if (!integrates_itself)
         for (RigidBody& body : bodies)
             integrate(body, scene.world.gravity, dt, damping, scene.settings.orientation_update);
     report.times.integrate = seconds_since(start);
@@ -109,9 +116,8 @@ StepReport step(const Scene& scene, std::vector<RigidBody>& bodies, Recorder& re
 
     start = Clock::now();
     LastTouch touch(recorder, detection.contacts, bodies.size());
-    report.resolution = soft_step ? solve_soft_step(bodies, detection.contacts, scene.settings,
-                                                    {scene.world.gravity, damping}, touch, frame, memory)
-                                  : resolve_contacts(bodies, detection.contacts, scene.settings, touch, frame, memory);
+    report.resolution = resolve_contacts(bodies, detection.contacts, scene.settings, touch, frame, memory,
+                                         Forces{scene.world.gravity, damping});
     report.times.resolve = seconds_since(start);
 
     report.non_finite = first_non_finite(bodies, touch);

@@ -1,6 +1,7 @@
 #include "bench/bench_plan.hpp"
 
 #include "io/input_error.hpp"
+#include "methods/method_table.hpp"
 
 #include <algorithm>
 #include <array>
@@ -87,30 +88,11 @@ std::vector<int> default_iterations() {
 }
 
 void set_iteration_count(ResolverSettings& settings, int n) {
-    switch (settings.velocity_method) {
-        case VelocityMethod::worst_first:
-            settings.iterations.per_contact = n;
-            return;
-        case VelocityMethod::sequential_sweep:
-        case VelocityMethod::projected_gauss_seidel:
-            settings.sweeps = n;
-            return;
-        case VelocityMethod::soft_step:
-            settings.soft_step.substeps = n;
-            settings.sweeps = 1;
-            return;
-    }
+    method_row(settings.velocity_method).set_iterations(settings, n);
 }
 
 std::string_view iteration_setting(const ResolverSettings& settings) {
-    switch (settings.velocity_method) {
-        case VelocityMethod::worst_first:
-            return "iterations_per_contact";
-        case VelocityMethod::soft_step:
-            return "soft_step.substeps";
-        default:
-            return "sweeps";
-    }
+    return method_row(settings.velocity_method).iteration_setting;
 }
 
 namespace {

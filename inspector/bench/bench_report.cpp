@@ -12,7 +12,7 @@ namespace impulse::bench {
 std::vector<std::size_t> pareto_front(const std::vector<TimeError>& points) {
     std::vector<std::size_t> order;
     for (std::size_t i = 0; i < points.size(); ++i)
-        if (!std::isnan(points[i].error) && !std::isnan(points[i].time)) order.push_back(i);
+        if (points[i].held && !std::isnan(points[i].error) && !std::isnan(points[i].time)) order.push_back(i);
     // By time, ties by error: walking in this order, a point is on the front when its error is below every
     // error seen so far (equal points: only the first).
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -55,6 +55,7 @@ StabilityMatrix stability_matrix(const std::vector<RunResult>& rows, const std::
                 cell.ran = true;
                 cell.n = r.n;
                 cell.holds = r.accuracy.holds;
+                cell.meets_target = r.accuracy.meets_target;
                 cell.failure = r.accuracy.failure;
                 cell.failure_time = r.accuracy.failure_time;
                 cell.error = r.accuracy.error;
@@ -102,7 +103,8 @@ std::vector<bool> front_flags(const std::vector<RunResult>& rows) {
     for (std::size_t i = 0; i < rows.size(); ++i) by_scene[rows[i].scene].push_back(i);
     for (const auto& [scene, indices] : by_scene) {
         std::vector<TimeError> points;
-        for (const std::size_t i : indices) points.push_back({rows[i].time_per_step, rows[i].accuracy.error});
+        for (const std::size_t i : indices)
+            points.push_back({rows[i].time_per_step, rows[i].accuracy.error, rows[i].accuracy.holds});
         for (const std::size_t k : pareto_front(points)) on[indices[k]] = true;
     }
     return on;
@@ -121,16 +123,26 @@ std::string metric_text(const BenchScene& spec, double value) {
     return format("%.3g", value) + " " + unit;
 }
 
-std::string cell_text(const BenchScene& spec, const StabilityCell& cell) {
+std::string_view verdict_text(const StabilityCell& cell) {
     if (!cell.ran) return "not run";
+    if (!cell.holds) return "fails";
+    return cell.meets_target ? "meets target" : "holds, misses target";
+}
+
+std::string cell_text(const BenchScene& spec, const StabilityCell& cell) {
+    if (!cell.ran) return "";
     if (cell.holds) {
-        std::string text = "holds";
-        if (cell.holds_from) text += " from N = " + std::to_string(*cell.holds_from);
-        return text + ", " + metric_text(spec, cell.error);
+        std::string text;
+        if (cell.holds_from) text = "from N = " + std::to_string(*cell.holds_from) + ", ";
+        // How far off a run that holds is: the target missed twice is not the target missed a hundred times.
+        if (!cell.meets_target && spec.target > 0.0 && std::isfinite(cell.error))
+            text += format("%.2g", cell.error / spec.target) + " × the target, ";
+        return text + std::string(metric_name(spec.metric)) + " " + metric_text(spec, cell.error);
     }
     std::string text = cell.failure;
     if (cell.failure_time) text += " at " + format("%.2f", *cell.failure_time) + " s";
-    if (cell.failure != "NaN") text += ", " + metric_text(spec, cell.error);
+    if (cell.failure != "NaN")
+        text += ", " + std::string(metric_name(spec.metric)) + " " + metric_text(spec, cell.error);
     return text;
 }
 
@@ -284,8 +296,9 @@ std::string stability_markdown(const BenchRun& run) {
     std::string md = "# Stability matrix\n\nEach method on each stress scene at its largest iteration count N (";
     for (std::size_t i = 0; i < run.iterations.size(); ++i) md += (i ? ", " : "") + std::to_string(run.iterations[i]);
     md +=
-        "): **holds** or **fails**, with the failure and its time, and the scene's metric (docs/bench.md). "
-        "\"holds from N = k\": smaller counts failed.\n\n| scene | metric, target |";
+        "): it **meets target** (holds, error at most the target), it **holds, misses target** (by how many times "
+        "the target), or it **fails** (with the failure and its time), and the scene's metric (docs/bench.md). "
+        "\"from N = k\": smaller counts failed.\n\n| scene | metric, target |";
     for (const std::string& method : m.methods) md += " " + method + " |";
     md += "\n|---|---|";
     for (std::size_t i = 0; i < m.methods.size(); ++i) md += "---|";
@@ -297,7 +310,7 @@ std::string stability_markdown(const BenchRun& run) {
         for (std::size_t i = 0; i < m.methods.size(); ++i) {
             const StabilityCell& cell = m.cells[i][j];
             const std::string text = cell_text(spec, cell);
-            md += " " + (cell.ran ? (cell.holds ? "**holds**" + text.substr(5) : "**fails**: " + text) : text) + " |";
+            md += " " + (cell.ran ? "**" + std::string(verdict_text(cell)) + "**: " + text : "not run") + " |";
         }
         md += '\n';
     }

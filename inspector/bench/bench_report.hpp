@@ -17,19 +17,23 @@ namespace impulse::bench {
 struct TimeError {
     double time = 0.0;   // s per step
     double error = 0.0;  // the scene's metric
+    bool held = true;    // a run that failed (collapsed, NaN, ...) is no configuration to choose
 };
 
-// Indices of the points no other point beats on both (at most as slow and at most as wrong, and better on
-// one), sorted by time. Points whose error is NaN are never on the front.
+// Indices of the runs that held and that no other run that held beats on both (at most as slow and at most
+// as wrong, and better on one), sorted by time. So the front starts at the fastest run that held, never at a
+// fast collapse. Points whose error is NaN are never on the front.
 std::vector<std::size_t> pareto_front(const std::vector<TimeError>& points);
 
 // The row index of the fastest configuration of `scene` that meets its target, if any does.
 std::optional<std::size_t> cheapest_meeting_target(const std::vector<RunResult>& rows, const std::string& scene);
 
-// A stability-matrix cell: a method on a stress scene, judged at its largest iteration count.
+// A stability-matrix cell: a method on a stress scene, judged at its largest iteration count. Three verdicts:
+// it meets the target (held, error at most the target), it holds but misses the target, or it fails.
 struct StabilityCell {
     bool ran = false;
     bool holds = false;
+    bool meets_target = false;
     int n = 0;                           // the iteration count judged (the largest run)
     std::optional<int> holds_from;       // held at the largest N but not at every N: the smallest N from which
                                          // every larger one held
@@ -49,7 +53,10 @@ StabilityMatrix stability_matrix(const std::vector<RunResult>& rows, const std::
 
 // "0.123 m", "1.2e-05", "NaN": a metric value with its unit.
 std::string metric_text(const BenchScene& spec, double value);
-// One line for a cell: "holds (N >= 4)" or "collapsed at 3.2 s, drift 0.71 m".
+// The verdict of a cell: "meets target", "holds, misses target", "fails" (or "not run").
+std::string_view verdict_text(const StabilityCell& cell);
+// One line for a cell after its verdict: "from N = 4, top_drift 0.0295 m", "6.1 × the target, top_drift
+// 0.306 m", "collapsed at 3.28 s, top_drift 2.22 m".
 std::string cell_text(const BenchScene& spec, const StabilityCell& cell);
 
 // Where the run happened: filled by the command (machine, compiler, commit, date).

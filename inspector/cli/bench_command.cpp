@@ -244,7 +244,7 @@ int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& 
         << (charts_problem.empty() ? ", speed_accuracy.png, stability.png" : "") << '\n';
     if (!charts_problem.empty()) {
         err << "impulse-lab: bench: the charts could not be drawn: " << charts_problem << '\n';
-        return exit_failure;
+        return exit_internal_error;
     }
     return exit_ok;
 }

@@ -36,6 +36,7 @@ struct RunOptions {
     std::vector<std::string> record;
     std::optional<double> max_trace_mb;  // default inspect::default_max_trace_mb
     std::optional<std::string> states_file;
+    bool keep_partial = false;  // Ctrl-C or SIGTERM: write the trace and states of the frames done
 };
 
 // `progress` is where a progress bar may go (a terminal), or null for none.
@@ -77,7 +78,8 @@ std::vector<inspect::Action> read_script_file(const std::string& path);
 // "WxH" for --size: throws io::InputError("--size", ...).
 std::pair<int, int> parse_window_size(const std::string& text);
 
-// Prints one line per file; returns exit_bad_input if any file is invalid (all files are checked).
+// Prints one line per file (all files are checked); returns exit_bad_input if a file cannot be read, else
+// exit_verdict if any is invalid.
 int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err);
 
 // `worksheet` and `diff` (docs/coursework.md).
@@ -98,7 +100,7 @@ struct DiffOptions {
     std::optional<std::string> out;
     inspect::OpenOptions open;  // --preset, --set, --record, --frames for a case or scene
 };
-// Returns exit_ok when everything matches, exit_failure for a mismatch, a blank cell or (of several files) one
+// Returns exit_ok when everything matches, exit_verdict for a mismatch, a blank cell or (of several files) one
 // that could not be read; throws for a bad reference, flag or single file.
 int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& err);
 

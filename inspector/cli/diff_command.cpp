@@ -1,15 +1,18 @@
 // `impulse-lab diff REFERENCE OTHER...`: compare traces or filled worksheets with a reference, value by value
-// (docs/coursework.md). One OTHER: every mismatch. Several (or a folder): a class summary, one row per file.
+// (docs/coursework.md). One OTHER: every mismatch. Several (or a folder): a class summary, one row per file, and
+// with --out DIR the class report: summary.csv, cells.csv and a feedback page per student.
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
-#include "coursework/diff_report.hpp"
+#include "cli/outputs.hpp"
+#include "coursework/class_report.hpp"
 #include "coursework/worksheet.hpp"
 #include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/trace_json.hpp"
+#include "lessons/lesson.hpp"
 #include "model/session.hpp"
 
 #include <algorithm>
@@ -21,85 +24,207 @@ namespace impulse::cli {
 
 namespace {
 
-bool is_csv(const std::string& file) {
-    std::string extension = std::filesystem::path(file).extension().string();
+namespace fs = std::filesystem;
+
+std::string lowered_extension(const std::string& file) {
+    std::string extension = fs::path(file).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return extension == ".csv";
+    return extension;
 }
 
-coursework::DiffReport diff_file(const io::json& reference, const std::string& file,
-                                 const coursework::Tolerance& tolerance, std::ostream& err) {
-    const std::string text = read_input_file(file);
-    try {
-        if (is_csv(file)) return coursework::diff_worksheet(reference, coursework::read_worksheet_csv(text), tolerance);
-        io::json document = io::parse_json_text(text);
-        if (coursework::is_worksheet(document))
-            return coursework::diff_worksheet(reference, coursework::read_worksheet_json(document), tolerance);
-        if (document.is_object() && document.contains("format") && document["format"] == io::trace_format_name) {
-            // A format-1 trace is compared in today's words: its renamed keys moved first.
-            if (io::upgrade_trace_document(document)) err << io::format1_note(file) << '\n';
-            io::read_trace(document);  // its schema, and that every index names a body or contact
-            return coursework::diff_traces(reference, document, tolerance);
-        }
-        const bool has_format = document.is_object() && document.contains("format");
-        throw io::InputError(has_format ? "format" : "",
-                             std::string(has_format ? "" : "no \"format\": ") + "expected a trace (\"" +
-                                 std::string(io::trace_format_name) + "\") or a worksheet (\"" +
-                                 std::string(coursework::worksheet_format_name) + "\")" +
-                                 (has_format ? ", got " + document["format"].dump() : ""));
-    } catch (const io::InputError& e) {
-        throw FileError{file, e.where(), e.problem()};
-    }
+bool is_csv(const std::string& file) {
+    return lowered_extension(file) == ".csv";
 }
 
-// The files named: a folder stands for the .json and .csv files in it, by name.
-std::vector<std::string> files_named(const std::vector<std::string>& others, bool& folder) {
-    std::vector<std::string> files;
-    for (const std::string& other : others) {
-        std::error_code error;
-        if (!std::filesystem::is_directory(other, error)) {
-            files.push_back(other);
-            continue;
-        }
-        folder = true;
-        std::vector<std::string> inside;
-        for (const auto& entry : std::filesystem::directory_iterator(other, error)) {
-            const std::string extension = entry.path().extension().string();
-            if (entry.is_regular_file(error) && (extension == ".json" || is_csv(entry.path().string())))
-                inside.push_back(entry.path().string());
-        }
-        if (inside.empty()) throw FileError{other, "", "is a folder without .json or .csv files to compare"};
-        std::sort(inside.begin(), inside.end());
-        files.insert(files.end(), inside.begin(), inside.end());
-    }
-    return files;
+// A worksheet on standard input has no name to tell CSV by: JSON starts with "{".
+bool is_csv_text(const std::string& file, const std::string& text) {
+    if (file != standard_stream) return is_csv(file);
+    const std::size_t first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
+    return first == std::string::npos || text[first] != '{';
 }
 
-// The reference: a case or scene run as `inspect` runs it, a trace, or a worksheet re-run from what it was
-// made from.
-inspect::Session open_reference(const DiffOptions& o) {
-    const std::string text = read_input_file(o.reference);
+// What the class is graded against: the reference run, its trace document, and — when the reference is a lesson
+// or a worksheet — the cells the worksheet was handed out with.
+struct Reference {
+    inspect::Session session;
     io::json document;
+    std::optional<std::vector<std::string>> asked;
+    std::string what;  // for the reports' headers
+};
+
+std::vector<std::string> cell_paths(const coursework::Worksheet& sheet) {
+    std::vector<std::string> paths;
+    for (const coursework::WorksheetStep& step : sheet.steps)
+        for (const coursework::WorksheetEntry& cell : step.cells) paths.push_back(cell.path);
+    return paths;
+}
+
+// The reference: a lesson run as `worksheet` runs it (its worksheet is what was handed out), a worksheet re-run
+// from what it was made from, a case or scene run as `inspect` runs it, or a trace.
+Reference open_reference(const DiffOptions& o) {
+    if (lowered_extension(o.reference) == ".md") {
+        if (const auto flag = o.open.first_given())
+            throw io::InputError(std::string(*flag),
+                                 "a lesson runs with its own settings; give its scene file to run it differently");
+        lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(o.reference));
+        io::json document = io::trace_json(lesson.session.trace());
+        const std::vector<inspect::Cursor> places =
+            coursework::places_with_cells(lesson.session, lesson.places, &document);
+        std::vector<std::string> asked = cell_paths(coursework::make_worksheet(lesson.session, places, &document));
+        const std::string what = "lesson " + std::to_string(lesson.lesson.number) + " · " + lesson.lesson.title;
+        return {std::move(lesson.session), std::move(document), std::move(asked), what};
+    }
+    const std::string text = read_input_file(o.reference);
     try {
-        document = io::parse_json_text(text);
+        const io::json document = io::parse_json_text(text);
         if (coursework::is_worksheet(document)) {
             if (const auto flag = o.open.first_given())
                 throw io::InputError(std::string(*flag),
                                      "a worksheet reference is re-run as it was made; give the case or scene to "
                                      "run it differently");
-            return inspect::Session::from_trace(coursework::rerun_reference(document), inspect::SourceKind::trace_file,
-                                                o.reference);
+            std::vector<std::string> asked;
+            for (const coursework::FilledCell& cell : coursework::read_worksheet_json(document).cells)
+                asked.push_back(cell.path);
+            inspect::Session session = inspect::Session::from_trace(coursework::rerun_reference(document),
+                                                                    inspect::SourceKind::trace_file, o.reference);
+            io::json trace = io::trace_json(session.trace());
+            return {std::move(session), std::move(trace), std::move(asked), "worksheet"};
         }
     } catch (const io::InputError& e) {
         if (e.where().starts_with("--")) throw;
-        throw FileError{o.reference, e.where(), e.problem()};
+        throw FileError{input_name(o.reference), e.where(), e.problem()};
     }
-    return inspect::Session::open(o.reference, o.open);
+    inspect::Session session = inspect::Session::open_text(text, o.reference, o.open);
+    io::json trace = io::trace_json(session.trace());
+    const std::string what = session.kind() == inspect::SourceKind::case_file    ? "case"
+                             : session.kind() == inspect::SourceKind::scene_file ? "scene"
+                                                                                 : "trace";
+    return {std::move(session), std::move(trace), std::nullopt, what};
+}
+
+coursework::DiffReport diff_file(const Reference& reference, const std::string& file,
+                                 const coursework::Tolerance& tolerance, std::ostream& err) {
+    const std::string text = read_input_file(file);
+    try {
+        coursework::DiffReport report;
+        const std::vector<std::string>* asked = reference.asked ? &*reference.asked : nullptr;
+        if (is_csv_text(file, text)) {
+            report =
+                coursework::diff_worksheet(reference.document, coursework::read_worksheet_csv(text), tolerance, asked);
+        } else {
+            io::json document = io::parse_json_text(text);
+            if (coursework::is_worksheet(document)) {
+                report = coursework::diff_worksheet(reference.document, coursework::read_worksheet_json(document),
+                                                    tolerance, asked);
+            } else if (document.is_object() && document.contains("format") &&
+                       document["format"] == io::trace_format_name) {
+                // A format-1 trace is compared in today's words: its renamed keys moved first.
+                if (io::upgrade_trace_document(document)) err << io::format1_note(file) << '\n';
+                io::read_trace(document);  // its schema, and that every index names a body or contact
+                report = coursework::diff_traces(reference.document, document, tolerance);
+            } else {
+                const bool has_format = document.is_object() && document.contains("format");
+                throw io::InputError(has_format ? "format" : "",
+                                     std::string(has_format ? "" : "no \"format\": ") + "expected a trace (\"" +
+                                         std::string(io::trace_format_name) + "\") or a worksheet (\"" +
+                                         std::string(coursework::worksheet_format_name) + "\")" +
+                                         (has_format ? ", got " + document["format"].dump() : ""));
+            }
+        }
+        coursework::word_findings(report, reference.session.trace(), reference.document);
+        return report;
+    } catch (const io::InputError& e) {
+        throw FileError{input_name(file), e.where(), e.problem()};
+    }
+}
+
+// A file named, and why it is not read when a folder holds something other than a worksheet or trace.
+struct Submission {
+    std::string file;
+    std::string not_read;
+};
+
+// The files named: a folder stands for every file in it (sorted by name, not recursive), except hidden files and
+// sub-folders. Only .json and .csv files are read; any other file in a folder gets its row saying so, so a
+// spreadsheet saved in its own format is not silently left out.
+std::vector<Submission> files_named(const std::vector<std::string>& others, bool& folder) {
+    std::vector<Submission> files;
+    for (const std::string& other : others) {
+        std::error_code error;
+        if (!fs::is_directory(other, error)) {
+            files.push_back({other, ""});
+            continue;
+        }
+        folder = true;
+        std::vector<std::string> inside;
+        for (const auto& entry : fs::directory_iterator(other, error))
+            if (entry.is_regular_file(error) && !entry.path().filename().string().starts_with("."))
+                inside.push_back(entry.path().string());
+        if (error) throw FileError{other, "", "cannot list the folder: " + error.message()};
+        if (inside.empty()) throw FileError{other, "", "is a folder without files to compare"};
+        std::sort(inside.begin(), inside.end());
+        for (const std::string& file : inside) {
+            const std::string extension = lowered_extension(file);
+            files.push_back({file, extension == ".json" || extension == ".csv"
+                                       ? ""
+                                       : "not a worksheet or trace: only .json and .csv files are read (save a "
+                                         "spreadsheet as CSV, comma-separated)"});
+        }
+    }
+    return files;
 }
 
 void check_tolerance(double value, const char* flag) {
     if (!std::isfinite(value) || value < 0)
         throw io::InputError(flag, "must be a number >= 0, got " + io::number_text(value));
+}
+
+// --out for a class: a folder (created, its parent must exist), never an existing file.
+void check_report_folder(const fs::path& folder) {
+    std::error_code error;
+    if (folder.empty()) throw io::InputError("--out", "empty folder name");
+    if (folder == standard_stream)
+        throw io::InputError("--out",
+                             "with several files --out is a folder for summary.csv, cells.csv and the feedback "
+                             "pages, and '-' (standard output) is not a folder (--format csv prints the summary)");
+    if (fs::exists(folder, error) && !fs::is_directory(folder, error))
+        throw io::InputError("--out",
+                             "with several files --out is a folder for summary.csv, cells.csv and the "
+                             "feedback pages, and '" +
+                                 folder.string() + "' is a file");
+    const std::string extension = lowered_extension(folder.string());
+    if (extension == ".csv" || extension == ".json" || extension == ".txt" || extension == ".md")
+        throw io::InputError("--out",
+                             "with several files --out is a folder for summary.csv, cells.csv and the "
+                             "feedback pages, got '" +
+                                 folder.string() + "', a file name (--format csv prints the summary alone)");
+    const fs::path parent = folder.has_parent_path() ? folder.parent_path() : fs::path(".");
+    if (!fs::is_directory(parent, error))
+        throw io::InputError("--out", "cannot create '" + folder.string() + "': No such file or directory");
+}
+
+// The class report, staged and renamed into place together: summary.csv, cells.csv, feedback/NAME.md.
+void write_class_report(const fs::path& folder, const std::vector<coursework::ClassRow>& rows,
+                        const coursework::ClassSubject& subject) {
+    std::vector<std::string> names;
+    for (const coursework::ClassRow& row : rows) names.push_back(row.file);
+    const std::vector<std::string> pages = coursework::feedback_names(names);
+
+    std::vector<std::pair<fs::path, std::string>> texts{{folder / "summary.csv", coursework::summary_csv(rows)},
+                                                        {folder / "cells.csv", coursework::cells_csv(rows)}};
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        texts.emplace_back(folder / "feedback" / pages[i], coursework::feedback_markdown(rows[i], subject));
+
+    const io::DeferredSignals held;  // Ctrl-C waits until every file is in place (or none is)
+    std::error_code error;
+    fs::create_directories(folder / "feedback", error);
+    if (error)
+        throw io::InputError("--out", "cannot create '" + (folder / "feedback").string() + "': " + error.message());
+    // Whatever would stop a rename (a folder where a file goes) stops the report before any file is replaced.
+    for (const auto& [path, text] : texts) io::check_writable(path, "--out");
+    std::vector<io::StagedFile> files;
+    for (const auto& [path, text] : texts) files.emplace_back(path, text, "--out");
+    for (io::StagedFile& f : files) f.commit();
 }
 
 }  // namespace
@@ -108,44 +233,56 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     check_tolerance(options.rtol, "--rtol");
     check_tolerance(options.atol, "--atol");
     const coursework::Tolerance tolerance{options.rtol, options.atol};
-    if (options.out) io::check_writable(*options.out, "--out");
-
-    const inspect::Session session = open_reference(options);
-    const io::json reference = io::trace_json(session.trace());
     bool folder = false;
-    const std::vector<std::string> files = files_named(options.others, folder);
-
-    std::string report;
-    int code = exit_ok;
-    if (files.size() == 1 && !folder) {
-        // One file: its every mismatch; a file that cannot be read is bad input.
-        const coursework::DiffReport r = diff_file(reference, files.front(), tolerance, err);
-        const coursework::DiffSubject subject{options.reference, files.front(), tolerance};
-        report = options.format == "json"  ? coursework::report_json(r, subject)
-                 : options.format == "csv" ? coursework::report_csv(r)
-                                           : coursework::report_text(r, subject);
-        code = r.all_match() ? exit_ok : exit_failure;
-    } else {
-        // A class: one row per file; a file that cannot be read gets its row (and a line here) and does not stop
-        // the others.
-        std::vector<coursework::ClassRow> rows;
-        for (const std::string& file : files) {
-            try {
-                rows.push_back({file, diff_file(reference, file, tolerance, err), ""});
-                if (!rows.back().report->all_match()) code = exit_failure;
-            } catch (const FileError& e) {
-                const std::string error = (e.where.empty() ? "" : e.where + ": ") + e.problem;
-                err << "impulse-lab: " << e.file << ": " << error << '\n';
-                rows.push_back({file, std::nullopt, error});
-                code = exit_failure;
-            }
-        }
-        report = options.format == "json"  ? coursework::summary_json(rows, options.reference, tolerance)
-                 : options.format == "csv" ? coursework::summary_csv(rows)
-                                           : coursework::summary_text(rows, options.reference, tolerance);
+    const std::vector<Submission> files = files_named(options.others, folder);
+    const bool whole_class = files.size() > 1 || folder;
+    // One file's report goes to standard output anyway: `--out -` (or /dev/stdout) asks for nothing more.
+    const bool out_is_file = options.out && !whole_class && !names_standard_output(*options.out, out);
+    if (options.out) {
+        if (whole_class)
+            check_report_folder(*options.out);
+        else if (out_is_file)
+            io::check_writable(*options.out, "--out");
     }
-    if (options.out) io::write_file_atomically(*options.out, report, "--out");
-    out << report;
+
+    const Reference reference = open_reference(options);
+    if (!whole_class) {
+        // One file: its every mismatch; a file that cannot be read is bad input.
+        const coursework::DiffReport r = diff_file(reference, files.front().file, tolerance, err);
+        const coursework::DiffSubject subject{input_name(options.reference), input_name(files.front().file),
+                                              tolerance};
+        const std::string report = options.format == "json"  ? coursework::report_json(r, subject)
+                                   : options.format == "csv" ? coursework::report_csv(r)
+                                                             : coursework::report_text(r, subject);
+        if (out_is_file) io::write_file_atomically(*options.out, report, "--out");
+        out << report;
+        return r.all_match() ? exit_ok : exit_verdict;
+    }
+
+    // A class: one row per file; a file that cannot be read gets its row (and a line here) and does not stop
+    // the others.
+    std::vector<coursework::ClassRow> rows;
+    int code = exit_ok;
+    for (const Submission& s : files) {
+        try {
+            if (!s.not_read.empty()) throw FileError{s.file, "", s.not_read};
+            rows.push_back({input_name(s.file), diff_file(reference, s.file, tolerance, err), ""});
+            if (!rows.back().report->all_match()) code = exit_verdict;
+        } catch (const FileError& e) {
+            const std::string error = (e.where.empty() ? "" : e.where + ": ") + e.problem;
+            err << "impulse-lab: " << e.file << ": " << error << '\n';
+            rows.push_back({input_name(s.file), std::nullopt, error});
+            code = exit_verdict;
+        }
+    }
+    const coursework::ClassSubject subject{input_name(options.reference), reference.what, tolerance};
+    if (options.out) write_class_report(*options.out, rows, subject);
+    out << (options.format == "json"  ? coursework::summary_json(rows, subject)
+            : options.format == "csv" ? coursework::summary_csv(rows)
+                                      : coursework::summary_text(rows, subject));
+    if (options.out && options.format == "text")
+        out << "class report written to " << *options.out << ": summary.csv, cells.csv and " << rows.size()
+            << (rows.size() == 1 ? " feedback page" : " feedback pages") << " in feedback/\n";
     return code;
 }
 

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <sys/stat.h>
+#include <unistd.h>
 
 namespace impulse::cli {
 
@@ -20,9 +21,33 @@ std::string size_limit_text(std::size_t limit) {
     return "the limit of " + std::to_string(limit >> 20) + " MiB (" + std::to_string(limit) + " bytes)";
 }
 
+// All of standard input, up to one byte past the limit (read straight from the descriptor: std::cin would keep
+// what it buffered).
+std::string read_standard_input(std::size_t limit) {
+    const std::string name = input_name(std::string(standard_stream));
+    std::string text;
+    std::array<char, 1 << 16> chunk{};
+    while (text.size() <= limit) {
+        const ssize_t n = ::read(STDIN_FILENO, chunk.data(), std::min(chunk.size(), limit + 1 - text.size()));
+        if (n == 0) break;
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            throw FileError{name, "", std::string("cannot read: ") + std::strerror(errno)};
+        }
+        text.append(chunk.data(), static_cast<std::size_t>(n));
+    }
+    if (text.size() > limit) throw FileError{name, "", "goes on past " + size_limit_text(limit)};
+    return text;
+}
+
 }  // namespace
 
+std::string input_name(const std::string& path) {
+    return path == standard_stream ? "<stdin>" : path;
+}
+
 std::string read_input_file(const std::string& path, std::size_t limit) {
+    if (path == standard_stream) return read_standard_input(limit);
     struct stat info {};
     if (::stat(path.c_str(), &info) != 0)
         throw FileError{path, "", std::string("cannot read: ") + std::strerror(errno)};

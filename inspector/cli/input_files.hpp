@@ -24,8 +24,15 @@ struct FileError {
     std::string problem;
 };
 
-// The whole file; throws FileError if it cannot be read or is larger than `limit`. The limit holds while
-// reading too, so a device or a pipe that never ends (/dev/zero) is refused after `limit` bytes.
+// "-" as a file argument: standard input for a file read, standard output for one written (cli/outputs.hpp).
+inline constexpr std::string_view standard_stream = "-";
+
+// What a file is called in messages: "<stdin>" for "-", else the path as given.
+std::string input_name(const std::string& path);
+
+// The whole file, or all of standard input for "-"; throws FileError if it cannot be read or is larger than
+// `limit`. The limit holds while reading too, so a device or a pipe that never ends (/dev/zero) is refused
+// after `limit` bytes.
 std::string read_input_file(const std::string& path, std::size_t limit = max_input_bytes);
 
 // Applies "frames=A..B" or "contacts=I,J,..." to `filter`; throws io::InputError("--record", ...).

@@ -3,6 +3,7 @@
 #include "io/trace_json.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
+#include "cli/outputs.hpp"
 #include "gui/display.hpp"
 #include "gui/inspector_app.hpp"
 #include "io/input_error.hpp"
@@ -17,7 +18,7 @@ std::vector<inspect::Action> read_script_file(const std::string& path) {
     try {
         return inspect::parse_script(read_input_file(path, max_text_input_bytes));
     } catch (const io::InputError& e) {
-        throw FileError{path, e.where(), e.problem()};
+        throw FileError{input_name(path), e.where(), e.problem()};
     }
 }
 
@@ -48,15 +49,35 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
                              "there is no display to open a window on (DISPLAY is not set); add "
                              "--headless with --screenshot or --script to render PNG files instead");
     if (options.script) {
-        run.script_name = *options.script;
+        run.script_name = input_name(*options.script);
         run.script = read_script_file(*options.script);
     }
+    // One output may go to standard output: --screenshot -, or a script's export or screenshot to "-". A picture
+    // only where that is not a terminal. What the command says goes to stderr then.
+    std::optional<std::string> standard_output_by;
+    const auto claim = [&](const std::string& path, const std::string& by, bool picture) {
+        if (!names_standard_output(path, out)) return;
+        if (standard_output_by)
+            throw io::InputError(by, "standard output (\"-\") already carries " + *standard_output_by +
+                                         "; only one output can go there");
+        if (picture && is_terminal(out))
+            throw io::InputError(by, "standard output is a terminal; redirect it to a file or a pipe for a PNG");
+        standard_output_by = by;
+    };
+    for (const inspect::Action& a : run.script)
+        if (a.kind == inspect::ActionKind::screenshot || a.kind == inspect::ActionKind::export_trace ||
+            a.kind == inspect::ActionKind::export_table)
+            claim(a.argument, run.script_name + ": line " + std::to_string(a.line),
+                  a.kind == inspect::ActionKind::screenshot);
+    if (options.screenshot) claim(*options.screenshot, "--screenshot", true);
+    if (standard_output_by) run.standard_output = &out;
+    std::ostream& report = standard_output_by ? err : out;
 
     const auto start = std::chrono::steady_clock::now();
     inspect::Session session = inspect::Session::open(options.file, options.open);
     if (session.trace().version != trace_format_version) err << io::format1_note(options.file) << '\n';
-    if (session.recording_stopped_at())
-        err << trace_stopped_note(*session.recording_stopped_at(), options.open.max_trace_mb) << '\n';
+    if (const auto note = session.recording_note())
+        err << "impulse-lab: note: " << *note << "; raise --max-trace-mb or narrow --record to see later frames\n";
     // Shown up to the frame before it: the frames that led there are what there is to debug.
     if (session.broken_run())
         err << "impulse-lab: note: the run stopped at "
@@ -68,7 +89,7 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
             inspect::resolve_goto(session.trace(), inspect::parse_goto(*options.go_to, "--goto"), "--goto"));
     run.screenshot = options.screenshot;
     run.bench_frames = options.bench_frames;
-    return gui::run_inspector(session, run, out, err);
+    return gui::run_inspector(session, run, report, err);
 }
 
 }  // namespace impulse::cli

@@ -29,8 +29,21 @@ InterruptHandler::~InterruptHandler() {
     sigaction(SIGTERM, &previous_terminate_, nullptr);
 }
 
+std::optional<int> interrupt_received() {
+    if (const int signal = received_signal) return signal;
+    return std::nullopt;
+}
+
+void forget_interrupt() {
+    received_signal = 0;
+}
+
 void throw_if_interrupted() {
     if (const int signal = received_signal) throw Interrupted{signal};
+}
+
+const char* signal_name(int signal) {
+    return signal == SIGTERM ? "SIGTERM" : "SIGINT";
 }
 
 }  // namespace impulse::cli

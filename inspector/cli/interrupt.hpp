@@ -1,10 +1,13 @@
 #pragma once
 // Ctrl-C (SIGINT) and SIGTERM during a long command (`run`): the handler only notes the signal, which the
-// command checks between frames and before it writes its files; it then throws Interrupted, the files it had
-// staged are removed as the stack unwinds, and cli.cpp prints one line and exits 128 + the signal (130 for
-// Ctrl-C). The note is the program's one global: a signal handler can reach nothing else.
+// command checks between frames and before it writes its files. `run` then stops, prints the summary of the
+// frames done and (with --keep-partial) writes them; a command that cannot use what it did throws Interrupted,
+// the files it had staged are removed as the stack unwinds, and cli.cpp prints one line. Either way the exit
+// code is 128 + the signal (130 for Ctrl-C, 143 for SIGTERM). The note is the program's one global: a signal
+// handler can reach nothing else.
 
 #include <csignal>
+#include <optional>
 
 namespace impulse::cli {
 
@@ -26,7 +29,14 @@ private:
     struct sigaction previous_terminate_ {};
 };
 
-// Throws Interrupted if a signal arrived since the handler was installed.
+// The signal that arrived since the handler was installed (or since forget_interrupt), if one did.
+std::optional<int> interrupt_received();
+// Forgets a signal already acted on, so that a second one can be told from it.
+void forget_interrupt();
+// Throws Interrupted if a signal arrived since the handler was installed (or since forget_interrupt).
 void throw_if_interrupted();
+
+// "SIGINT" or "SIGTERM".
+const char* signal_name(int signal);
 
 }  // namespace impulse::cli

@@ -5,6 +5,7 @@
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
+#include "cli/outputs.hpp"
 #include "explain/text_table.hpp"
 #include "gui/display.hpp"
 #include "gui/inspector_app.hpp"
@@ -107,6 +108,13 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
             run.script = read_script_file(*options.script);
         }
         run.screenshot = options.screenshot;
+        // A picture on standard output, as inspect's (cli/outputs.hpp): what the lesson says goes to stderr then.
+        if (options.screenshot && names_standard_output(*options.screenshot, out)) {
+            if (is_terminal(out))
+                throw io::InputError("--screenshot", "standard output is a terminal; redirect it to a file or a pipe");
+            run.standard_output = &out;
+            return gui::run_inspector(prepared.session, run, err, err);
+        }
         return gui::run_inspector(prepared.session, run, out, err);
     }
     if (options.script || options.screenshot)

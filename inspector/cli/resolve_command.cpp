@@ -4,8 +4,8 @@
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
+#include "cli/outputs.hpp"
 #include "explain/explain.hpp"
-#include "io/atomic_file.hpp"
 #include "io/scene_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
@@ -16,11 +16,13 @@
 namespace impulse::cli {
 
 int resolve_command(const ResolveOptions& options, std::ostream& out, std::ostream& err) {
+    Outputs outputs(out, err);
+    outputs.add("--trace", options.trace_file);
     Scene scene;
     try {
         scene = io::read_scene_text(read_input_file(options.case_file), options.preset);
     } catch (const io::InputError& e) {
-        throw FileError{options.case_file, e.where(), e.problem()};
+        throw FileError{input_name(options.case_file), e.where(), e.problem()};
     }
     for (const std::string& assignment : options.settings) io::apply_setting(scene, assignment, "--set");
     TraceFilter recording;
@@ -38,14 +40,14 @@ int resolve_command(const ResolveOptions& options, std::ostream& out, std::ostre
 
     // Everything the user asked for is checked before anything is written, and the trace is written
     // atomically, so a failed run leaves no file behind.
-    if (options.trace_file)
-        io::write_file_atomically(*options.trace_file, io::format_json(io::trace_json(trace)), "--trace");
+    if (options.trace_file) outputs.write({{"--trace", io::format_json(io::trace_json(trace))}});
+    std::ostream& report = outputs.report();
     if (options.explain)
-        explain::write_explanation(out, trace);
+        explain::write_explanation(report, trace);
     else
-        explain::write_summary(out, trace);
-    if (options.trace_file) out << "trace written to " << *options.trace_file << '\n';
-    return 0;
+        explain::write_summary(report, trace);
+    if (!outputs.file_of("--trace").empty()) report << "trace written to " << outputs.file_of("--trace") << '\n';
+    return exit_ok;
 }
 
 }  // namespace impulse::cli

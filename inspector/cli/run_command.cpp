@@ -5,10 +5,10 @@
 #include "cli/commands.hpp"
 #include "cli/input_files.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/outputs.hpp"
 #include "cli/progress.hpp"
 #include "explain/csv.hpp"
 #include "explain/format.hpp"
-#include "io/atomic_file.hpp"
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/scene_file.hpp"
@@ -50,92 +50,28 @@ std::string fixed(double v, int decimals) {
     return text;
 }
 
-}  // namespace
-
-int run_command(const RunOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress) {
-    Trace trace;
-    try {
-        trace.scene = io::read_scene_text(read_input_file(options.scene_file), options.preset);
-    } catch (const io::InputError& e) {
-        throw FileError{options.scene_file, e.where(), e.problem()};
-    }
-    Scene& scene = trace.scene;
-    for (const std::string& assignment : options.settings) io::apply_setting(scene, assignment, "--set");
-    if (options.frames) scene.world.frames = *options.frames;
-    if (options.dt) scene.settings.duration = *options.dt;
-    for (const std::string& spec : options.record) apply_record_spec(spec, trace.recording);
-    // A run can take minutes: find out now, not after it, if its results could not be written.
-    if (options.trace_file) io::check_writable(*options.trace_file, "--trace");
-    if (options.states_file) io::check_writable(*options.states_file, "--states");
-    if (!scene.contacts.empty())
-        err << "impulse-lab: note: the " << scene.contacts.size() << " contact(s) written in " << options.scene_file
-            << " are for `resolve`; `run` detects its own\n";
-    // The trace header is the scene as run; a trace of `run` lists no hand-written contacts.
-    scene.contacts.clear();
-
-    std::vector<RigidBody> bodies = scene.bodies;
-    TraceRecorder trace_recorder(trace, inspect::trace_budget_bytes(options.max_trace_mb));
-    Recorder nobody;
-    Recorder& recorder = options.trace_file ? static_cast<Recorder&>(trace_recorder) : nobody;
-
-    const int frames = scene.world.frames;
-    const double dt = scene.settings.duration;
-    std::string states;
-    if (options.states_file) {
-        states = "frame,time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
-        append_states(states, -1, 0.0, scene, bodies);
-    }
-    const std::size_t top = highest_body(scene);
-    const Vec3 top_start = bodies[top].position;
+// The summary of the frames run (all of them, or those done before a Ctrl-C): up to 20 frames evenly spread,
+// and always the last.
+struct RunSummary {
+    std::string scene_name;
+    int frames_asked = 0;
+    double dt = 0.0;
+    std::size_t top = 0;  // the body that started highest
+    Vec3 top_start = Vec3::Zero();
     double top_drift_most = 0.0;
     int top_drift_frame = 0;
+};
 
-    std::vector<StepReport> reports;
-    reports.reserve(static_cast<std::size_t>(frames));
-    ProgressBar bar(progress, frames);
-    ContactMemory memory;
-    std::optional<int> broken_frame;  // the frame that left a body non-finite: the run stops there
-    // Ctrl-C stops the run between frames and writes nothing (cli/interrupt.hpp).
-    const InterruptHandler interrupt_handler;
-    for (int frame = 0; frame < frames; ++frame) {
-        throw_if_interrupted();
-        reports.push_back(step(scene, bodies, recorder, frame, &memory));
-        if (reports.back().non_finite) {
-            broken_frame = frame;
-            break;
-        }
-        if (options.states_file) append_states(states, frame, (frame + 1) * dt, scene, bodies);
-        const double drift = (bodies[top].position - top_start).norm();
-        if (drift > top_drift_most) top_drift_most = drift, top_drift_frame = frame;
-        bar.update(frame + 1);
-    }
-    bar.finish();
-    if (trace_recorder.stopped_at()) err << trace_stopped_note(*trace_recorder.stopped_at(), options.max_trace_mb) << '\n';
-    if (broken_frame && options.trace_file) end_trace_before(trace, *broken_frame);
-
-    // Formatting a long trace takes a while: a Ctrl-C meanwhile still writes nothing.
-    const std::string trace_text = options.trace_file ? io::format_json(io::trace_json(trace)) : std::string();
-    throw_if_interrupted();
-    {
-        // Both files are written to temporaries first and renamed only when both succeeded; a signal from here
-        // on waits until both are in place.
-        const io::DeferredSignals held;
-        std::vector<io::StagedFile> outputs;
-        if (options.trace_file) outputs.emplace_back(*options.trace_file, trace_text, "--trace");
-        if (options.states_file) outputs.emplace_back(*options.states_file, states, "--states");
-        for (io::StagedFile& file : outputs) file.commit();
-    }
-    if (broken_frame) {
-        err << "impulse-lab: " << inspect::broken_run_text(scene, {*broken_frame, *reports.back().non_finite}) << '\n';
-        if (options.trace_file) out << "trace of the frames before it written to " << *options.trace_file << '\n';
-        if (options.states_file) out << "states of the frames before it written to " << *options.states_file << '\n';
-        return exit_non_finite;
-    }
-
-    // The summary: up to 20 frames evenly spread, and always the last.
-    out << options.scene_file << ": " << bodies.size() << (bodies.size() == 1 ? " body" : " bodies")
-        << (scene.ground ? ", ground" : "") << ", " << frames << " frames of " << explain::number(dt) << " s ("
-        << explain::number(frames * dt) << " s), preset " << scene.settings.preset << "\n";
+void write_summary(std::ostream& out, const RunSummary& s, const Scene& scene, const std::vector<RigidBody>& bodies,
+                   const std::vector<StepReport>& reports) {
+    const int frames = static_cast<int>(reports.size());
+    const double dt = s.dt;
+    out << s.scene_name << ": " << bodies.size() << (bodies.size() == 1 ? " body" : " bodies")
+        << (scene.ground ? ", ground" : "") << ", "
+        << (frames == s.frames_asked ? std::to_string(frames)
+                                     : std::to_string(frames) + " of " + std::to_string(s.frames_asked))
+        << " frames of " << explain::number(dt) << " s (" << explain::number(frames * dt) << " s), preset "
+        << scene.settings.preset << "\n";
     out << "  frame    time s  contacts  deepest mm   kinetic J  ms/frame\n";
     const int every = std::max(1, (frames + 19) / 20);
     StageTimes total;
@@ -167,12 +103,117 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     out << "  iteration limit (or every sweep) used in " << position_limited << " of " << frames
         << " frames (positions) and " << velocity_limited << " (velocities)\n";
     out << "  deepest penetration " << fixed(deepest * 1e3, 3) << " mm (frame " << deepest_frame << "); "
-        << scene.body_names[top] << " (highest at the start) ends "
-        << fixed((bodies[top].position - top_start).norm() * 1e3, 3) << " mm from where it started, at most "
-        << fixed(top_drift_most * 1e3, 3) << " mm (frame " << top_drift_frame << ")\n";
-    if (options.trace_file) out << "trace written to " << *options.trace_file << '\n';
-    if (options.states_file) out << "states written to " << *options.states_file << '\n';
-    return 0;
+        << scene.body_names[s.top] << " (highest at the start) ends "
+        << fixed((bodies[s.top].position - s.top_start).norm() * 1e3, 3) << " mm from where it started, at most "
+        << fixed(s.top_drift_most * 1e3, 3) << " mm (frame " << s.top_drift_frame << ")\n";
+}
+
+}  // namespace
+
+int run_command(const RunOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress) {
+    // A run can take minutes: find out now, not after it, if its results could not be written.
+    Outputs outputs(out, err);
+    outputs.add("--trace", options.trace_file);
+    outputs.add("--states", options.states_file);
+    std::ostream& report = outputs.report();
+
+    Trace trace;
+    const std::string scene_name = input_name(options.scene_file);
+    try {
+        trace.scene = io::read_scene_text(read_input_file(options.scene_file), options.preset);
+    } catch (const io::InputError& e) {
+        throw FileError{scene_name, e.where(), e.problem()};
+    }
+    Scene& scene = trace.scene;
+    for (const std::string& assignment : options.settings) io::apply_setting(scene, assignment, "--set");
+    if (options.frames) scene.world.frames = *options.frames;
+    if (options.dt) scene.settings.duration = *options.dt;
+    for (const std::string& spec : options.record) apply_record_spec(spec, trace.recording);
+    if (!scene.contacts.empty())
+        err << "impulse-lab: note: the " << scene.contacts.size() << " contact(s) written in " << scene_name
+            << " are for `resolve`; `run` detects its own\n";
+    // The trace header is the scene as run; a trace of `run` lists no hand-written contacts.
+    scene.contacts.clear();
+
+    std::vector<RigidBody> bodies = scene.bodies;
+    TraceRecorder trace_recorder(trace, inspect::trace_budget_bytes(options.max_trace_mb));
+    Recorder nobody;
+    Recorder& recorder = options.trace_file ? static_cast<Recorder&>(trace_recorder) : nobody;
+
+    const int frames = scene.world.frames;
+    const double dt = scene.settings.duration;
+    std::string states;
+    if (options.states_file) {
+        states = "frame,time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
+        append_states(states, -1, 0.0, scene, bodies);
+    }
+    RunSummary summary{scene_name, frames, dt, highest_body(scene), {}, 0.0, 0};
+    summary.top_start = bodies[summary.top].position;
+
+    std::vector<StepReport> reports;
+    reports.reserve(static_cast<std::size_t>(frames));
+    ProgressBar bar(progress, frames);
+    ContactMemory memory;
+    std::optional<int> broken_frame;  // the frame that left a body non-finite: the run stops there
+    std::optional<int> interrupted;   // Ctrl-C or SIGTERM stopped the run between frames (cli/interrupt.hpp)
+    const InterruptHandler interrupt_handler;
+    for (int frame = 0; frame < frames; ++frame) {
+        if ((interrupted = interrupt_received())) break;
+        reports.push_back(step(scene, bodies, recorder, frame, &memory));
+        if (reports.back().non_finite) {
+            broken_frame = frame;
+            break;
+        }
+        if (options.states_file) append_states(states, frame, (frame + 1) * dt, scene, bodies);
+        const double drift = (bodies[summary.top].position - summary.top_start).norm();
+        if (drift > summary.top_drift_most) summary.top_drift_most = drift, summary.top_drift_frame = frame;
+        bar.update(frame + 1);
+    }
+    bar.finish();
+    if (broken_frame && options.trace_file) end_trace_before(trace, *broken_frame);
+    const int frames_done = static_cast<int>(reports.size()) - (broken_frame ? 1 : 0);
+    if (interrupted) {
+        end_trace_before(trace, frames_done);
+        forget_interrupt();  // a second signal from here on stops the writing
+    }
+
+    // Formatting a long trace takes a while: a signal meanwhile is the first (the run had ended: nothing is
+    // written without --keep-partial) or the second (nothing is written at all).
+    const bool write = !interrupted || options.keep_partial;
+    const std::string trace_text = options.trace_file && write ? io::format_json(io::trace_json(trace)) : std::string();
+    if (const std::optional<int> signal = interrupt_received()) {
+        if (interrupted) throw Interrupted{*signal};
+        interrupted = signal;
+    }
+    if (!interrupted || options.keep_partial) {
+        if (trace_recorder.stopped_at())
+            err << trace_stopped_note(*trace_recorder.stopped_at(), options.max_trace_mb) << '\n';
+        outputs.write({{"--trace", trace_text}, {"--states", states}});
+    }
+
+    if (broken_frame) {
+        err << "impulse-lab: " << inspect::broken_run_text(scene, {*broken_frame, *reports.back().non_finite}) << '\n';
+        if (!outputs.file_of("--trace").empty())
+            report << "trace of the frames before it written to " << outputs.file_of("--trace") << '\n';
+        if (!outputs.file_of("--states").empty())
+            report << "states of the frames before it written to " << outputs.file_of("--states") << '\n';
+        return exit_non_finite;
+    }
+    write_summary(report, summary, scene, bodies, reports);
+    if (interrupted) {
+        err << "impulse-lab: interrupted (" << signal_name(*interrupted) << ") after " << frames_done << " of "
+            << frames << " frames: "
+            << (options.keep_partial
+                    ? std::string(options.trace_file || options.states_file ? "the frames done are written"
+                                                                            : "nothing to write")
+                    : std::string("nothing written, the files already there are unchanged (--keep-partial writes "
+                                  "the frames done)"))
+            << '\n';
+        return 128 + *interrupted;
+    }
+    if (!outputs.file_of("--trace").empty()) report << "trace written to " << outputs.file_of("--trace") << '\n';
+    if (!outputs.file_of("--states").empty()) report << "states written to " << outputs.file_of("--states") << '\n';
+    return exit_ok;
 }
 
 }  // namespace impulse::cli

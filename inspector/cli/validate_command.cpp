@@ -1,6 +1,7 @@
 // `impulse-lab validate FILE...`: check case, trace and lesson files against their schemas and against what a
 // schema cannot say (names, references, unit quaternions, inertia). A trace is told from a case by its
-// "format" marker.
+// "format" marker. Exit 0 when every file is valid, 1 when one is invalid (the verdict asked for), 2 when one cannot
+// be read at all.
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
@@ -22,34 +23,33 @@ std::string count(std::size_t n, std::string_view one, std::string_view many) {
     return std::to_string(n) + " " + std::string(n == 1 ? one : many);
 }
 
+bool is_lesson(const std::string& path) {
+    return path.ends_with(".md");
+}
+
 // A Markdown file that is neither named nor made like a lesson (a folder's README.md): nothing to check, so
 // `validate lessons/*.md` checks the lessons and passes over the rest.
-bool other_markdown(const std::string& path) {
+bool other_markdown(const std::string& path, const std::string& text) {
     const std::string name = std::filesystem::path(path).filename().string();
     const bool named = name.size() > 3 && std::isdigit(static_cast<unsigned char>(name[0])) &&
                        std::isdigit(static_cast<unsigned char>(name[1])) && name[2] == '-';
     if (named) return false;
-    std::string text;
-    try {
-        text = read_input_file(path, max_text_input_bytes);
-    } catch (const FileError&) {
-        return false;  // reported when it is read as a lesson
-    }
     const std::size_t first = text.find_first_not_of(" \t\r\n");
     return first == std::string::npos || text.compare(first, 7, "```json") != 0;
 }
 
-std::string check_file(const std::string& path) {
-    if (path.ends_with(".md")) {
-        if (other_markdown(path)) return "not a lesson (no NN- name, no ```json header): skipped";
+// The verdict on a file read whole; throws io::InputError or FileError for an invalid one.
+std::string check_file(const std::string& path, const std::string& text) {
+    if (is_lesson(path)) {
+        if (other_markdown(path, text)) return "not a lesson (no NN- name, no ```json header): skipped";
         // A lesson: its header and sections, then its run, places and answers.
-        const lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(path));
+        const lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson_text(text, path));
         const auto questions = static_cast<std::size_t>(lessons::question_count(lesson.lesson));
         return "valid lesson " + std::to_string(lesson.lesson.number) + " (" +
                count(lesson.lesson.steps.size(), "step", "steps") + ", " + count(questions, "question", "questions") +
                ")";
     }
-    const io::json document = io::parse_json_text(read_input_file(path));
+    const io::json document = io::parse_json_text(text);
     if (document.is_object() && document.contains("format") && document["format"] == io::trace_format_name) {
         const Trace trace = io::read_trace(document);
         std::size_t iterations = 0;
@@ -68,30 +68,42 @@ std::string check_file(const std::string& path) {
     const Scene c = io::read_scene(document);
     // A case writes its contacts out; a scene leaves them to its shapes.
     const bool is_case = !c.contacts.empty();
-    std::string text =
+    std::string verdict =
         std::string(is_case ? "valid case (" : "valid scene (") + count(c.bodies.size(), "body", "bodies");
-    if (c.ground) text += ", ground";
-    if (is_case) text += ", " + count(c.contacts.size(), "contact", "contacts");
-    return text + ")";
+    if (c.ground) verdict += ", ground";
+    if (is_case) verdict += ", " + count(c.contacts.size(), "contact", "contacts");
+    return verdict + ")";
 }
 
 }  // namespace
 
 int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
-    int result = exit_ok;
+    // An invalid file is the verdict asked for (1); a file that cannot be read at all is bad input (2).
+    bool invalid = false, unreadable = false;
+    const auto report = [&err](const FileError& e) {
+        err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
+    };
     for (const std::string& file : files) {
+        std::string text;
         try {
-            const std::string verdict = check_file(file);
-            out << file << ": " << verdict << '\n';
-        } catch (const io::InputError& e) {
-            err << "impulse-lab: " << file << ": " << e.what() << '\n';
-            result = exit_bad_input;
+            text = read_input_file(file, is_lesson(file) ? max_text_input_bytes : max_input_bytes);
         } catch (const FileError& e) {
-            err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
-            result = exit_bad_input;
+            report(e);
+            unreadable = true;
+            continue;
+        }
+        try {
+            const std::string verdict = check_file(file, text);
+            out << input_name(file) << ": " << verdict << '\n';
+        } catch (const io::InputError& e) {
+            err << "impulse-lab: " << input_name(file) << ": " << e.what() << '\n';
+            invalid = true;
+        } catch (const FileError& e) {
+            report(e);
+            invalid = true;
         }
     }
-    return result;
+    return unreadable ? exit_bad_input : invalid ? exit_verdict : exit_ok;
 }
 
 }  // namespace impulse::cli

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace impulse::coursework {
 
@@ -37,7 +38,7 @@ std::optional<std::vector<io::json>> identities(const io::json& array, std::stri
 class Comparison {
 public:
     Comparison(const io::json& reference, const Tolerance& tolerance, bool blank_allowed)
-        : reference_(reference), tolerance_(tolerance), blank_allowed_(blank_allowed) {}
+        : reference_(reference), tolerance_(tolerance), blank_allowed_(blank_allowed), grading_(blank_allowed) {}
 
     // `area` is the kind a differing value is reported as; `name` the key that holds `expected`.
     void compare(const io::json& expected, const io::json& found, const std::string& path, FindingKind area,
@@ -61,27 +62,42 @@ public:
             return;
         }
         if (blank_allowed_ && found.is_null() && !expected.is_null()) {
-            for_each_scalar(expected, path, [this](const std::string& at, const io::json& value) {
-                add(FindingKind::blank, at, value, nullptr);
-                ++report_.blank;
-            });
+            for_each_scalar(expected, path, [this](const std::string& at, const io::json& value) { blank(at, value); });
             return;
         }
         if (expected.is_number() && found.is_number()) {
             const double a = expected.get<double>(), b = found.get<double>();
             const double difference = std::abs(a - b);
+            const double relative = a == 0.0 ? difference : difference / std::abs(a);
             if (difference <= tolerance_.atol + tolerance_.rtol * std::abs(a)) {
                 matched();
+                grade(path, expected, found, relative, Verdict::right);
                 return;
             }
-            add(area, path, expected, found).relative_error = a == 0.0 ? difference : difference / std::abs(a);
+            add(area, path, expected, found).relative_error = relative;
+            grade(path, expected, found, relative, Verdict::wrong);
             return;
         }
         if (expected == found && !expected.is_structured()) {
             matched();
+            grade(path, expected, found, std::nullopt, Verdict::right);
             return;
         }
         add(area, path, expected, found);
+        grade(path, expected, found, std::nullopt, Verdict::wrong);
+    }
+
+    // A number of an asked cell left blank (or left out of the file).
+    void blank(const std::string& path, const io::json& expected) {
+        add(FindingKind::blank, path, expected, nullptr);
+        ++report_.blank;
+        grade(path, expected, nullptr, std::nullopt, Verdict::blank);
+    }
+
+    // Records each number of the cells as graded (worksheets only, not the header they were made with).
+    void grade(const std::string& path, const io::json& expected, const io::json& found,
+               std::optional<double> relative_error, Verdict verdict) {
+        if (grading_) report_.graded.push_back({path, expected, found, relative_error, verdict, "", "", ""});
     }
 
     Finding& add(FindingKind kind, const std::string& path, const io::json& expected, const io::json& found) {
@@ -103,7 +119,7 @@ public:
         return report_.findings.back();
     }
 
-    void count_matches(bool on) { counting_ = on; }
+    void count_matches(bool on) { counting_ = grading_ = on; }
     DiffReport& report() { return report_; }
 
 private:
@@ -147,6 +163,7 @@ private:
     Tolerance tolerance_;
     bool blank_allowed_;
     bool counting_ = true;
+    bool grading_;
     DiffReport report_;
 };
 
@@ -162,6 +179,69 @@ void mark_first_divergence(DiffReport& report) {
             f.first_divergence = true;
             return;
         }
+}
+
+// Where a path comes in the order the derivation computes: by where it is in the reference document, except
+// that inside an item (a prepared contact, an iteration) its key is placed by the step table (step_keys), which
+// lists them in the derivation's order — an iteration's record writes its desired velocity change before the
+// contact velocity it comes from — and then by its indices (the update, the body, the component), as the
+// worksheet lists its cells.
+std::vector<std::size_t> derivation_position(const io::json& reference, const std::vector<PathToken>& path) {
+    const auto key_is = [&path](std::size_t i, std::string_view key) {
+        const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
+        return k && *k == key;
+    };
+    const auto index_at = [&path](std::size_t i) {
+        return i < path.size() && std::holds_alternative<std::size_t>(path[i]);
+    };
+    std::size_t rest = 0;
+    ItemKind kind = ItemKind::contact;
+    if (key_is(0, "frames") && index_at(1) && key_is(2, "contacts") && index_at(3)) {
+        rest = 4;
+    } else if (key_is(0, "frames") && index_at(1) && key_is(2, "phases") && index_at(3) && key_is(4, "iterations") &&
+               index_at(5)) {
+        const io::json* phase = value_at(reference, {path.begin(), path.begin() + 4});
+        kind = phase && phase->is_object() && phase->value("phase", "") == "position" ? ItemKind::position_iteration
+                                                                                      : ItemKind::velocity_iteration;
+        rest = 6;
+    }
+    std::vector<std::size_t> position = document_position(reference, path);
+    if (rest == 0 || rest >= path.size()) return position;
+    std::string key;
+    std::vector<std::size_t> indices;
+    for (std::size_t i = rest; i < path.size(); ++i) {
+        if (const auto* k = std::get_if<std::string>(&path[i])) {
+            key += (key.empty() ? "" : ".") + *k;
+        } else {
+            indices.push_back(std::get<std::size_t>(path[i]));
+            if (key == "updates" || key.ends_with(".features")) key += "[]";
+        }
+    }
+    const StepKey* step_key = find_step_key(kind, key);
+    if (!step_key) return position;
+    position.resize(rest);
+    position.push_back(static_cast<std::size_t>(step_key - step_keys().data()));
+    position.insert(position.end(), indices.begin(), indices.end());
+    return position;
+}
+
+// Into the derivation's order (stable for equal places).
+template <typename Item>
+void sort_into_trace_order(const io::json& reference, std::vector<Item>& items) {
+    std::vector<std::pair<std::vector<std::size_t>, std::size_t>> order;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        std::vector<std::size_t> position;
+        try {
+            position = derivation_position(reference, parse_json_path(items[i].path, ""));
+        } catch (const io::InputError&) {
+            position = {SIZE_MAX};
+        }
+        order.emplace_back(std::move(position), i);
+    }
+    std::stable_sort(order.begin(), order.end());
+    std::vector<Item> sorted;
+    for (const auto& [position, i] : order) sorted.push_back(std::move(items[i]));
+    items = std::move(sorted);
 }
 
 }  // namespace
@@ -209,18 +289,32 @@ DiffReport diff_traces(const io::json& reference, const io::json& other, const T
     return report;
 }
 
-DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance) {
+DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance,
+                          const std::vector<std::string>* asked) {
     Comparison comparison(reference, tolerance, true);
+    std::set<std::string> answered;  // the numbers the sheet has a row or a place for
     for (const FilledCell& cell : sheet.cells) {
         const io::json* expected = value_at(reference, cell.tokens);
         if (!expected) {
             comparison.add(FindingKind::not_in_reference, cell.path, nullptr, cell.value);
+            for_each_scalar(cell.value, cell.path, [&comparison](const std::string& at, const io::json& value) {
+                comparison.grade(at, nullptr, value, std::nullopt, Verdict::wrong);
+            });
             continue;
         }
+        for_each_scalar(*expected, cell.path,
+                        [&answered](const std::string& at, const io::json&) { answered.insert(at); });
         const auto* top = std::get_if<std::string>(&cell.tokens.front());
         const auto* last = std::get_if<std::string>(&cell.tokens.back());
         comparison.compare(*expected, cell.value, cell.path, area_of(top ? *top : ""), last ? *last : "");
     }
+    // What the sheet was handed out with and left out: blank, as an empty cell is.
+    if (asked)
+        for (const std::string& path : *asked)
+            if (const io::json* expected = value_at(reference, parse_json_path(path, "")))
+                for_each_scalar(*expected, path, [&](const std::string& at, const io::json& value) {
+                    if (!answered.count(at)) comparison.blank(at, value);
+                });
     // What the sheet was made from: a difference explains every wrong cell after it. Its matches are not
     // the student's, so they are not counted.
     comparison.count_matches(false);
@@ -230,23 +324,53 @@ DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& shee
 
     DiffReport report = std::move(comparison.report());
     report.other_kind = "worksheet";
-    // Into trace order: by where each path comes in the reference document.
-    std::vector<std::pair<std::vector<std::size_t>, std::size_t>> order;
-    for (std::size_t i = 0; i < report.findings.size(); ++i) {
-        std::vector<std::size_t> position;
-        try {
-            position = document_position(reference, parse_json_path(report.findings[i].path, ""));
-        } catch (const io::InputError&) {
-            position = {SIZE_MAX};
-        }
-        order.emplace_back(std::move(position), i);
-    }
-    std::stable_sort(order.begin(), order.end());
-    std::vector<Finding> sorted;
-    for (const auto& [position, i] : order) sorted.push_back(std::move(report.findings[i]));
-    report.findings = std::move(sorted);
+    sort_into_trace_order(reference, report.findings);
+    sort_into_trace_order(reference, report.graded);
     mark_first_divergence(report);
     return report;
+}
+
+void word_findings(DiffReport& report, const Trace& trace, const io::json& reference) {
+    const auto word = [&](const std::string& path, std::string& place, std::string& quantity, std::string& unit) {
+        try {
+            const Wording w = word_path(trace, reference, parse_json_path(path, ""));
+            place = w.place;
+            quantity = w.quantity;
+            unit = w.unit;
+        } catch (const io::InputError&) {
+            place.clear();  // a scene's material names may be any text: such a path is shown as it is
+            quantity = path;
+        }
+    };
+    for (Finding& f : report.findings) word(f.path, f.place, f.quantity, f.unit);
+    for (GradedNumber& g : report.graded) word(g.path, g.place, g.quantity, g.unit);
+}
+
+std::string_view verdict_name(Verdict verdict) {
+    switch (verdict) {
+        case Verdict::right:
+            return "right";
+        case Verdict::wrong:
+            return "wrong";
+        case Verdict::blank:
+            return "blank";
+    }
+    return "";
+}
+
+Score score_of(const DiffReport& report) {
+    Score s;
+    if (report.other_kind == "worksheet") {
+        for (const GradedNumber& g : report.graded)
+            ++(g.verdict == Verdict::right ? s.right : g.verdict == Verdict::wrong ? s.wrong : s.blank);
+    } else {
+        s.right = report.matched;
+        s.wrong = report.mismatched;
+        s.blank = report.blank;
+    }
+    s.cells = s.right + s.wrong + s.blank;
+    if (s.cells > 0) s.percent = 100.0 * static_cast<double>(s.right) / static_cast<double>(s.cells);
+    return s;
 }
 
 }  // namespace impulse::coursework

@@ -4,6 +4,7 @@
 // mismatch in trace order is the first divergence: later ones often follow from it.
 
 #include "coursework/filled_worksheet.hpp"
+#include "record/trace.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -36,22 +37,54 @@ struct Finding {
     io::json expected;                     // the reference's value; null when extra
     io::json found;                        // the other's; null when missing or blank
     std::optional<double> relative_error;  // |a − b| / |a|, or |a − b| when a = 0; numbers only
-    std::string quantity;                  // the vocabulary name the path ends in, when it has one
+    // In the worksheet's own words (word_path; filled by word_findings): the step's place and the value's name
+    // there ("impulse_world[1]"); until then the vocabulary name the path ends in, when it has one.
+    std::string place;
+    std::string quantity;
+    std::string unit;
     std::string formula;
     std::string equation;
     bool first_divergence = false;
 };
 
+// One number of a worksheet's cells as graded: right, wrong, or left blank.
+enum class Verdict { right, wrong, blank };
+std::string_view verdict_name(Verdict verdict);  // "right", "wrong", "blank"
+
+struct GradedNumber {
+    std::string path;
+    io::json expected;  // null for a cell the reference does not have
+    io::json found;     // null when blank
+    std::optional<double> relative_error;
+    Verdict verdict = Verdict::right;
+    std::string place;  // as Finding's
+    std::string quantity;
+    std::string unit;
+};
+
 struct DiffReport {
-    std::string other_kind;         // "trace" or "worksheet"
-    std::size_t matched = 0;        // scalars that match
-    std::size_t mismatched = 0;     // findings other than blank
-    std::size_t blank = 0;          // blank worksheet cells (numbers)
-    std::vector<Finding> findings;  // every mismatch and blank, in trace order
+    std::string other_kind;            // "trace" or "worksheet"
+    std::size_t matched = 0;           // scalars that match
+    std::size_t mismatched = 0;        // findings other than blank
+    std::size_t blank = 0;             // blank worksheet cells (numbers)
+    std::vector<Finding> findings;     // every mismatch and blank, in trace order
+    std::vector<GradedNumber> graded;  // a worksheet: every number of every cell, in trace order
 
     const Finding* first_divergence() const;
     bool all_match() const { return mismatched == 0 && blank == 0; }
 };
+
+// The grade of one file (docs/coursework.md, "Score"). A worksheet: every number of the cells it was asked for
+// counts once, right, wrong or blank. A trace: every number compared counts once and a missing or extra element
+// (an iteration, a key) once; there is nothing to leave blank. score = right / cells × 100, none for no cells.
+struct Score {
+    std::size_t cells = 0;
+    std::size_t right = 0;
+    std::size_t wrong = 0;
+    std::size_t blank = 0;
+    std::optional<double> percent;
+};
+Score score_of(const DiffReport& report);
 
 // Walks both trace documents (already checked against the trace schema) in the reference's order: the header
 // (settings first among what can differ), then frame by frame the contacts, the phases and their iterations.
@@ -61,7 +94,13 @@ struct DiffReport {
 DiffReport diff_traces(const io::json& reference, const io::json& other, const Tolerance& tolerance);
 
 // Each cell of the sheet against the reference's value at its path, then the sheet's settings and scene
-// against the reference's, sorted into trace order.
-DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance);
+// against the reference's, sorted into trace order. `asked`, when known (the reference is a worksheet or a
+// lesson), holds the paths of the cells the sheet was handed out with: a number of them the sheet leaves out
+// is graded blank, as if its row had been deleted.
+DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance,
+                          const std::vector<std::string>* asked = nullptr);
+
+// Words every finding's and graded number's path as the worksheet does (word_path): its place and quantity.
+void word_findings(DiffReport& report, const Trace& trace, const io::json& reference);
 
 }  // namespace impulse::coursework

@@ -6,6 +6,8 @@
 #include "io/input_error.hpp"
 #include "io/json_text.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace impulse::coursework {
@@ -14,9 +16,13 @@ namespace {
 
 constexpr std::size_t brief_width = 40;
 
-// A value in one short cell: scalars in full (every digit), structures shortened.
-std::string brief(const io::json& value) {
-    if (!value.is_structured()) return value.is_null() ? "null" : scalar_text(value);
+// A value in one short cell: an expected number to the digits the tolerance looks at (shown_value), a found one
+// as written; structures shortened.
+std::string brief(const io::json& value, const std::optional<Tolerance>& tolerance) {
+    if (!value.is_structured()) {
+        if (value.is_null()) return "null";
+        return tolerance ? shown_value(value, *tolerance) : scalar_text(value);
+    }
     std::string text;
     if (value.is_object()) {
         // Elements that carry their own number (an iteration, a contact) are named by it.
@@ -62,6 +68,60 @@ std::string aligned(const std::vector<std::vector<std::string>>& rows, std::stri
     return text;
 }
 
+}  // namespace
+
+std::string shown_value(const io::json& value, const Tolerance& tolerance) {
+    if (!value.is_number_float())
+        return value.is_null() ? "" : value.is_structured() ? value.dump() : scalar_text(value);
+    if (value.get<double>() == 0.0) return "0";  // and −0
+    const double rtol = tolerance.rtol;
+    const int digits = rtol > 0 ? std::clamp(static_cast<int>(std::ceil(-std::log10(rtol))) + 2, 6, 17) : 17;
+    char text[48];
+    std::snprintf(text, sizeof text, "%.*g", digits, value.get<double>());
+    // The shortest text that reads back the same when it is shorter (0.25, not 0.250000).
+    const std::string exact = io::number_text(value.get<double>());
+    return exact.size() <= std::string(text).size() ? exact : text;
+}
+
+std::string worded(const Finding& f) {
+    return f.place.empty() ? f.quantity : f.place + ": " + f.quantity;
+}
+
+std::string percent_text(double percent) {
+    char text[32];
+    std::snprintf(text, sizeof text, percent >= 99.95 && percent < 100.0 ? "%.2f %%" : "%.1f %%", percent);
+    return text;
+}
+
+std::string findings_table(const std::vector<Finding>& findings, std::size_t limit, const Tolerance& tolerance) {
+    std::vector<std::vector<std::string>> rows{
+        {"", "kind", "quantity", "expected", "found", "unit", "rel. error", "formula", "eq."}};
+    std::vector<std::string> places{""};
+    for (std::size_t i = 0; i < findings.size() && i < limit; ++i) {
+        const Finding& f = findings[i];
+        const bool no_found = f.kind == FindingKind::missing || f.kind == FindingKind::blank;
+        rows.push_back({f.first_divergence ? "▶" : "", std::string(finding_kind_name(f.kind)), f.quantity,
+                        f.kind == FindingKind::extra || f.kind == FindingKind::not_in_reference
+                            ? "—"
+                            : brief(f.expected, tolerance),
+                        no_found ? "—" : brief(f.found, std::nullopt), f.unit, error_text(f.relative_error), f.formula,
+                        f.equation});
+        places.push_back(f.place);
+    }
+    // One line per row, under a line naming the place (the worksheet's step) whenever it changes.
+    const std::string table = aligned(rows, "");
+    std::string text;
+    std::size_t row = 0, start = 0;
+    for (std::size_t end = table.find('\n'); end != std::string::npos; start = end + 1, end = table.find('\n', start)) {
+        if (row > 0 && !places[row].empty() && places[row] != places[row - 1]) text += places[row] + "\n";
+        text += table.substr(start, end - start + 1);
+        ++row;
+    }
+    return text;
+}
+
+namespace {
+
 std::string counts(const DiffReport& r) {
     return std::to_string(r.matched) + " matched, " + std::to_string(r.mismatched) + " mismatched, " +
            std::to_string(r.blank) + " blank";
@@ -69,6 +129,11 @@ std::string counts(const DiffReport& r) {
 
 io::json tolerance_json(const Tolerance& t) {
     return {{"rtol", t.rtol}, {"atol", t.atol}};
+}
+
+io::json score_json(const DiffReport& r) {
+    const Score score = score_of(r);
+    return score.percent ? io::json(*score.percent) : io::json(nullptr);
 }
 
 io::json first_divergence_json(const DiffReport& r) {
@@ -81,23 +146,15 @@ io::json first_divergence_json(const DiffReport& r) {
 std::string report_text(const DiffReport& report, const DiffSubject& subject) {
     std::string text = "reference " + subject.reference + "\nother     " + subject.other + " (" + report.other_kind +
                        ")\n" + tolerance_text(subject.tolerance) + "\n";
-    if (!report.findings.empty()) {
-        std::vector<std::vector<std::string>> rows{
-            {"", "kind", "path", "expected", "found", "rel. error", "formula", "eq."}};
-        for (const Finding& f : report.findings) {
-            const bool no_found = f.kind == FindingKind::missing || f.kind == FindingKind::blank;
-            rows.push_back(
-                {f.first_divergence ? "▶" : "", std::string(finding_kind_name(f.kind)), f.path,
-                 f.kind == FindingKind::extra || f.kind == FindingKind::not_in_reference ? "—" : brief(f.expected),
-                 no_found ? "—" : brief(f.found), error_text(f.relative_error), f.formula, f.equation});
-        }
-        text += "\n" + aligned(rows, "");
-    }
+    if (!report.findings.empty())
+        text += "\n" + findings_table(report.findings, report.findings.size(), subject.tolerance);
     text += "\n";
     if (const Finding* first = report.first_divergence())
-        text += "▶ first divergence: " + first->path + (first->quantity.empty() ? "" : " (" + first->quantity + ")") +
-                "; later mismatches often follow from it\n";
-    text += counts(report) + (report.all_match() ? ": all match" : "") + "\n";
+        text +=
+            "▶ first divergence: " + worded(*first) + " (" + first->path + "); later mismatches often follow from it\n";
+    const Score score = score_of(report);
+    text += counts(report) + (report.all_match() ? ": all match" : "") +
+            (score.percent ? "; score " + percent_text(*score.percent) : "") + "\n";
     return text;
 }
 
@@ -109,7 +166,9 @@ std::string report_json(const DiffReport& report, const DiffSubject& subject) {
                             {"expected", f.expected},
                             {"found", f.found},
                             {"relative_error", f.relative_error ? io::json(*f.relative_error) : io::json(nullptr)},
+                            {"place", f.place},
                             {"quantity", f.quantity},
+                            {"unit", f.unit},
                             {"formula", f.formula},
                             {"equation", f.equation},
                             {"first_divergence", f.first_divergence}});
@@ -121,79 +180,20 @@ std::string report_json(const DiffReport& report, const DiffSubject& subject) {
                                {"mismatched", report.mismatched},
                                {"blank", report.blank},
                                {"all_match", report.all_match()},
+                               {"score_percent", score_json(report)},
                                {"first_divergence", first_divergence_json(report)},
                                {"findings", findings}};
     return io::format_json(document);
 }
 
 std::string report_csv(const DiffReport& report) {
-    std::string text = "kind,path,expected,found,relative_error,quantity,formula,equation,first_divergence\n";
+    std::string text =
+        "kind,path,expected,found,relative_error,quantity,formula,equation,first_divergence,place,unit\n";
     const auto cell = [](const io::json& v) { return v.is_structured() ? v.dump() : scalar_text(v); };
     for (const Finding& f : report.findings)
         text += explain::csv_row({std::string(finding_kind_name(f.kind)), f.path, cell(f.expected), cell(f.found),
                                   f.relative_error ? io::number_text(*f.relative_error) : "", f.quantity, f.formula,
-                                  f.equation, f.first_divergence ? "true" : "false"});
-    return text;
-}
-
-std::string summary_text(const std::vector<ClassRow>& rows, const std::string& reference, const Tolerance& tolerance) {
-    std::string text = "reference " + reference + "\n" + tolerance_text(tolerance) + "\n\n";
-    std::vector<std::vector<std::string>> table{{"file", "matched", "mismatched", "blank", "first divergence"}};
-    std::size_t perfect = 0, imperfect = 0, unreadable = 0;
-    for (const ClassRow& row : rows) {
-        if (!row.report) {
-            ++unreadable;
-            table.push_back({row.file, "", "", "", "unreadable: " + row.error});
-            continue;
-        }
-        const DiffReport& r = *row.report;
-        ++(r.all_match() ? perfect : imperfect);
-        const Finding* first = r.first_divergence();
-        table.push_back({row.file, std::to_string(r.matched), std::to_string(r.mismatched), std::to_string(r.blank),
-                         first ? first->path : ""});
-    }
-    text += aligned(table, "") + "\n";
-    text += std::to_string(rows.size()) + (rows.size() == 1 ? " file: " : " files: ") + std::to_string(perfect) +
-            " all match, " + std::to_string(imperfect) + " with mismatches or blanks, " + std::to_string(unreadable) +
-            " unreadable\n";
-    return text;
-}
-
-std::string summary_json(const std::vector<ClassRow>& rows, const std::string& reference, const Tolerance& tolerance) {
-    io::json files = io::json::array();
-    for (const ClassRow& row : rows) {
-        if (!row.report) {
-            files.push_back({{"file", row.file},
-                             {"matched", nullptr},
-                             {"mismatched", nullptr},
-                             {"blank", nullptr},
-                             {"first_divergence", nullptr},
-                             {"error", row.error}});
-            continue;
-        }
-        const DiffReport& r = *row.report;
-        files.push_back({{"file", row.file},
-                         {"matched", r.matched},
-                         {"mismatched", r.mismatched},
-                         {"blank", r.blank},
-                         {"first_divergence", first_divergence_json(r)},
-                         {"error", nullptr}});
-    }
-    return io::format_json({{"reference", reference}, {"tolerance", tolerance_json(tolerance)}, {"files", files}});
-}
-
-std::string summary_csv(const std::vector<ClassRow>& rows) {
-    std::string text = "file,matched,mismatched,blank,first_divergence,error\n";
-    for (const ClassRow& row : rows) {
-        if (!row.report) {
-            text += explain::csv_row({row.file, "", "", "", "", row.error});
-            continue;
-        }
-        const DiffReport& r = *row.report;
-        const Finding* first = r.first_divergence();
-        text += explain::csv_row({row.file, std::to_string(r.matched), std::to_string(r.mismatched),
-                                  std::to_string(r.blank), first ? first->path : "", ""});
-    }
+                                  f.equation, f.first_divergence ? "true" : "false", f.place, f.unit});
     return text;
 }
 

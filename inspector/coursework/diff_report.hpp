@@ -1,6 +1,6 @@
 #pragma once
-// A diff as a person reads it (text), as a program reads it (JSON), or as a spreadsheet does (CSV); and the
-// class summary of several files, one row each.
+// A diff of one file as a person reads it (text), as a program reads it (JSON), or as a spreadsheet does (CSV).
+// A class of several files: coursework/class_report.hpp.
 
 #include "coursework/diff.hpp"
 
@@ -20,19 +20,17 @@ struct DiffSubject {
 // divergence marked; a summary line.
 std::string report_text(const DiffReport& report, const DiffSubject& subject);
 std::string report_json(const DiffReport& report, const DiffSubject& subject);
-// kind,path,expected,found,relative_error,quantity,formula,equation,first_divergence
+// kind,path,expected,found,relative_error,quantity,formula,equation,first_divergence,place,unit
 std::string report_csv(const DiffReport& report);
 
-// One file of a class: its report, or why it could not be read.
-struct ClassRow {
-    std::string file;
-    std::optional<DiffReport> report;
-    std::string error;  // "where: problem" when the file could not be graded
-};
+// The parts the class report shares: a finding's place and quantity ("frame 0 · … · impulse: impulse_world[1]"),
+// a score as a person reads it ("87.5 %"), and findings as aligned rows under their places (at most `limit`).
+std::string worded(const Finding& finding);
+std::string percent_text(double percent);
+std::string findings_table(const std::vector<Finding>& findings, std::size_t limit, const Tolerance& tolerance);
 
-std::string summary_text(const std::vector<ClassRow>& rows, const std::string& reference, const Tolerance& tolerance);
-std::string summary_json(const std::vector<ClassRow>& rows, const std::string& reference, const Tolerance& tolerance);
-// file,matched,mismatched,blank,first_divergence,error
-std::string summary_csv(const std::vector<ClassRow>& rows);
+// A value as a report shows it to a person: numbers to the significant digits the tolerance looks at (at least
+// 6, so 0.452919 against rtol 1e-4), everything else as the worksheet writes it.
+std::string shown_value(const io::json& value, const Tolerance& tolerance);
 
 }  // namespace impulse::coursework

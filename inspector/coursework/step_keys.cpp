@@ -56,6 +56,7 @@ constexpr std::array outside{
     OutsideKey{"bodies_before", "position", true, false, false, "m", "p", "the body's centre"},
     OutsideKey{"bodies_before", "velocity", true, false, false, "m/s", "ṗ", "the body's velocity"},
     OutsideKey{"bodies_before", "angular_velocity", true, false, false, "rad/s", "θ̇", "the body's angular velocity"},
+    OutsideKey{"contact", "bodies", false, true, true},
     OutsideKey{"contact", "normal", false, true, false},
     OutsideKey{"contact", "basis", false, false, true},
     OutsideKey{"contact", "relative_position", false, true, true},

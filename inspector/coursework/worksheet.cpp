@@ -1,7 +1,9 @@
 #include "coursework/worksheet.hpp"
 
 #include "explain/csv.hpp"
+#include "coursework/diff.hpp"
 #include "coursework/step_keys.hpp"
+#include "coursework/trace_items.hpp"
 #include "io/input_error.hpp"
 #include "io/scene_file.hpp"
 #include "io/schemas.hpp"
@@ -10,6 +12,9 @@
 #include "model/runs.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <set>
 
 namespace impulse::coursework {
@@ -18,68 +23,6 @@ namespace {
 
 using inspect::Cursor;
 using inspect::Stage;
-
-// The item a cursor stands on, in the trace document.
-struct ItemAt {
-    ItemKind kind;
-    std::string path;  // frames[f].contacts[k] or frames[f].phases[p].iterations[i]
-    const io::json* object;
-    std::string frame_path;  // frames[f]
-    const io::json* frame;
-};
-
-ItemAt item_at(const io::json& document, const Cursor& c) {
-    const std::string frame_path = io::json_path_index("frames", static_cast<std::size_t>(c.frame));
-    const io::json& frame = document["frames"][static_cast<std::size_t>(c.frame)];
-    const auto item = static_cast<std::size_t>(c.item);
-    if (c.stage == Stage::preparation)
-        return {ItemKind::contact, io::json_path_index(io::json_path_child(frame_path, "contacts"), item),
-                &frame["contacts"][item], frame_path, &frame};
-    const std::string_view phase = inspect::stage_name(c.stage);
-    std::size_t p = 0;
-    while (p + 1 < frame["phases"].size() && frame["phases"][p]["phase"] != phase) ++p;
-    const std::string phase_path = io::json_path_index(io::json_path_child(frame_path, "phases"), p);
-    return {c.stage == Stage::position ? ItemKind::position_iteration : ItemKind::velocity_iteration,
-            io::json_path_index(io::json_path_child(phase_path, "iterations"), item),
-            &frame["phases"][p]["iterations"][item], frame_path, &frame};
-}
-
-WorksheetEntry entry(std::string path, std::string step, std::string quantity, const Described& d, io::json value) {
-    return {std::move(path), std::move(step), std::move(quantity), d.unit,
-            d.formula,       d.equation,      d.meaning,           std::move(value)};
-}
-
-// The entries `key` makes in `object` (at `path`, named `quantity` so far): one per value present, one per body
-// present for a per-body key, one per element of an array of objects ("updates[].after").
-void expand(const io::json& object, const std::string& path, const std::string& quantity, std::string_view key,
-            bool per_body, const Described& d, const std::string& step, std::vector<WorksheetEntry>& out) {
-    const std::size_t dot = key.find('.');
-    const std::string_view head = key.substr(0, dot);
-    const bool each_element = head.ends_with("[]");
-    const std::string name(each_element ? head.substr(0, head.size() - 2) : head);
-    if (!object.is_object() || !object.contains(name)) return;
-    const io::json& value = object[name];
-    const std::string at = io::json_path_child(path, name);
-    const std::string called = quantity.empty() ? name : quantity + "." + name;
-    if (each_element) {
-        for (std::size_t i = 0; i < value.size(); ++i)
-            expand(value[i], io::json_path_index(at, i), called + "[" + std::to_string(i) + "]", key.substr(dot + 1),
-                   per_body, d, step, out);
-    } else if (dot != std::string_view::npos) {
-        expand(value, at, called, key.substr(dot + 1), per_body, d, step, out);
-    } else if (per_body) {
-        for (std::size_t b = 0; b < value.size(); ++b)
-            if (!value[b].is_null())
-                out.push_back(
-                    entry(io::json_path_index(at, b), step, called + "[" + std::to_string(b) + "]", d, value[b]));
-    } else if (!value.is_null()) {
-        out.push_back(entry(at, step, called, d, value));
-    }
-}
-
-void expand_key(const ItemAt& item, const StepKey& key, const std::string& step, std::vector<WorksheetEntry>& out) {
-    expand(*item.object, item.path, "", key.key, key.per_body, describe_key(key), step, out);
-}
 
 // The step names of the cursor's item, in the order its tables show them.
 std::vector<std::string> step_order(const Trace& trace, const Cursor& c) {
@@ -93,69 +36,6 @@ std::vector<WorksheetEntry> cells_of(const ItemAt& item, const std::string& step
     for (const StepKey& key : step_keys())
         if (key.item == item.kind && key.role == Role::computed && key.step == step) expand_key(item, key, step, cells);
     return cells;
-}
-
-// The chosen (or this) contact's preparation in the frame's document, or null when it was not recorded.
-const io::json* prepared_contact(const ItemAt& item, std::string* path) {
-    const io::json& contacts = (*item.frame)["contacts"];
-    if (item.kind == ItemKind::contact) {
-        *path = item.path;
-        return item.object;
-    }
-    const io::json& chosen = (*item.object)["contact"];
-    for (std::size_t k = 0; k < contacts.size(); ++k)
-        if (contacts[k]["contact"] == chosen) {
-            *path = io::json_path_index(io::json_path_child(item.frame_path, "contacts"), k);
-            return &contacts[k];
-        }
-    return nullptr;
-}
-
-std::vector<WorksheetEntry> inputs_of(const ItemAt& item, const std::vector<std::string>& order, std::size_t here,
-                                      const io::json& document) {
-    std::vector<WorksheetEntry> inputs;
-    const std::string given = "given";
-    for (const StepKey& key : step_keys())
-        if (key.item == item.kind && key.role == Role::given && key.step.empty()) expand_key(item, key, given, inputs);
-
-    // What the item's bodies and (for an iteration) its chosen contact bring in.
-    std::string contact_path;
-    if (const io::json* contact = prepared_contact(item, &contact_path)) {
-        for (const OutsideKey& key : outside_keys()) {
-            const bool wanted = item.kind == ItemKind::contact              ? key.for_contact
-                                : item.kind == ItemKind::position_iteration ? key.for_position_iteration
-                                                                            : key.for_velocity_iteration;
-            if (!wanted) continue;
-            const Described d = describe_outside(key);
-            if (key.where == "contact") {
-                const StepKey* k = find_step_key(ItemKind::contact, key.key);
-                expand(*contact, contact_path, contact_path.substr(item.frame_path.size() + 1), key.key,
-                       k && k->per_body, d, given, inputs);
-                continue;
-            }
-            for (const io::json& body : (*contact)["bodies"]) {
-                if (body.is_null()) continue;
-                const auto b = body.get<std::size_t>();
-                if (key.where == "scene_bodies") {
-                    const std::string at = io::json_path_index("scene.bodies", b);
-                    expand(document["scene"]["bodies"][b], at, at, key.key, false, d, given, inputs);
-                } else {
-                    const std::string name = io::json_path_index("bodies_before", b);
-                    expand((*item.frame)["bodies_before"][b], io::json_path_child(item.frame_path, name), name, key.key,
-                           false, d, given, inputs);
-                }
-            }
-        }
-    }
-
-    // The settings of the steps up to this one and the values of the steps before it.
-    for (std::size_t s = 0; s <= here && s < order.size(); ++s)
-        for (const StepKey& key : step_keys()) {
-            if (key.item != item.kind || key.step != order[s]) continue;
-            if (key.role == Role::setting || key.role == Role::given) expand_key(item, key, given, inputs);
-            if (key.role == Role::computed && s < here) expand_key(item, key, order[s], inputs);
-        }
-    return inputs;
 }
 
 std::string at_spec(const Trace& trace, const Cursor& c, const std::string& step) {
@@ -191,6 +71,18 @@ std::vector<std::string> steps_with_cells(const io::json& document, const Trace&
     return names;
 }
 
+// Each token after `from` as a path continues: ".key" or "[i]" (no dot at the start).
+std::string path_text(const std::vector<PathToken>& path, std::size_t from) {
+    std::string text;
+    for (std::size_t i = from; i < path.size(); ++i) {
+        if (const auto* key = std::get_if<std::string>(&path[i]))
+            text += (text.empty() ? "" : ".") + *key;
+        else
+            text += "[" + std::to_string(std::get<std::size_t>(path[i])) + "]";
+    }
+    return text;
+}
+
 std::string joined(const std::vector<std::string>& names) {
     std::string text;
     for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
@@ -198,6 +90,104 @@ std::string joined(const std::vector<std::string>& names) {
 }
 
 }  // namespace
+
+double rounded_for_hand_work(double value) {
+    const Tolerance grading;  // diff's defaults
+    const double allowed = (grading.atol + grading.rtol * std::abs(value)) * hand_rounding_share;
+    if (!std::isfinite(value)) return value;
+    if (std::abs(value) <= allowed) return 0.0;  // rounding noise around 0 (and −0) is 0
+    for (int digits = 1; digits < 17; ++digits) {
+        char text[40];
+        std::snprintf(text, sizeof text, "%.*g", digits, value);
+        const double shorter = std::strtod(text, nullptr);
+        if (std::abs(shorter - value) <= allowed) return shorter;
+    }
+    return value;
+}
+
+io::json rounded_for_hand_work(const io::json& value) {
+    if (value.is_number_float()) return rounded_for_hand_work(value.get<double>());
+    if (!value.is_array()) return value;
+    io::json out = io::json::array();
+    for (const io::json& v : value) out.push_back(rounded_for_hand_work(v));
+    return out;
+}
+
+Wording word_path(const Trace& trace, const io::json& document, const std::vector<PathToken>& path) {
+    const auto key_is = [&path](std::size_t i, std::string_view key) {
+        const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
+        return k && *k == key;
+    };
+    const auto index = [&path](std::size_t i) -> std::optional<std::size_t> {
+        if (i >= path.size() || !std::holds_alternative<std::size_t>(path[i])) return std::nullopt;
+        return std::get<std::size_t>(path[i]);
+    };
+    Wording w{"", path_text(path, 0), describe_path(document, path).unit};
+    if (key_is(0, "settings") || key_is(0, "scene") || key_is(0, "recording") || key_is(0, "conventions")) {
+        w.place = std::get<std::string>(path[0]);
+        w.quantity = path_text(path, 1);
+        return w;
+    }
+    const std::optional<std::size_t> f = index(1);
+    if (!key_is(0, "frames") || !f || *f >= trace.frames.size()) return w;
+    w.place = "frame " + std::to_string(trace.frames[*f].frame);
+    w.quantity = path_text(path, 2);
+
+    // Inside an item: the step that computes (or first uses) the key, as the worksheet names it.
+    std::optional<Cursor> c;
+    std::size_t rest = 0;
+    if (key_is(2, "contacts") && index(3) && *index(3) < trace.frames[*f].contacts.size()) {
+        c = Cursor{static_cast<int>(*f), Stage::preparation, static_cast<int>(*index(3)), 0};
+        rest = 4;
+    } else if (key_is(2, "phases") && index(3) && key_is(4, "iterations") && index(5)) {
+        const io::json* phase = value_at(document, {path.begin(), path.begin() + 4});
+        const io::json* iteration = value_at(document, {path.begin(), path.begin() + 6});
+        if (phase && iteration && phase->contains("phase"))
+            c = Cursor{static_cast<int>(*f), (*phase)["phase"] == "position" ? Stage::position : Stage::velocity,
+                       static_cast<int>(*index(5)), 0};
+        rest = 6;
+    }
+    if (!c || rest >= path.size()) return w;
+    const ItemKind kind = c->stage == Stage::preparation ? ItemKind::contact
+                          : c->stage == Stage::position  ? ItemKind::position_iteration
+                                                         : ItemKind::velocity_iteration;
+    std::string key;
+    for (std::size_t i = rest; i < path.size(); ++i) {
+        if (const auto* k = std::get_if<std::string>(&path[i])) {
+            if (!key.empty()) key += '.';
+            key += *k;
+        } else if (key == "updates" || key.ends_with(".features")) {
+            key += "[]";
+        }
+    }
+    const std::vector<std::string> order = step_order(trace, *c);
+    const StepKey* step_key = find_step_key(kind, key);
+    const auto at = step_key ? std::find(order.begin(), order.end(), std::string(step_key->step)) : order.end();
+    w.quantity = path_text(path, rest);
+    if (at != order.end()) {
+        c->step = static_cast<int>(at - order.begin());
+        w.place = inspect::describe(trace, *c);
+    } else {
+        // A given of the item (the contact as detected, the iteration's choice): the item without a step.
+        w.place = inspect::describe(trace, *c);
+        const std::string first = order.empty() ? "" : " · " + order.front();
+        if (!first.empty() && w.place.ends_with(first)) w.place.resize(w.place.size() - first.size());
+    }
+    return w;
+}
+
+std::vector<Cursor> places_with_cells(const inspect::Session& session, const std::vector<Cursor>& candidates,
+                                      const io::json* given_document) {
+    const Trace& trace = session.trace();
+    const io::json made = given_document ? io::json() : io::trace_json(trace);
+    const io::json& document = given_document ? *given_document : made;
+    std::vector<Cursor> places;
+    for (const Cursor& c : candidates) {
+        const std::vector<std::string> order = step_order(trace, c);
+        if (!cells_of(item_at(document, c), order[static_cast<std::size_t>(c.step)]).empty()) places.push_back(c);
+    }
+    return places;
+}
 
 std::string scalar_text(const io::json& value) {
     if (value.is_null()) return "";
@@ -207,9 +197,11 @@ std::string scalar_text(const io::json& value) {
     return value.dump();
 }
 
-Worksheet make_worksheet(const inspect::Session& session, const std::vector<Cursor>& places) {
+Worksheet make_worksheet(const inspect::Session& session, const std::vector<Cursor>& places,
+                         const io::json* given_document) {
     const Trace& trace = session.trace();
-    const io::json document = io::trace_json(trace);
+    const io::json made = given_document ? io::json() : io::trace_json(trace);
+    const io::json& document = given_document ? *given_document : made;
     Worksheet sheet;
     sheet.source = session.path();
     sheet.conventions = document["conventions"];
@@ -231,7 +223,7 @@ Worksheet make_worksheet(const inspect::Session& session, const std::vector<Curs
         if (s.cells.empty())
             throw io::InputError("--steps", s.at + ": the step computes nothing to fill in (steps that do here: " +
                                                 joined(steps_with_cells(document, trace, c)) + ")");
-        s.inputs = inputs_of(item, order, static_cast<std::size_t>(c.step), document);
+        s.inputs = inputs_of(item, order, static_cast<std::size_t>(c.step), document, resolved);
         sheet.steps.push_back(std::move(s));
     }
 
@@ -243,6 +235,7 @@ Worksheet make_worksheet(const inspect::Session& session, const std::vector<Curs
         std::set<std::string> listed;
         std::erase_if(s.inputs,
                       [&](const WorksheetEntry& e) { return asked.count(e.path) || !listed.insert(e.path).second; });
+        for (WorksheetEntry& e : s.inputs) e.value = rounded_for_hand_work(e.value);
     }
     return sheet;
 }

@@ -7,6 +7,7 @@
 // Places come from anywhere that can name inspector cursors: `impulse-lab worksheet --steps SPEC` (the
 // inspector's --goto syntax), the first frame by default, or a lesson's places.
 
+#include "coursework/json_path.hpp"
 #include "io/json_values.hpp"
 #include "model/session.hpp"
 
@@ -47,10 +48,20 @@ struct Worksheet {
 
 // The worksheet of `places` (inspector cursors into session.trace()), in the order given, repeats left out.
 // A step's inputs are the item's givens, the settings its steps use up to this one, the values its earlier
-// steps computed, the bodies' mass properties (and, for a contact, their state before the frame), and for an
-// iteration the chosen contact as prepared; an input that is also a cell somewhere on the sheet is not given
-// away. Throws io::InputError("--steps", ...) for a place whose step computes nothing to fill in.
-Worksheet make_worksheet(const inspect::Session& session, const std::vector<inspect::Cursor>& places);
+// steps computed, the bodies' mass properties (and, for a contact, their state before the frame), for an
+// iteration the chosen contact as prepared, and what the step's formula needs from outside the item (the
+// frame's duration and last-frame accelerations, the chosen contact's value as earlier iterations left it, an
+// updated contact's geometry: coursework/worksheet_inputs.cpp), so every cell can be worked out from the sheet;
+// an input that is also a cell somewhere on the sheet is not given away, and inputs are rounded for work by hand.
+// Throws io::InputError("--steps", ...) for a place whose step computes nothing to fill in.
+// `document`, when given, is io::trace_json(session.trace()) made already (a big frame's takes a while).
+Worksheet make_worksheet(const inspect::Session& session, const std::vector<inspect::Cursor>& places,
+                         const io::json* document = nullptr);
+
+// The places among `candidates` whose step computes something to fill in (a lesson's places, for its worksheet).
+std::vector<inspect::Cursor> places_with_cells(const inspect::Session& session,
+                                               const std::vector<inspect::Cursor>& candidates,
+                                               const io::json* document = nullptr);
 
 // Every step with something to fill in, of every item of the first recorded frame; empty when nothing is
 // recorded.
@@ -72,6 +83,25 @@ io::json worksheet_json(const Worksheet& sheet);
 std::string worksheet_csv(const Worksheet& sheet);
 
 inline constexpr std::string_view worksheet_csv_header = "kind,path,step,quantity,value,unit,formula,equation,meaning";
+
+// Inputs are written for work by hand: each number as the shortest decimal within `hand_rounding_share` of
+// what diff tolerates by default (|r − x| ≤ (atol + rtol·|x|) / 1000: 1e-15 + 1e-12·|x|), so 24.000000000000004
+// is given as 24 and 1.1e-16 as 0, while a cell worked out from the rounded inputs still matches the reference
+// (tests/coursework/test_blank_cells.cpp works every cell of every shipped lesson and case out that way).
+inline constexpr double hand_rounding_share = 1e-3;
+double rounded_for_hand_work(double value);
+io::json rounded_for_hand_work(const io::json& value);  // numbers inside arrays too; other values as they are
+
+// How the worksheet names the value at a path of a trace document: the place of the step that computes it
+// (as WorksheetStep::place writes it: "frame 0 · velocity phase · iteration 0 · contact 0 · impulse"; for a
+// given of an item the item alone; "frame 3" elsewhere in a frame; "settings", "scene"), the value's name there
+// (WorksheetEntry::quantity with its components: "impulse_world[1]", "updates[0].after") and its unit.
+struct Wording {
+    std::string place;
+    std::string quantity;
+    std::string unit;
+};
+Wording word_path(const Trace& trace, const io::json& document, const std::vector<PathToken>& path);
 
 // How a scalar is written in a worksheet's or report's CSV: numbers as the shortest text that reads back to
 // the same double, booleans true/false, strings as they are, null empty.

@@ -141,18 +141,19 @@ std::string yes_no(bool value, std::string_view yes, std::string_view no) {
 
 // How a velocity iteration's desired Δv was made. `accumulating`: projected Gauss-Seidel or soft step, whose
 // Δv is the rest of the way to the visit's target (a warm start's: what re-applying the total does);
-// `bias`: the Baumgarte bias is in it (worst-first, sweeps).
-std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bool warm_start, bool bias) {
+// Baumgarte's bias (or soft step's soft push) is a term of the step when the record holds one.
+std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bool warm_start) {
     if (accumulating && warm_start) return "(K λ)_n: the normal change the re-applied total makes";
-    if (accumulating) return "Δv = target − v_s (target: the bounce judged at preparation, + position_bias)";
+    if (accumulating)
+        return d.position_bias ? "Δv = target − v_s (target: the bounce judged at preparation + position_bias)"
+                               : "Δv = target − v_s (target: the bounce judged at preparation)";
     const bool plain = !d.velocity_from_acceleration_applied && !d.restitution_cutoff_applied;
     std::string formula = plain ? "Δv = −(1 + c) v_s" : "Δv = −v_s − c (v_s − v_acc)";
-    if (bias) formula += " + position_bias";
+    if (d.position_bias) formula += " + position_bias";
     return formula;
 }
 
-StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false, bool warm_start = false,
-                        std::optional<double> bias = std::nullopt) {
+StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false, bool warm_start = false) {
     Table t(std::string(words::step::desired_delta_velocity), "desired_delta_velocity — the velocity change the impulse must make");
     t.row("separating_velocity", d.separating_velocity);
     t.row("restitution", d.restitution);
@@ -163,10 +164,10 @@ StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false
     }
     t.row("restitution_used", d.restitution_used);
     if (d.velocity_from_acceleration_applied) t.row("velocity_from_acceleration", d.velocity_from_acceleration);
-    // Baumgarte's term (or soft step's push): the separating speed added to push the bodies apart.
-    if (bias) t.row("position_bias", *bias);
+    // Baumgarte's term (or soft step's soft push): the separating speed added to push the bodies apart.
+    if (d.position_bias) t.row("position_bias", *d.position_bias);
     t.row("desired_delta_velocity", d.desired_delta_velocity, std::nullopt,
-          desired_formula(d, accumulating, warm_start, bias.has_value()));
+          desired_formula(d, accumulating, warm_start));
     // The chapter's v_s' = −c v_s is the book's target; an accumulating solver's is its own.
     if (accumulating) t.equation("");
     return t.done();
@@ -345,7 +346,9 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
 
 std::string sweep_text(const SweepPlace& sweep, const ResolverSettings& settings) {
     std::string text;
-    if (settings.velocity_method == VelocityMethod::soft_step && sweep.stage != SolverStage::restitution)
+    // A method that owns the whole step works in sub-steps (restitution comes once, after them).
+    if (method_row(settings.velocity_method).scope == MethodScope::whole_step &&
+        sweep.stage != SolverStage::restitution)
         text = "sub-step " + std::to_string(sweep.substep) + " · ";
     text += std::string(name_of(solver_stage_names, sweep.stage));
     if (sweep.stage == SolverStage::solve || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::push)
@@ -381,7 +384,7 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         tables.push_back(velocity.done());
         const bool accumulating = it.accumulated.has_value();
         const bool warm_start = it.sweep && it.sweep->stage == SolverStage::warm_start;
-        tables.push_back(desired_table(r->desired_delta_velocity, accumulating, warm_start, r->position_bias));
+        tables.push_back(desired_table(r->desired_delta_velocity, accumulating, warm_start));
         if (const auto& a = it.accumulated) {
             Table total(std::string(words::step::accumulated), "accumulated — the running total, kept within its limits",
                         basis);

@@ -47,7 +47,7 @@ std::string describe_settings(const ResolverSettings& s) {
     std::string text =
         "preset " + s.preset + ": " +
         (s.phase_order == PhaseOrder::positions_first ? "positions then velocities" : "velocities then positions") +
-        ", " + std::string(name_of(position_method_names, s.position_method)) + " (angular limit " +
+        ", " + std::string(name_of(position_method_names, position_method_in_effect(s))) + " (angular limit " +
         std::string(name_of(angular_limit_policy_names, s.angular_limit.policy));
     if (s.angular_limit.policy != AngularLimitPolicy::none) text += " " + number(s.angular_limit.factor);
     text += "), " + std::string(name_of(velocity_method_names, s.velocity_method)) + " velocities, ε " +
@@ -74,7 +74,9 @@ std::string stop_text(const PhaseOutcome& o) {
 }
 
 void write_position_phase(std::ostream& out, const Trace& trace, const FrameRecord& frame) {
-    out << "\n== Position phase: " << name_of(position_method_names, trace.scene.settings.position_method) << " ==\n";
+    // (A velocity method that owns the whole step runs no position method: `none`.)
+    out << "\n== Position phase: " << name_of(position_method_names, position_method_in_effect(trace.scene.settings))
+        << " ==\n";
     for (const PositionIteration& it : frame.position.iterations) {
         out << "\nIteration " << it.iteration << (it.pass ? " (pass " + std::to_string(*it.pass) + ")" : "")
             << " · contact " << it.contact << " is the deepest: penetration " << number(it.penetration) << " m > ε "
@@ -88,8 +90,8 @@ void write_velocity_phase(std::ostream& out, const Trace& trace, const FrameReco
     out << "\n== Velocity phase: " << name_of(velocity_method_names, trace.scene.settings.velocity_method) << " ==\n";
     for (const VelocityIteration& it : frame.velocity.iterations) {
         if (it.sweep)
-            out << "\nIteration " << it.iteration << " · " << sweep_text(*it.sweep, trace.scene.settings) << " visits contact " << it.contact
-                << ": desired Δv " << number(it.desired_delta_velocity) << " m/s\n";
+            out << "\nIteration " << it.iteration << " · " << sweep_text(*it.sweep, trace.scene.settings)
+                << " visits contact " << it.contact << ": desired Δv " << number(it.desired_delta_velocity) << " m/s\n";
         else
             out << "\nIteration " << it.iteration << " · contact " << it.contact
                 << " needs the largest change: desired Δv " << number(it.desired_delta_velocity) << " m/s > ε "

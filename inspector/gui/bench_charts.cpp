@@ -184,39 +184,114 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
     const std::string target = "target " + bench::metric_text(spec, spec.target);
     text(list, {p0.x + 4, target_y - 18}, IM_COL32(90, 90, 90, 255), target);
 
-    // The Pareto front under the points: a thick grey line through them in time order.
+    // Every run's marker where its data puts it, then moved aside (with a thin line back to that place) when
+    // another marker is already there: equal errors are common (two counts both at rest, 0 on the bottom edge).
+    struct Placed {
+        const RunResult* run;
+        std::size_t method;
+        ImVec2 at;      // where the data puts it
+        ImVec2 marker;  // where it is drawn
+    };
+    std::vector<Placed> placed;
+    std::vector<ChartPoint> places;
+    for (std::size_t m = 0; m < run.methods.size(); ++m)
+        for (const RunResult* r : rows) {
+            if (r->method != run.methods[m] || std::isnan(r->accuracy.error)) continue;
+            const ImVec2 at{px(r->time_per_step * 1e3), py(r->accuracy.error)};
+            placed.push_back({r, m, at, at});
+            places.push_back({at.x, at.y});
+        }
+    // A marker is about 12 px across; the bottom edge holds errors of 0, so markers may sit a little below it.
+    const std::vector<ChartPoint> drawn = dodged_markers(places, 15.0f, {p0.x - 2, p0.y - 2}, {p1.x + 2, p1.y + 8});
+    for (std::size_t i = 0; i < placed.size(); ++i) placed[i].marker = {drawn[i].x, drawn[i].y};
+
+    // The Pareto front of the runs that held, under the markers: a thick grey line through them in time order.
     std::vector<bench::TimeError> points;
-    for (const RunResult* r : rows) points.push_back({r->time_per_step * 1e3, r->accuracy.error});
+    for (const Placed& p : placed)
+        points.push_back({p.run->time_per_step * 1e3, p.run->accuracy.error, p.run->accuracy.holds});
     const std::vector<std::size_t> front = bench::pareto_front(points);
     std::vector<ImVec2> front_points;
-    for (const std::size_t i : front) front_points.push_back({px(points[i].time), py(points[i].error)});
+    for (const std::size_t i : front) front_points.push_back(placed[i].marker);
     if (front_points.size() > 1)
         list.AddPolyline(front_points.data(), static_cast<int>(front_points.size()), IM_COL32(150, 150, 150, 140), 0,
                          6.0f);
     for (const ImVec2& p : front_points) list.AddCircle(p, 10.0f, IM_COL32(110, 110, 110, 255), 20, 1.5f);
 
-    // One series per method: a thin line in N order, markers, and N beside each marker.
+    // One series per method: a thin line in N order through its markers.
     for (std::size_t m = 0; m < run.methods.size(); ++m) {
         std::vector<ImVec2> line;
-        for (const RunResult* r : rows) {
-            if (r->method != run.methods[m] || std::isnan(r->accuracy.error)) continue;
-            line.push_back({px(r->time_per_step * 1e3), py(r->accuracy.error)});
-        }
+        for (const Placed& p : placed)
+            if (p.method == m) line.push_back(p.marker);
         if (line.size() > 1)
             list.AddPolyline(line.data(), static_cast<int>(line.size()), (method_colour(m) & 0x00FFFFFF) | 0x90000000,
                              0, 1.5f);
-        std::size_t k = 0;
-        for (const RunResult* r : rows) {
-            if (r->method != run.methods[m] || std::isnan(r->accuracy.error)) continue;
-            const ImVec2 c = line[k++];
-            marker(list, m, c, method_colour(m), r->accuracy.holds);
-            text(list, {c.x + 11, c.y - 4 - 12.0f * static_cast<float>(m % 2)}, method_colour(m), std::to_string(r->n),
-                 14.0f);
+    }
+    // Markers, each with a thin line from its data's place when it had to move, then N beside each in the first
+    // place free of other labels and markers.
+    for (const Placed& p : placed) {
+        if (p.marker.x != p.at.x || p.marker.y != p.at.y) {
+            list.AddLine(p.at, p.marker, (method_colour(p.method) & 0x00FFFFFF) | 0xB0000000, 1.0f);
+            list.AddCircleFilled(p.at, 1.5f, method_colour(p.method), 8);
         }
+        marker(list, p.method, p.marker, method_colour(p.method), p.run->accuracy.holds);
+    }
+    std::vector<ImVec4> taken;  // label boxes (x0, y0, x1, y1)
+    // Each marker's box, a front marker's ring (radius 10) included, so no label sits on either.
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+        const float half = std::find(front.begin(), front.end(), i) != front.end() ? 11.0f : 7.0f;
+        const ImVec2 c = placed[i].marker;
+        taken.push_back({c.x - half, c.y - half, c.x + half, c.y + half});
+    }
+    const auto overlaps = [&taken](const ImVec4& box) {
+        return std::any_of(taken.begin(), taken.end(), [&box](const ImVec4& t) {
+            return box.x < t.z && t.x < box.z && box.y < t.w && t.y < box.w;
+        });
+    };
+    for (const Placed& p : placed) {
+        const std::string label = std::to_string(p.run->n);
+        const float w = text_width(label, 14.0f), h = 14.0f;
+        const ImVec2 c = p.marker;
+        const ImVec2 options[] = {{c.x + 9, c.y - h / 2},      {c.x - 9 - w, c.y - h / 2}, {c.x - w / 2, c.y - 9 - h},
+                                  {c.x - w / 2, c.y + 8},      {c.x + 8, c.y - 6 - h},     {c.x + 8, c.y + 5},
+                                  {c.x - 8 - w, c.y - 6 - h},  {c.x - 8 - w, c.y + 5},     {c.x + 12, c.y - h / 2},
+                                  {c.x - 12 - w, c.y - h / 2}, {c.x + 11, c.y - 9 - h},    {c.x + 11, c.y + 8}};
+        ImVec2 at = options[0];
+        for (const ImVec2& o : options)
+            if (!overlaps({o.x, o.y, o.x + w, o.y + h})) {
+                at = o;
+                break;
+            }
+        taken.push_back({at.x, at.y, at.x + w, at.y + h});
+        text(list, at, method_colour(p.method), label, 14.0f);
     }
 }
 
 }  // namespace
+
+std::vector<ChartPoint> dodged_markers(const std::vector<ChartPoint>& at, float apart, ChartPoint lo, ChartPoint hi) {
+    std::vector<ChartPoint> drawn;
+    const auto free_at = [&](ChartPoint c) {
+        return std::none_of(drawn.begin(), drawn.end(),
+                            [&](const ChartPoint& p) { return std::hypot(p.x - c.x, p.y - c.y) < apart; });
+    };
+    std::vector<ChartPoint> steps;
+    for (int k = 1; k <= 4; ++k)
+        for (const float side : {1.0f, -1.0f}) steps.push_back({side * static_cast<float>(k), 0});
+    for (int k = 1; k <= 3; ++k)
+        for (const ChartPoint d : {ChartPoint{1, -1}, ChartPoint{1, 1}, ChartPoint{-1, -1}, ChartPoint{-1, 1},
+                                   ChartPoint{0, -1}, ChartPoint{0, 1}})
+            steps.push_back({d.x * static_cast<float>(k), d.y * static_cast<float>(k)});
+    for (const ChartPoint& own : at) {
+        ChartPoint place = own;
+        for (const ChartPoint& d : steps) {
+            if (free_at(place)) break;
+            const ChartPoint c{own.x + d.x * apart, own.y + d.y * apart};
+            if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y && free_at(c)) place = c;
+        }
+        drawn.push_back(place);
+    }
+    return drawn;
+}
 
 std::string speed_accuracy_png(const BenchRun& run) {
     const int count = static_cast<int>(run.scenes.size());
@@ -232,10 +307,11 @@ std::string speed_accuracy_png(const BenchRun& run) {
              "Lower left is better.",
              17.0f);
         text(list, {12, 30}, faint,
-             "Numbers beside the markers: the iteration count N. Filled: the run held; hollow: it failed.");
+             "Numbers beside the markers: the iteration count N. Filled: the run held; hollow: it failed. Moved "
+             "aside: a thin line leads back.");
         text(list, {12, 49}, faint,
-             "Grey line and rings: the Pareto front. Dashed: the scene's target. An error of 0 sits on the bottom "
-             "edge.");
+             "Grey line and rings: the Pareto front of the runs that held. Dashed: the scene's target. An error of 0 "
+             "sits on the bottom edge.");
         float at = 12;
         for (std::size_t m = 0; m < run.methods.size(); ++m) {
             marker(list, m, {at + 6, 84}, method_colour(m), true);
@@ -265,7 +341,9 @@ std::string stability_png(const BenchRun& run) {
             counts += (i ? ", " : "") + std::to_string(run.iterations[i]);
         text(list, {12, 8}, ink, "Stability: each method on each stress scene at its largest N (of " + counts + ")",
              17.0f);
-        text(list, {12, 30}, faint, "Green: holds (\"from N = k\": smaller N failed). Red: fails: why, when, metric.");
+        text(list, {12, 30}, faint,
+             "Green: meets the target. Amber: holds but misses the target (by how many times). Red: fails: why, "
+             "when, metric. \"from N = k\": smaller N failed.");
         for (std::size_t i = 0; i < m.methods.size(); ++i)
             text(list, {left + cell_w * static_cast<float>(i) + 8, top - 26}, ink, m.methods[i], 17.0f);
         for (std::size_t j = 0; j < m.scenes.size(); ++j) {
@@ -277,31 +355,39 @@ std::string stability_png(const BenchRun& run) {
             for (std::size_t i = 0; i < m.methods.size(); ++i) {
                 const bench::StabilityCell& cell = m.cells[i][j];
                 const ImVec2 a{left + cell_w * static_cast<float>(i), Y}, b{a.x + cell_w, Y + cell_h};
-                const ImU32 fill = !cell.ran    ? IM_COL32(235, 235, 235, 255)
-                                   : cell.holds ? IM_COL32(198, 236, 198, 255)
-                                                : IM_COL32(248, 196, 196, 255);
-                const ImU32 dark = !cell.ran    ? faint
-                                   : cell.holds ? IM_COL32(20, 110, 20, 255)
-                                                : IM_COL32(170, 20, 20, 255);
+                // Three verdicts, three colours (and their words, for print and colour-blind readers).
+                const ImU32 fill = !cell.ran           ? IM_COL32(235, 235, 235, 255)
+                                   : !cell.holds       ? IM_COL32(248, 196, 196, 255)
+                                   : cell.meets_target ? IM_COL32(198, 236, 198, 255)
+                                                       : IM_COL32(252, 226, 170, 255);
+                const ImU32 dark = !cell.ran           ? faint
+                                   : !cell.holds       ? IM_COL32(170, 20, 20, 255)
+                                   : cell.meets_target ? IM_COL32(20, 110, 20, 255)
+                                                       : IM_COL32(140, 80, 0, 255);
                 list.AddRectFilled({a.x + 2, a.y + 2}, {b.x - 2, b.y - 2}, fill);
                 if (!cell.ran) {
                     text(list, {a.x + 8, a.y + 6}, faint, "not run");
                     continue;
                 }
                 text(list, {a.x + 8, a.y + 5}, dark,
-                     std::string(cell.holds ? "holds" : "fails") + "  (N = " + std::to_string(cell.n) + ")", 16.0f);
-                std::string second;
+                     std::string(bench::verdict_text(cell)) + "  (N = " + std::to_string(cell.n) + ")", 16.0f);
+                std::string second,
+                    third = std::string(bench::metric_name(spec.metric)) + " " + bench::metric_text(spec, cell.error);
                 if (cell.holds) {
-                    second = cell.holds_from ? "from N = " + std::to_string(*cell.holds_from) : "at every N run";
-                    second += cell.error <= spec.target ? ", meets target" : ", misses target";
+                    second =
+                        cell.holds_from ? "held from N = " + std::to_string(*cell.holds_from) : "held at every N run";
+                    if (!cell.meets_target && std::isfinite(cell.error) && spec.target > 0) {
+                        char times[48];
+                        std::snprintf(times, sizeof times, ", %.2g × the target", cell.error / spec.target);
+                        second += times;
+                    }
                 } else {
                     char when[32];
                     std::snprintf(when, sizeof when, " at %.2f s", cell.failure_time.value_or(0.0));
                     second = cell.failure + when;
                 }
                 text(list, {a.x + 8, a.y + 26}, ink, second);
-                text(list, {a.x + 8, a.y + 46}, ink,
-                     std::string(bench::metric_name(spec.metric)) + " " + bench::metric_text(spec, cell.error));
+                text(list, {a.x + 8, a.y + 46}, ink, third);
             }
         }
         text(list, {12, static_cast<float>(height) - 28}, faint,

@@ -44,6 +44,8 @@ public:
         settle_ = settle_frames;
     }
     void quit() override { quit_ = true; }
+    std::ostream* standard_output() override { return standard_output_; }
+    void set_standard_output(std::ostream* out) { standard_output_ = out; }
 
     bool quitting() const { return quit_; }
     bool waiting() const { return pending_.has_value(); }
@@ -62,6 +64,7 @@ private:
     std::optional<std::string> pending_;
     int settle_ = 0;
     bool quit_ = false;
+    std::ostream* standard_output_ = nullptr;
 };
 
 double percentile(std::vector<double> sorted, double p) {
@@ -103,8 +106,10 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
         for (const inspect::Action& a : run.script)
             if (a.kind == inspect::ActionKind::screenshot || a.kind == inspect::ActionKind::export_trace ||
                 a.kind == inspect::ActionKind::export_table)
-                io::check_writable(a.argument, run.script_name + ": line " + std::to_string(a.line));
-        if (run.screenshot) io::check_writable(*run.screenshot, "--screenshot");
+                if (!(run.standard_output && a.argument == "-"))
+                    io::check_writable(a.argument, run.script_name + ": line " + std::to_string(a.line));
+        if (run.screenshot && !(run.standard_output && *run.screenshot == "-"))
+            io::check_writable(*run.screenshot, "--screenshot");
     } catch (const io::InputError& e) {
         err << "impulse-lab: " << e.what() << '\n';
         return 2;
@@ -129,6 +134,8 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
     if (session.broken_run()) {
         state.message = "the run stopped at " + inspect::broken_run_text(session.trace().scene, *session.broken_run());
         state.message_is_error = true;
+    } else if (const auto note = session.recording_note()) {
+        state.message = *note;  // which frames there are to step through
     }
     if (run.lesson) {
         // Back where the student left off, with the answers they gave shown again.
@@ -138,6 +145,7 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
         refresh_mask(session, state);
     }
     Host host(session, state);
+    host.set_standard_output(run.standard_output);
     Pixels pixels;
     // ImGui settles a layout over a couple of frames after any input, so a window only idles after a few.
     int busy_frames = 3;
@@ -150,7 +158,11 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
         if (capture) {
             const std::string path = host.take();
             try {
-                io::write_file_atomically(path, encode_png(pixels), path);
+                const std::string png = encode_png(pixels);
+                if (run.standard_output && path == "-")
+                    run.standard_output->write(png.data(), static_cast<std::streamsize>(png.size())).flush();
+                else
+                    io::write_file_atomically(path, png, path);
             } catch (const std::exception& e) {
                 // A script's or --screenshot's failure ends the run; the window's button reports it and goes on.
                 if (close_when_done || !queue.empty()) {
@@ -173,6 +185,12 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
             action.line > 0 ? run.script_name + ": line " + std::to_string(action.line) : std::string("--screenshot");
         try {
             inspect::perform(session, action, where, &host);
+            // A re-run says what it gave, in the window and (for a script) on the terminal when the recording
+            // was cut short: the frames a later goto can reach.
+            if (action.kind == inspect::ActionKind::set) {
+                state.message = inspect::rerun_text(session, action.argument, &state.message_is_error);
+                if (session.recording_note()) err << "impulse-lab: note: " << where << ": " << state.message << '\n';
+            }
         } catch (const io::InputError& e) {
             err << "impulse-lab: " << e.what() << '\n';
             return 2;

@@ -22,6 +22,7 @@ struct InspectorRun {
     std::string script_name;                // for errors: "steps.txt"
     std::vector<inspect::Action> script;    // run first, in order
     std::optional<std::string> screenshot;  // taken after the script; then the inspector closes
+    std::ostream* standard_output = nullptr;  // where an output named "-" goes (cli/outputs.hpp)
     std::optional<int> bench_frames;        // then render this many frames, one step apart, and print times
     double load_seconds = 0.0;              // how long opening the file took, for the benchmark's report
     // A lesson shown beside the inspector (its session is the one inspected), and where progress is saved.

@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 namespace impulse::gui {
@@ -47,6 +48,43 @@ void integer_field(inspect::Session& session, UiState& state, inspect::ActionHos
         set(session, state, host, name, std::to_string(value));
 }
 
+void bool_field(inspect::Session& session, UiState& state, inspect::ActionHost& host, const char* label,
+                const std::string& name, bool current) {
+    bool value = current;
+    if (ImGui::Checkbox(label, &value)) set(session, state, host, name, value ? "true" : "false");
+}
+
+// The widget of each setting a method may read (methods/method_table.hpp lists which), in the order shown.
+void method_setting(inspect::Session& session, UiState& state, inspect::ActionHost& host, std::string_view key,
+                    const ResolverSettings& s) {
+    const std::string name(key);
+    if (key == "position_epsilon") number_field(session, state, host, "position ε (m)", name, s.position_epsilon);
+    if (key == "velocity_epsilon") number_field(session, state, host, "velocity ε (m/s)", name, s.velocity_epsilon);
+    if (key == "iterations_per_contact")
+        integer_field(session, state, host, "iterations/contact", name, s.iterations.per_contact);
+    if (key == "worst_first_search")
+        enum_combo(session, state, host, "worst-first search", name, worst_first_search_names, s.worst_first_search);
+    if (key == "sliding_friction")
+        enum_combo(session, state, host, "sliding friction", name, sliding_friction_names, s.sliding_friction);
+    if (key == "angular_limit.policy")
+        enum_combo(session, state, host, "angular limit", name, angular_limit_policy_names, s.angular_limit.policy);
+    if (key == "angular_limit.factor") number_field(session, state, host, "limit factor", name, s.angular_limit.factor);
+    if (key == "relaxation.fraction")
+        number_field(session, state, host, "relaxation fraction", name, s.relaxation.fraction);
+    if (key == "relaxation.passes") integer_field(session, state, host, "relaxation passes", name, s.relaxation.passes);
+    if (key == "sweeps") integer_field(session, state, host, "sweeps", name, s.sweeps);
+    if (key == "warm_start") bool_field(session, state, host, "warm start", name, s.warm_start);
+    if (key == "soft_step.substeps") integer_field(session, state, host, "sub-steps", name, s.soft_step.substeps);
+    if (key == "soft_step.contact_hertz")
+        number_field(session, state, host, "contact hertz", name, s.soft_step.contact_hertz);
+    if (key == "soft_step.damping_ratio")
+        number_field(session, state, host, "damping ratio", name, s.soft_step.damping_ratio);
+    if (key == "baumgarte") bool_field(session, state, host, "Baumgarte bias (step 5)", name, s.baumgarte);
+    if (key == "position_bias.factor")
+        number_field(session, state, host, "bias factor β", name, s.position_bias.factor);
+    if (key == "position_bias.slop") number_field(session, state, host, "slop (m)", name, s.position_bias.slop);
+}
+
 }  // namespace
 
 void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHost& host) {
@@ -59,39 +97,42 @@ void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHos
         ImGui::EndCombo();
     }
     enum_combo(session, state, host, "phase order", "phase_order", phase_order_names, s.phase_order);
-    enum_combo(session, state, host, "position method", "position_method", position_method_names, s.position_method);
     enum_combo(session, state, host, "velocity method", "velocity_method", velocity_method_names, s.velocity_method);
-    enum_combo(session, state, host, "angular limit", "angular_limit.policy", angular_limit_policy_names,
-               s.angular_limit.policy);
-    number_field(session, state, host, "limit factor", "angular_limit.factor", s.angular_limit.factor);
-    number_field(session, state, host, "position ε (m)", "position_epsilon", s.position_epsilon);
-    number_field(session, state, host, "velocity ε (m/s)", "velocity_epsilon", s.velocity_epsilon);
-    // Each method's own knobs, shown only where they apply.
-    const VelocityMethod v = s.velocity_method;
-    if (v == VelocityMethod::worst_first) {
-        integer_field(session, state, host, "iterations/contact", "iterations_per_contact", s.iterations.per_contact);
-        enum_combo(session, state, host, "worst-first search", "worst_first_search", worst_first_search_names,
-                   s.worst_first_search);
-    } else if (v == VelocityMethod::soft_step) {
-        integer_field(session, state, host, "sub-steps", "soft_step.substeps", s.soft_step.substeps);
-        number_field(session, state, host, "contact hertz", "soft_step.contact_hertz", s.soft_step.contact_hertz);
-        number_field(session, state, host, "damping ratio", "soft_step.damping_ratio", s.soft_step.damping_ratio);
-    }
-    if (v != VelocityMethod::worst_first || s.position_method == PositionMethod::split_impulse)
-        integer_field(session, state, host, "sweeps", "sweeps", s.sweeps);
-    if (v == VelocityMethod::projected_gauss_seidel || v == VelocityMethod::soft_step) {
-        bool warm = s.warm_start;
-        if (ImGui::Checkbox("warm start", &warm)) set(session, state, host, "warm_start", warm ? "true" : "false");
-    }
-    const bool biased =
-        s.position_method == PositionMethod::baumgarte || s.position_method == PositionMethod::split_impulse;
-    if (biased && v != VelocityMethod::soft_step) {  // the soft contact carries its own push
-        number_field(session, state, host, "bias factor β", "position_bias.factor", s.position_bias.factor);
-        number_field(session, state, host, "slop (m)", "position_bias.slop", s.position_bias.slop);
-    }
-    if (s.position_method == PositionMethod::relaxation) {
-        number_field(session, state, host, "relaxation fraction", "relaxation.fraction", s.relaxation.fraction);
-        integer_field(session, state, host, "relaxation passes", "relaxation.passes", s.relaxation.passes);
+    // A velocity method that owns the whole step runs no position phase: the choice is kept but not used.
+    const bool owns_step = method_row(s.velocity_method).scope == MethodScope::whole_step;
+    if (owns_step) ImGui::BeginDisabled();
+    enum_combo(session, state, host, "position method", "position_method", position_method_names, s.position_method);
+    if (owns_step) ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", std::string(method_row(position_method_in_effect(s)).description).c_str());
+    // Each method's own settings, shown only where the methods that run read them; the Baumgarte bias's
+    // factor and slop only when it is on (or the split impulse pushes with them).
+    constexpr std::string_view shown[] = {"position_epsilon",
+                                          "velocity_epsilon",
+                                          "iterations_per_contact",
+                                          "worst_first_search",
+                                          "sliding_friction",
+                                          "angular_limit.policy",
+                                          "angular_limit.factor",
+                                          "relaxation.fraction",
+                                          "relaxation.passes",
+                                          "sweeps",
+                                          "warm_start",
+                                          "soft_step.substeps",
+                                          "soft_step.contact_hertz",
+                                          "soft_step.damping_ratio",
+                                          "baumgarte",
+                                          "position_bias.factor",
+                                          "position_bias.slop"};
+    // The bias's factor and slop matter to a velocity method only through step 5's Baumgarte term: shown when it
+    // is on, or when the position method pushes with them.
+    const auto& position_reads = method_row(position_method_in_effect(s)).reads;
+    const bool position_biased =
+        std::find(position_reads.begin(), position_reads.end(), "position_bias.factor") != position_reads.end();
+    for (const std::string_view key : shown) {
+        if (!reads_setting(s, key)) continue;
+        if (key.starts_with("position_bias.") && !s.baumgarte && !position_biased) continue;
+        method_setting(session, state, host, key, s);
     }
     number_field(session, state, host, "restitution cut-off", "restitution_cutoff", s.refinements.restitution_cutoff);
     bool from_acceleration = s.refinements.velocity_from_acceleration;

@@ -77,12 +77,8 @@ void act(inspect::Session& session, UiState& state, const inspect::Action& actio
         if (action.kind == inspect::ActionKind::export_trace || action.kind == inspect::ActionKind::export_table ||
             action.kind == inspect::ActionKind::screenshot)
             state.message = "written to " + action.argument, state.message_is_error = false;
-        else if (action.kind == inspect::ActionKind::set && session.broken_run())
-            state.message = "re-ran with " + action.argument + ": the run stopped at " +
-                            inspect::broken_run_text(session.trace().scene, *session.broken_run()),
-            state.message_is_error = true;
         else if (action.kind == inspect::ActionKind::set)
-            state.message = "re-ran with " + action.argument, state.message_is_error = false;
+            state.message = inspect::rerun_text(session, action.argument, &state.message_is_error);
         else
             state.message.clear();
     } catch (const io::InputError& e) {

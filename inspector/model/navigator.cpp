@@ -4,6 +4,8 @@
 
 #include "explain/format.hpp"
 #include "io/input_error.hpp"
+#include "io/suggest.hpp"
+#include "methods/method_table.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -70,10 +72,12 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
 }
 
 // A position iteration's pass, as the choice table words it.
-std::string pass_text(const PositionIteration& it) {
+std::string pass_text(const PositionIteration& it, const ResolverSettings& settings) {
     if (!it.pass) return "";
-    const bool pushes = it.resolution && it.resolution->method == PositionMethod::split_impulse;
-    return (pushes ? " (push sweep " : " (relaxation pass ") + std::to_string(*it.pass) + ")";
+    // The method's word for a pass (methods/method_table.hpp), from the record or, filtered out, the settings.
+    const std::string_view name =
+        method_row(it.resolution ? it.resolution->method : position_method_in_effect(settings)).pass_name;
+    return " (" + std::string(name.empty() ? "pass" : name) + " " + std::to_string(*it.pass) + ")";
 }
 
 int steps_in(const Trace& trace, const Cursor& c) {
@@ -233,7 +237,7 @@ std::vector<StepTable> step_tables(const Trace& trace, const Cursor& c) {
     if (c.stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[item];
         tables.push_back(choice_table("penetration", it.iteration, it.contact, it.penetration, it.epsilon, "m",
-                                      pass_text(it), std::nullopt, trace.scene.settings));
+                                      pass_text(it, trace.scene.settings), std::nullopt, trace.scene.settings));
         for (StepTable& t : explain::position_iteration_tables(it, basis)) tables.push_back(std::move(t));
     } else {
         const VelocityIteration& it = frame.velocity.iterations[item];
@@ -347,6 +351,10 @@ GotoSpec parse_goto(std::string_view text, std::string_view where) {
         } else if (name == "step") {
             if (value.empty()) throw io::InputError(std::string(where), "step needs a name, e.g. step=impulse");
             spec.step = std::string(value);
+            // A step's name from before trace format 2 (velocity_per_unit_impulse, accumulated_impulse) reads as
+            // today's (docs/trace-format.md).
+            for (const words::StepRename& r : words::step_renames())
+                if (*spec.step == r.old_name) spec.step = std::string(r.new_name);
         } else
             throw io::InputError(std::string(where), "unknown part \"" + std::string(name) +
                                                          "\" (parts: frame, phase, iteration, contact, step)");
@@ -354,8 +362,10 @@ GotoSpec parse_goto(std::string_view text, std::string_view where) {
     return spec;
 }
 
-Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view where) {
-    const std::string at(where);
+namespace {
+
+// Where a place points before its step: the frame, the stage and the item. Throws io::InputError(at, ...).
+Cursor place_of(const Trace& trace, const GotoSpec& spec, const std::string& at) {
     if (!first_cursor(trace)) throw io::InputError(at, "the trace records nothing to step through");
     int f = first_cursor(trace)->frame;
     if (spec.frame) {
@@ -417,28 +427,84 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
             cursor.item = i;
         }
     }
-    if (spec.step) {
-        const std::vector<StepTable> tables = step_tables(trace, cursor);
-        // A step's name from before format 2 (velocity_per_unit_impulse, accumulated_impulse) is read as today's.
-        std::string wanted = *spec.step;
-        for (const words::StepRename& r : words::step_renames())
-            if (wanted == r.old_name) wanted = std::string(r.new_name);
-        // A step's own name first; else the first table that shows the quantity.
-        std::optional<int> found;
-        for (std::size_t i = 0; i < tables.size() && !found; ++i)
-            if (tables[i].step == wanted) found = static_cast<int>(i);
-        for (std::size_t i = 0; i < tables.size() && !found; ++i)
-            for (const Row& r : tables[i].rows)
-                if (!found && (r.quantity == wanted || r.quantity.rfind(wanted + "[", 0) == 0))
-                    found = static_cast<int>(i);
-        if (!found) {
-            std::string names;
-            for (const StepTable& t : tables) names += (names.empty() ? "" : ", ") + t.step;
-            throw io::InputError(at, "no step or quantity \"" + *spec.step + "\" here (steps: " + names + ")");
-        }
-        cursor.step = *found;
-    }
     return cursor;
+}
+
+// The step of `tables` named `name`: a step's own name first, else the first table that shows the quantity.
+std::optional<int> step_named(const std::vector<StepTable>& tables, const std::string& name) {
+    for (std::size_t i = 0; i < tables.size(); ++i)
+        if (tables[i].step == name) return static_cast<int>(i);
+    for (std::size_t i = 0; i < tables.size(); ++i)
+        for (const Row& r : tables[i].rows)
+            if (r.quantity == name || r.quantity.rfind(name + "[", 0) == 0) return static_cast<int>(i);
+    return std::nullopt;
+}
+
+// "the preparation", "the position phase".
+std::string stage_phrase(Stage stage) {
+    return stage == Stage::preparation ? "the preparation" : "the " + std::string(stage_name(stage)) + " phase";
+}
+
+}  // namespace
+
+Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view where) {
+    const std::string at(where);
+    Cursor cursor = place_of(trace, spec, at);
+    if (!spec.step) return cursor;
+    const std::vector<StepTable> tables = step_tables(trace, cursor);
+    if (const std::optional<int> found = step_named(tables, *spec.step)) {
+        cursor.step = *found;
+        return cursor;
+    }
+    // Not in this stage. The same place in the frame's other stages: without a phase named, the first that shows
+    // the step is meant (as for an iteration); with one, the error says where the step is.
+    std::vector<std::pair<Cursor, std::vector<StepTable>>> elsewhere;
+    for (const Stage stage : stages(trace.frames[static_cast<std::size_t>(cursor.frame)])) {
+        if (stage == cursor.stage) continue;
+        GotoSpec there = spec;
+        there.stage = stage;
+        try {
+            const Cursor other = place_of(trace, there, at);
+            elsewhere.emplace_back(other, step_tables(trace, other));
+        } catch (const io::InputError&) {
+            // this stage has no such place (e.g. no iteration chose the contact)
+        }
+    }
+    for (auto& [other, other_tables] : elsewhere)
+        if (const std::optional<int> found = step_named(other_tables, *spec.step)) {
+            if (spec.stage)
+                throw io::InputError(at, "no step or quantity \"" + *spec.step + "\" in " + stage_phrase(cursor.stage) +
+                                             "; it is in " + stage_phrase(other.stage) +
+                                             " (phase=" + std::string(stage_name(other.stage)) + ")");
+            other.step = *found;
+            return other;
+        }
+    // Misspelt: the nearest name of a step or a quantity anywhere in the frame, and the stage it is in.
+    std::vector<std::string> names;
+    std::vector<Stage> stage_of;
+    const auto collect = [&](Stage stage, const std::vector<StepTable>& in) {
+        for (const StepTable& t : in) {
+            names.push_back(t.step), stage_of.push_back(stage);
+            for (const Row& r : t.rows)
+                names.push_back(r.quantity.substr(0, r.quantity.find('['))), stage_of.push_back(stage);
+        }
+    };
+    collect(cursor.stage, tables);
+    for (const auto& [other, other_tables] : elsewhere) collect(other.stage, other_tables);
+    std::string steps;
+    for (const StepTable& t : tables) steps += (steps.empty() ? "" : ", ") + t.step;
+    std::string problem =
+        "no step or quantity \"" + *spec.step + "\" in " + stage_phrase(cursor.stage) + " (its steps: " + steps + ")";
+    if (const std::optional<std::string> meant = io::closest_name(*spec.step, names)) {
+        const Stage stage =
+            stage_of[static_cast<std::size_t>(std::find(names.begin(), names.end(), *meant) - names.begin())];
+        problem += "; did you mean \"" + *meant + "\"" +
+                   (stage == cursor.stage
+                        ? std::string()
+                        : ", in " + stage_phrase(stage) + " (phase=" + std::string(stage_name(stage)) + ")") +
+                   "?";
+    }
+    throw io::InputError(at, problem);
 }
 
 Location location_of(const Trace& trace, const Cursor& c) {

@@ -71,6 +71,10 @@ Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, T
             if (broken) *broken = BrokenRun{frame, *report.non_finite};
             break;
         }
+        if (budget.stop_run && recorder.stopped_at()) {
+            trace.scene.world.frames = *recorder.stopped_at();
+            break;
+        }
     }
     if (budget.stopped_at) *budget.stopped_at = recorder.stopped_at();
     return trace;

@@ -13,10 +13,12 @@
 namespace impulse::inspect {
 
 // How much trace a run may record (--max-trace-mb): past the budget recording stops at the last complete frame
-// and `stopped_at`, if given, receives the frame it stopped at (the run itself goes on).
+// and `stopped_at`, if given, receives the frame it stopped at. The run itself goes on (`run` writes every
+// frame's states), unless `stop_run`: the inspector shows only what it recorded, so it stops simulating there.
 struct TraceBudget {
     std::size_t bytes = SIZE_MAX;
     std::optional<int>* stopped_at = nullptr;
+    bool stop_run = false;
 };
 
 // A run that stopped because a frame left a body's state non-finite. The trace ends with the frame before it
@@ -37,6 +39,8 @@ Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget
 
 // `frames` frames of the world step (integrate, detect, resolve), recording those the filter names. A frame
 // that leaves a body non-finite ends the run: `broken` (if given) receives it, and the trace ends before it.
+// With budget.stop_run, the run also ends at the frame the recording could not keep; the header's frame count
+// (trace.scene.world.frames) is then the frames before it, which is what re-running it needs.
 Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, TraceBudget budget = {},
                  std::optional<BrokenRun>* broken = nullptr);
 

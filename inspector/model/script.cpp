@@ -141,6 +141,15 @@ std::vector<Action> parse_script(std::string_view text) {
     return actions;
 }
 
+std::string rerun_text(const Session& session, std::string_view assignment, bool* is_error) {
+    std::string text = "re-ran with " + std::string(assignment);
+    if (is_error) *is_error = session.broken_run().has_value();
+    if (session.broken_run())
+        return text + ": the run stopped at " + broken_run_text(session.trace().scene, *session.broken_run());
+    if (const auto note = session.recording_note()) return text + ": " + *note;
+    return text;
+}
+
 std::string exported_trace(const Session& session) {
     return io::format_json(io::trace_json(session.trace()));
 }
@@ -181,18 +190,29 @@ void perform(Session& session, const Action& action, std::string_view where, Act
             session.set(action.argument, at);
             return;
         case ActionKind::export_trace:
-            io::write_file_atomically(action.argument, exported_trace(session), at);
+        case ActionKind::export_table: {
+            const std::string text =
+                action.kind == ActionKind::export_trace ? exported_trace(session) : exported_table(session);
+            if (action.argument != "-") {
+                io::write_file_atomically(action.argument, text, at);
+                return;
+            }
+            // "-": the command's standard output (cli/outputs.hpp).
+            std::ostream* out = host ? host->standard_output() : nullptr;
+            if (!out) throw io::InputError(at, "standard output (\"-\") is not available here; name a file");
+            out->write(text.data(), static_cast<std::streamsize>(text.size())).flush();
             return;
-        case ActionKind::export_table:
-            io::write_file_atomically(action.argument, exported_table(session), at);
-            return;
+        }
         case ActionKind::screenshot:
         case ActionKind::view:
         case ActionKind::lesson_step:
         case ActionKind::quit:
             if (!host) throw io::InputError(at, "only the inspector's window or --headless renderer can do this");
             if (action.kind == ActionKind::screenshot) {
-                io::check_writable(action.argument, at);  // the picture is taken a few frames later
+                // The picture is taken a few frames later; "-" is standard output.
+                if (action.argument == "-" && !host->standard_output())
+                    throw io::InputError(at, "standard output (\"-\") is not available here; name a file");
+                if (action.argument != "-") io::check_writable(action.argument, at);
                 host->screenshot(action.argument);
             } else if (action.kind == ActionKind::view)
                 host->view(action.argument);

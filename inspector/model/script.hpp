@@ -12,6 +12,7 @@
 
 #include "model/session.hpp"
 
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -61,11 +62,18 @@ public:
     virtual void view(const std::string& plane) = 0;  // front, top, side or 3d
     virtual void lesson_step(int step) = 0;           // from 0; throws io::InputError when there is none
     virtual void quit() = 0;
+    // Where an export or screenshot named "-" goes (the command's standard output), or null when nowhere.
+    virtual std::ostream* standard_output() { return nullptr; }
 };
 
 // Carries out one action. A move that would leave the trace, a bad goto or setting, or an unwritable file
 // throws io::InputError(where, ...) and changes nothing.
 void perform(Session& session, const Action& action, std::string_view where, ActionHost* host);
+
+// What a re-run with `assignment` ("restitution_cutoff=0") gave, for the window's status line and a script's
+// terminal: "re-ran with …", then where the run stopped if a body became non-finite, or which frames it recorded
+// if the trace budget cut the recording short. Whether it is an error (the run broke) goes in `is_error`.
+std::string rerun_text(const Session& session, std::string_view assignment, bool* is_error = nullptr);
 
 // The file an export writes: the trace as JSON, or the derivation table at the cursor as CSV.
 std::string exported_trace(const Session& session);

@@ -9,6 +9,7 @@
 #include "model/runs.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace impulse::inspect {
 
@@ -21,11 +22,15 @@ bool is_trace(const nlohmann::ordered_json& document) {
 }  // namespace
 
 Session Session::open(const std::string& path, const OpenOptions& options) {
+    return open_text(cli::read_input_file(path), path, options);
+}
+
+Session Session::open_text(const std::string& text, const std::string& path, const OpenOptions& options) {
     Session s;
-    s.path_ = path;
+    s.path_ = cli::input_name(path);
     nlohmann::ordered_json document;
     try {
-        document = io::parse_json_text(cli::read_input_file(path));
+        document = io::parse_json_text(text);
         if (is_trace(document)) {
             s.kind_ = SourceKind::trace_file;
             s.trace_ = io::read_trace(document);
@@ -34,7 +39,7 @@ Session Session::open(const std::string& path, const OpenOptions& options) {
             s.kind_ = s.scene_.contacts.empty() ? SourceKind::scene_file : SourceKind::case_file;
         }
     } catch (const io::InputError& e) {
-        throw cli::FileError{path, e.where(), e.problem()};
+        throw cli::FileError{s.path_, e.where(), e.problem()};
     }
     document = {};
 
@@ -78,10 +83,27 @@ Session Session::from_trace(Trace trace, SourceKind kind, std::string path) {
 }
 
 void Session::rerun() {
-    const TraceBudget budget{trace_budget_, &recording_stopped_at_};
+    const TraceBudget budget{trace_budget_, &recording_stopped_at_, true};
     broken_run_.reset();
     trace_ = resolve_ ? resolve_once(scene_, recording_, budget, &broken_run_)
                       : run_frames(scene_, recording_, frames_, budget, &broken_run_);
+}
+
+std::optional<std::string> Session::recording_note() const {
+    if (!recording_stopped_at_) return std::nullopt;
+    const auto range = [](int first, int last) {
+        return first == last ? std::to_string(first) : std::to_string(first) + ".." + std::to_string(last);
+    };
+    const int last_asked = resolve_ ? 0 : std::min(recording_.last_frame, frames_ - 1);
+    const int first_asked = std::min(recording_.first_frame, last_asked);
+    const std::string recorded = trace_.frames.empty() ? "no frame"
+                                 : trace_.frames.size() == 1
+                                     ? "frame " + std::to_string(trace_.frames.front().frame)
+                                     : "frames " + range(trace_.frames.front().frame, trace_.frames.back().frame);
+    char budget[32];
+    std::snprintf(budget, sizeof budget, "%g", static_cast<double>(trace_budget_) / 1e6);
+    return "recorded " + recorded + " of " + range(first_asked, last_asked) + " (the trace reached --max-trace-mb " +
+           budget + " at frame " + std::to_string(*recording_stopped_at_) + ")";
 }
 
 void Session::set(std::string_view assignment, std::string_view where) {

@@ -56,6 +56,8 @@ public:
     // Reads, checks and runs the file. Throws cli::FileError for a bad file and io::InputError for a bad
     // flag, before anything is shown.
     static Session open(const std::string& path, const OpenOptions& options);
+    // The same for a file already read (standard input, or a file a caller looked into first); `path` names it.
+    static Session open_text(const std::string& text, const std::string& path, const OpenOptions& options);
     // A session over a trace already in memory (tests, lessons).
     static Session from_trace(Trace trace, SourceKind kind, std::string path);
 
@@ -73,8 +75,13 @@ public:
     int revision() const { return revision_; }
     // The settings as run (the trace's header).
     const ResolverSettings& settings() const { return trace_.scene.settings; }
-    // The frame at which the last run's recording reached --max-trace-mb and stopped, if it did.
+    // The frame at which the last run's recording reached --max-trace-mb and stopped, if it did. A scene's run
+    // stops there too: the inspector shows what it recorded, so every frame it runs is a frame it shows.
     std::optional<int> recording_stopped_at() const { return recording_stopped_at_; }
+    // Which frames the last run recorded when the budget cut it short, for the window's status line after every
+    // (re-)run and the terminal: "recorded frames 0..6 of 0..59 (the trace reached --max-trace-mb 200 at frame
+    // 7)". None when it recorded every frame asked for.
+    std::optional<std::string> recording_note() const;
     // Where the last run stopped because a body's state became NaN or infinite, if it did: the trace ends
     // before that frame.
     const std::optional<BrokenRun>& broken_run() const { return broken_run_; }

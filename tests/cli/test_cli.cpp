@@ -73,11 +73,11 @@ TEST_CASE("every shipped case validates") {
     CHECK(count_of(r.out, ": valid case (") == args.size() - 1);
 }
 
-TEST_CASE("validate checks every file and fails if any is invalid") {
+TEST_CASE("validate checks every file and gives the verdict invalid (1) if any is") {
     TempDir dir;
     const std::string bad = dir.write("bad.json", R"({"bodies": [], "contacts": []})").string();
     const CliResult r = run_cli({"validate", cases + "ruler.json", bad});
-    CHECK(r.code == 2);
+    CHECK(r.code == impulse::cli::exit_verdict);
     CHECK(r.out == cases + "ruler.json: valid case (1 body, 1 contact)\n");
     CHECK(r.err == "impulse-lab: " + bad + ": bodies: must have at least 1 item, got 0\n");
 }
@@ -96,6 +96,36 @@ TEST_CASE("--version and --help answer with exit code 0") {
     CHECK(validate_help.code == 0);
 }
 
+TEST_CASE("impulse-lab help [COMMAND] prints the program's or the command's help") {
+    const CliResult all = run_cli({"help"});
+    CHECK(all.code == 0);
+    for (const char* command : {"resolve", "run", "inspect", "lesson", "validate", "worksheet", "diff", "bench"})
+        CHECK_MESSAGE(all.out.find(std::string("\n  ") + command + " ") != std::string::npos, command);
+    CHECK(all.out.find("Exit codes: 0 done; 1 a verdict;") != std::string::npos);
+    const CliResult run = run_cli({"help", "run"});
+    CHECK(run.code == 0);
+    CHECK(run.out.find("Usage: impulse-lab run [OPTIONS] SCENE") != std::string::npos);
+    CHECK(run.out == run_cli({"run", "--help"}).out);
+    const CliResult unknown = run_cli({"help", "rnu"});
+    CHECK(unknown.code == 2);
+    CHECK(unknown.err.rfind("impulse-lab: unknown command \"rnu\" (did you mean run?)", 0) == 0);
+}
+
+TEST_CASE("the help says every value in words, never in CLI11's type names") {
+    // Regression: the help showed "--frames INT:INT in 1 to 10000000", "--dt FLOAT:NUMBER in 1e-06 to 10" and
+    // "--preset TEXT:{book,...}".
+    const CliResult all = run_cli({"--help-all"});
+    CHECK(all.code == 0);
+    for (const std::string jargon : {"INT:", " INT ", "FLOAT", "TEXT", ":{", "REQUIRED"})
+        CHECK_MESSAGE(all.out.find(jargon) == std::string::npos, jargon);
+    CHECK(all.out.find("--frames N                  Frames to simulate (default: the scene's settings.frames, 600); "
+                       "a whole number from 1 to 10000000") != std::string::npos);
+    CHECK(all.out.find("--preset PRESET") != std::string::npos);
+    CHECK(all.out.find("one of book, chapter, sweep, pgs, pgs_split, soft_step") != std::string::npos);
+    for (const std::string command : {"resolve", "run", "inspect", "lesson", "validate", "worksheet", "diff", "bench"})
+        CHECK_MESSAGE(all.out.find("\nimpulse-lab " + command) != std::string::npos, command);
+}
+
 TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
     struct BadFlag {
         std::vector<std::string> args;
@@ -105,10 +135,15 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
     const std::string ruler = cases + "ruler.json";
     const std::string trace = dir.file("t.json").string();
     const std::vector<BadFlag> table{
-        {{"resolve", ruler, "--preset", "fast"}, "impulse-lab: --preset: fast not in {book,chapter,sweep,pgs,pgs_split,soft_step}"},
+        {{"resolve", ruler, "--preset", "fast"},
+         "impulse-lab: --preset: must be one of book, chapter, sweep, pgs, pgs_split, soft_step, got \"fast\"; see "
+         "impulse-lab resolve --help"},
+        {{"resolve", ruler, "--preset", "bok"},
+         "impulse-lab: --preset: must be one of book, chapter, sweep, pgs, "
+         "pgs_split, soft_step, got \"bok\" (did you mean book?)"},
         {{"resolve", ruler, "--set", "position_method=teleport"},
          "impulse-lab: --set position_method: must be one of \"linear_projection\", \"nonlinear_projection\", "
-         "\"velocity_based\", \"relaxation\", \"baumgarte\", \"split_impulse\"; got \"teleport\""},
+         "\"velocity_based\", \"relaxation\", \"split_impulse\", \"none\"; got \"teleport\""},
         {{"resolve", ruler, "--set", "angular_limit.factor=-1"},
          "impulse-lab: --set angular_limit.factor: must be >= 0, got -1"},
         {{"resolve", ruler, "--set", "position_epsilon"},
@@ -124,11 +159,19 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
         {{"resolve", ruler, "--trace", dir.file("no/such/dir/t.json").string()},
          "impulse-lab: --trace: cannot write '" + dir.file("no/such/dir/t.json").string() +
              "': No such file or directory"},
-        {{"resolve", ruler, "--explian"}, "impulse-lab: The following argument was not expected: --explian"},
+        {{"resolve", ruler, "--explian"},
+         "impulse-lab: --explian: unknown flag of resolve (did you mean --explain?); see impulse-lab resolve --help"},
+        {{"resolve", ruler, "--states", "s.csv"},
+         "impulse-lab: --states: unknown flag of resolve (--states is a flag of run); see impulse-lab resolve --help"},
+        {{"resolve", ruler, "extra"},
+         "impulse-lab: resolve: unexpected argument: extra; see impulse-lab resolve --help"},
         {{"resolve"}, "impulse-lab: CASE is required"},
         {{"frobnicate"},
-         "impulse-lab: unknown command \"frobnicate\" (commands: resolve, run, inspect, lesson, validate, worksheet, "
-         "diff, bench;"},
+         "impulse-lab: unknown command \"frobnicate\"; commands: resolve, run, inspect, lesson, validate, worksheet, "
+         "diff, bench, help, completion; see impulse-lab help"},
+        {{"reslove", ruler}, "impulse-lab: unknown command \"reslove\" (did you mean resolve?)"},
+        {{"--hlep"}, "impulse-lab: --hlep: unknown flag (did you mean --help?); see impulse-lab help"},
+        {{}, "impulse-lab: a command is required, e.g. impulse-lab lesson 1; see impulse-lab help"},
     };
     for (const BadFlag& b : table) {
         std::vector<std::string> args = b.args;
@@ -181,7 +224,13 @@ TEST_CASE("run refuses bad flags and unwritable outputs before simulating, and w
     const std::string scene = IMPULSE_SOURCE_DIR "/scenes/stack_3.json";
     const std::string trace = dir.file("t.json").string();
     const std::vector<std::pair<std::vector<std::string>, std::string>> table{
-        {{"run", scene, "--frames", "0"}, "impulse-lab: --frames: must be from 1 to 10000000, got 0"},
+        {{"run", scene, "--frames", "0"},
+         "impulse-lab: --frames: must be from 1 to 10000000, got 0; see impulse-lab run --help"},
+        {{"run", scene, "--frame", "10"},
+         "impulse-lab: --frame: unknown flag of run (did you mean --frames?); see impulse-lab run --help"},
+        {{"run", scene, "--frames"},
+         "impulse-lab: --frames: needs a value: a whole number from 1 to 10000000; see impulse-lab run --help"},
+        {{"run", scene, "--dt"}, "impulse-lab: --dt: needs a value: a number from 1e-06 to 10"},
         {{"run", scene, "--frames", "1e3"},
          "impulse-lab: --frames: expected a whole number from 1 to 10000000, got \"1e3\""},
         {{"run", scene, "--frames", "99999999999999999999"},

@@ -135,17 +135,24 @@ TEST_CASE("one perturbed value is reported at exactly its path as the first dive
     CHECK(f["expected"].get<double>() == 0.1407367320754168);
     CHECK(f["found"].get<double>() == 0.15);
     CHECK(f["relative_error"].get<double>() == doctest::Approx((0.15 - 0.1407367320754168) / 0.1407367320754168));
-    CHECK(f["quantity"] == "impulse_world");
+    // In the worksheet's own words: the step that computes it, and its name there.
+    CHECK(f["place"] == "frame 0 · velocity phase · iteration 0 · contact 0 · impulse");
+    CHECK(f["quantity"] == "impulse_world[1]");
+    CHECK(f["unit"] == "N·s");
     CHECK(f["formula"] == "C · impulse_contact");
     CHECK(f["first_divergence"] == true);
     CHECK(report["first_divergence"] == f["path"]);
 
+    // The text names the place once, above its rows, and shows the expected value to the digits the tolerance
+    // looks at (rtol 1e-9: 11 significant figures).
     const CliResult text = run_cli({"diff", ruler, other});
     CHECK(text.code == 1);
-    CHECK(text.out.find("▶  value  frames[0].phases[1].iterations[0].impulse_world[1]  0.1407367320754168  0.15   "
-                        "0.0658") != std::string::npos);
-    CHECK(text.out.find("▶ first divergence: frames[0].phases[1].iterations[0].impulse_world[1] (impulse_world)") !=
+    CHECK(text.out.find("frame 0 · velocity phase · iteration 0 · contact 0 · impulse\n"
+                        "▶  value  impulse_world[1]  0.14073673208  0.15   N·s   0.0658      C · impulse_contact\n") !=
           std::string::npos);
+    CHECK(text.out.find("▶ first divergence: frame 0 · velocity phase · iteration 0 · contact 0 · impulse: "
+                        "impulse_world[1] (frames[0].phases[1].iterations[0].impulse_world[1])") != std::string::npos);
+    CHECK(text.out.find("299 matched, 1 mismatched, 0 blank; score 99.7 %") != std::string::npos);
 }
 
 TEST_CASE("a difference within the tolerance matches, and the tolerance is a flag") {
@@ -231,7 +238,8 @@ TEST_CASE("a malformed file or a bad flag gets one line, exit code 2 and no repo
          "impulse-lab: " + dir.file("none.json").string() + ": cannot read: No such file or directory"},
         {{"diff", ruler, good, "--rtol", "-1"}, "impulse-lab: --rtol: must be a number >= 0, got -1"},
         {{"diff", ruler, good, "--atol", "nan"}, "impulse-lab: --atol: must be a number >= 0, got nan"},
-        {{"diff", ruler, good, "--format", "xml"}, "impulse-lab: --format: xml not in {text,json,csv}"},
+        {{"diff", ruler, good, "--format", "xml"},
+         "impulse-lab: --format: must be one of text, json, csv, got \"xml\""},
         {{"diff", ruler}, "impulse-lab: OTHER is required"},
     };
     for (auto [args, starts] : table) {
@@ -316,7 +324,7 @@ TEST_CASE("a CSV worksheet is graded the same way, one row per number") {
     CHECK(report["all_match"] == false);
 }
 
-TEST_CASE("a folder of filled worksheets is graded into a CSV, one row per file, a malformed one included") {
+TEST_CASE("a folder of filled worksheets is summarised one row per file, a malformed one included") {
     TempDir dir;
     std::filesystem::create_directory(dir.file("class"));
     io::json perfect = filled_worksheet("cases/ruler");
@@ -325,21 +333,24 @@ TEST_CASE("a folder of filled worksheets is graded into a CSV, one row per file,
     cell_at(wrong, "frames[0].phases[1].iterations[0].impulse_world")[1] = 0.15;
     write_json(dir, "class/ben.json", wrong);
     dir.write("class/cy.json", "{\"format\": \"impulse-lab-worksheet\", \"version\": 2, \"steps\": []}");
-    const std::string grades = dir.file("grades.csv").string();
-    const CliResult r = run_cli({"diff", ruler, dir.file("class").string(), "--format", "csv", "--out", grades});
+    const CliResult r = run_cli({"diff", ruler, dir.file("class").string(), "--format", "csv"});
     // A submission that cannot be read does not stop the others: it gets its row and a line, and exit code 1.
     CHECK(r.code == 1);
     const std::string cy = dir.file("class/cy.json").string();
     CHECK(r.err == "impulse-lab: " + cy + ": version: must be 1, got 2\n");
-    CHECK(r.out == read_text(grades));
-    const std::vector<explain::CsvRow> rows = explain::parse_csv(read_text(grades));
+    const std::vector<explain::CsvRow> rows = explain::parse_csv(r.out);
     REQUIRE(rows.size() == 4);
-    CHECK(rows[0].fields ==
-          std::vector<std::string>{"file", "matched", "mismatched", "blank", "first_divergence", "error"});
-    CHECK(rows[1].fields == std::vector<std::string>{dir.file("class/ada.json").string(), "89", "0", "0", "", ""});
-    CHECK(rows[2].fields == std::vector<std::string>{dir.file("class/ben.json").string(), "88", "1", "0",
-                                                     "frames[0].phases[1].iterations[0].impulse_world[1]", ""});
-    CHECK(rows[3].fields == std::vector<std::string>{cy, "", "", "", "", "version: must be 1, got 2"});
+    CHECK(rows[0].fields == std::vector<std::string>{"file", "kind", "cells", "matched", "mismatched", "blank",
+                                                     "score_percent", "first_divergence", "first_divergence_path",
+                                                     "error"});
+    CHECK(rows[1].fields == std::vector<std::string>{dir.file("class/ada.json").string(), "worksheet", "89", "89", "0",
+                                                     "0", "100.0", "", "", ""});
+    // 88 of 89: 98.876... %, one decimal.
+    CHECK(rows[2].fields ==
+          std::vector<std::string>{dir.file("class/ben.json").string(), "worksheet", "89", "88", "1", "0", "98.9",
+                                   "frame 0 · velocity phase · iteration 0 · contact 0 · impulse: impulse_world[1]",
+                                   "frames[0].phases[1].iterations[0].impulse_world[1]", ""});
+    CHECK(rows[3].fields == std::vector<std::string>{cy, "", "", "", "", "", "", "", "", "version: must be 1, got 2"});
 }
 
 TEST_CASE("several files that all match exit 0 with a text summary") {
@@ -375,4 +386,18 @@ TEST_CASE("a CSV answer that is not a number is graded wrong, and a row cut shor
                    });
     CHECK(report["findings"][0]["found"] == "minus three");
     CHECK(report["findings"][0]["relative_error"].is_null());
+}
+
+TEST_CASE("a velocity iteration's wrong contact velocity is the first divergence, not the desired change after it") {
+    // The iteration's record writes desired_delta_velocity before contact_velocity; the derivation computes
+    // them the other way round, and so must the first divergence be chosen.
+    TempDir dir;
+    io::json document = filled_worksheet("cases/ruler");
+    cell_at(document, "frames[0].phases[1].iterations[0].contact_velocity")[0] = -2.9;
+    cell_at(document, "frames[0].phases[1].iterations[0].desired_delta_velocity") = 4.35;  // −(1 + 0.5)·(−2.9)
+    const io::json report = diff_json(ruler, write_json(dir, "student.json", document), 1);
+    REQUIRE(report["findings"].size() == 2);
+    CHECK(report["findings"][0]["path"] == "frames[0].phases[1].iterations[0].contact_velocity[0]");
+    CHECK(report["findings"][0]["first_divergence"] == true);
+    CHECK(report["findings"][1]["path"] == "frames[0].phases[1].iterations[0].desired_delta_velocity");
 }

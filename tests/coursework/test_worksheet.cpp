@@ -232,7 +232,7 @@ TEST_CASE("worksheet writes JSON that its schema accepts, with every cell blank"
     const test::CliResult r = test::run_cli({"worksheet", cases + "ruler.json", "--out", out});
     CHECK(r.code == 0);
     CHECK(r.err.empty());
-    CHECK(r.out == "worksheet written to " + out + ": 15 steps, 47 cells (89 values to fill in), 163 inputs given\n");
+    CHECK(r.out == "worksheet written to " + out + ": 15 steps, 47 cells (89 values to fill in), 189 inputs given\n");
     const io::json sheet = io::parse_json_text(read_text(out));
     CHECK_NOTHROW(io::validate_worksheet_document(sheet));
     CHECK(sheet["format"] == "impulse-lab-worksheet");
@@ -294,7 +294,8 @@ TEST_CASE("worksheet refuses a bad --out or --steps in one line, exit code 2 and
     const std::string ruler = cases + "ruler.json";
     const std::vector<std::pair<std::vector<std::string>, std::string>> table{
         {{"worksheet", ruler, "--out", dir.file("sheet.txt").string()},
-         "impulse-lab: --out: must end in .json or .csv, got \"" + dir.file("sheet.txt").string() + "\""},
+         "impulse-lab: --out: must end in .json or .csv (or be - for standard output), got \"" +
+             dir.file("sheet.txt").string() + "\""},
         {{"worksheet", ruler, "--out", dir.file("no/dir/s.csv").string()},
          "impulse-lab: --out: cannot write '" + dir.file("no/dir/s.csv").string() + "': No such file or directory"},
         {{"worksheet", ruler, "--out", dir.file("s.csv").string(), "--steps", "phase=sideways"},
@@ -356,4 +357,62 @@ TEST_CASE("CSV fields round trip through quoting, CRLF line ends and a byte-orde
     CHECK(rows[2].line == 5);
     CHECK_THROWS_AS(explain::parse_csv("a,\"open\n"), io::InputError);
     CHECK_THROWS_AS(explain::parse_csv("\"closed\"x\n"), io::InputError);
+}
+
+TEST_CASE("velocity_from_acceleration is given what it needs: the frame's duration and each body's last acceleration") {
+    const inspect::Session session = opened_session("cases/desired_velocity");
+    const Worksheet sheet = make_worksheet(
+        session,
+        places_from_specs(session.trace(), {"phase=preparation,contact=2,step=desired_delta_velocity"}, "--steps"));
+    REQUIRE(sheet.steps.size() == 1);
+    const auto input = [&](const std::string& path) {
+        for (const WorksheetEntry& e : sheet.steps[0].inputs)
+            if (e.path == path) return e.value;
+        FAIL("no input " << path);
+        return io::json();
+    };
+    // 'landing' (body 2) was accelerated by (0, −9.81, 0) m/s² for one frame of 1/60 s against the ground
+    // (body 1, the world): (a₀ − a₁)·n·Δt = −9.81 · 1 / 60 = −0.1635 m/s, which the trace records.
+    const double duration = input("settings.duration").get<double>();
+    const io::json a = input("scene.bodies[2].last_frame_acceleration");
+    CHECK(duration == doctest::Approx(1.0 / 60));
+    CHECK(a == io::json::array({0.0, -9.81, 0.0}));
+    CHECK(a[1].get<double>() * duration == doctest::Approx(-0.1635));
+    CHECK(input("frames[0].contacts[2].contact_velocity") == io::json::array({-3.0, 0.0, 0.0}));
+}
+
+TEST_CASE("a simulated frame gives gravity as the last acceleration of every body that can move") {
+    inspect::OpenOptions options;
+    options.frames = 4;
+    options.record = {"frames=3..3"};
+    const inspect::Session session = opened_session("stack_3", options);
+    const Worksheet sheet = make_worksheet(
+        session, places_from_specs(session.trace(), {"phase=preparation,contact=0,step=contact_velocity"}, "--steps"));
+    const std::vector<std::string> given = quantities(sheet.steps.at(0).inputs);
+    CHECK(has(given, "scene.gravity"));
+    CHECK(has(given, "settings.duration"));
+    CHECK(has(given, "settings.tangential_acceleration_velocity"));
+    CHECK_FALSE(has(given, "scene.bodies[0].last_frame_acceleration"));  // the file's start, not this frame's
+}
+
+TEST_CASE("an update starts from the value before it, which is not given when the sheet asks for it elsewhere") {
+    const inspect::Session session = opened_session("cases/ruler");
+    const Trace& trace = session.trace();
+    // The velocity iteration's updates alone: the contact's velocity before the impulse is the iteration's own
+    // contact_velocity, given at that path (and no longer as a copy under updates[0].before).
+    const Worksheet alone =
+        make_worksheet(session, places_from_specs(trace, {"phase=velocity,iteration=0,step=updates"}, "--steps"));
+    const std::vector<std::string> given = quantities(alone.steps.at(0).inputs);
+    CHECK(has(given, "contact_velocity"));
+    CHECK(has(given, "desired_delta_velocity"));
+    CHECK_FALSE(has(given, "updates[0].before"));
+    CHECK_FALSE(has(given, "updates[0].desired_delta_velocity_before"));
+    // With the iteration's contact_velocity step on the sheet too, the student starts from their own answer.
+    const Worksheet both = make_worksheet(
+        session,
+        places_from_specs(
+            trace, {"phase=velocity,iteration=0,step=contact_velocity", "phase=velocity,iteration=0,step=updates"},
+            "--steps"));
+    for (const WorksheetEntry& e : both.steps.at(1).inputs)
+        CHECK(e.path != "frames[0].phases[1].iterations[0].contact_velocity");
 }

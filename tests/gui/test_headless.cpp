@@ -236,7 +236,7 @@ TEST_CASE("every lesson runs headless: annotated text, its trace and one screens
     TempDir dir;
     ::setenv("XDG_CONFIG_HOME", dir.file("cfg").c_str(), 1);
     const std::vector<std::filesystem::path> files = lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
-    REQUIRE(files.size() == 12);
+    REQUIRE(files.size() == 13);
     for (const std::filesystem::path& file : files) {
         const lessons::Lesson lesson = lessons::read_lesson(file);
         const std::string number = std::to_string(lesson.number);
@@ -311,6 +311,38 @@ TEST_CASE("inspect shows a run up to the frame that left a body non-finite, with
     CHECK(r.err.find("body \"bullet\" has a non-finite position after resolution (no contact touched it this "
                      "frame); the frames before it are shown\n") != std::string::npos);
     CHECK(std::filesystem::exists(shot));
+}
+
+TEST_CASE("inspect says which frames it recorded when the trace budget cut it, at the start and after every re-run") {
+    TempDir dir;
+    const auto script = dir.write("s.txt", "set velocity_epsilon 0.00001\ngoto frame=0\n");
+    const CliResult r = run_cli({"inspect", IMPULSE_SOURCE_DIR "/scenes/box_resting.json", "--max-trace-mb", "0.1",
+                                 "--headless", "--script", script.string()});
+    CHECK(r.code == 0);
+    CHECK(r.err == "impulse-lab: note: recorded frames 0..2 of 0..59 (the trace reached --max-trace-mb 0.1 at frame "
+                   "3); raise --max-trace-mb or narrow --record to see later frames\n"
+                   "impulse-lab: note: " +
+                       script.string() +
+                       ": line 1: re-ran with velocity_epsilon=0.00001: recorded frame 0 of 0..59 (the trace "
+                       "reached --max-trace-mb 0.1 at frame 1)\n");
+}
+
+TEST_CASE("a script's export table - and --screenshot - put the table and the picture on standard output") {
+    // The same bytes as the files the same script and flag write; what inspect says goes to stderr then.
+    TempDir dir;
+    const auto to_file = dir.write(
+        "to-file.txt", "goto phase=velocity,step=impulse\nexport table " + dir.file("table.csv").string() + "\n");
+    REQUIRE(run_cli({"inspect", ruler, "--headless", "--script", to_file.string()}).code == 0);
+    const auto to_stdout = dir.write("to-stdout.txt", "goto phase=velocity,step=impulse\nexport table -\n");
+    const CliResult table = run_cli({"inspect", ruler, "--headless", "--script", to_stdout.string()});
+    CHECK(table.code == 0);
+    CHECK(table.out == read(dir.file("table.csv")));
+
+    REQUIRE(run_cli({"inspect", ruler, "--headless", "--screenshot", dir.file("shot.png").string()}).code == 0);
+    const CliResult picture = run_cli({"inspect", ruler, "--headless", "--screenshot", "-"});
+    CHECK(picture.code == 0);
+    CHECK(picture.out == read(dir.file("shot.png")));
+    CHECK(dir.entries() == 4);  // two scripts, the table and the picture: no file named "-"
 }
 
 }  // namespace impulse::test

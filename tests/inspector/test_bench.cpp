@@ -6,6 +6,7 @@
 #include "bench/bench_plan.hpp"
 #include "bench/bench_report.hpp"
 #include "bench/bench_runs.hpp"
+#include "gui/bench_charts.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -44,6 +45,63 @@ TEST_CASE("the Pareto front of a hand-made point set is the points no other beat
     // (5, 1) is beaten by (4, 1); the NaN point is never on the front; (2, 5) twice keeps only the first.
     const std::vector<bench::TimeError> points{{3, 6}, {1, 10}, {4, 1}, {2, 5}, {5, 1}, {0.5, NAN}, {2, 5}};
     CHECK(bench::pareto_front(points) == std::vector<std::size_t>{1, 3, 2});
+}
+
+TEST_CASE("the Pareto front leaves out runs that failed, so it starts at the fastest run that held") {
+    // By hand: (1, 10) is fastest but collapsed; of those that held, (2, 5) is fastest, (4, 1) trades time for
+    // error, (3, 6) is beaten by (2, 5). A failed run beats nothing: (0.5, 0.1) failing takes no one off.
+    const std::vector<bench::TimeError> points{{3, 6}, {1, 10, false}, {4, 1}, {2, 5}, {0.5, 0.1, false}};
+    CHECK(bench::pareto_front(points) == std::vector<std::size_t>{3, 2});
+}
+
+TEST_CASE("a stability cell meets the target, holds but misses it (saying by how much), or fails") {
+    const bench::BenchScene* stack = bench::find_bench_scene("stack_10");  // top_drift, target 0.05 m
+    std::vector<bench::RunResult> rows{
+        row("stack_10", "pgs_split", 4, 0.1, 0.03, true), row("stack_10", "pgs_split", 8, 0.2, 0.306, false),
+        row("stack_10", "soft_step", 8, 0.1, 0.0295, true), row("stack_10", "book", 8, 0.4, 10.9, false)};
+    rows[3].accuracy.holds = false;
+    rows[3].accuracy.failure = "collapsed";
+    rows[3].accuracy.failure_time = 5.55;
+    const bench::StabilityMatrix m = bench::stability_matrix(rows, {"pgs_split", "soft_step", "book"}, {stack});
+    // Judged at the largest N: pgs_split held at N = 8 but drifted 0.306 m, 6.1 times the 0.05 m target.
+    CHECK(bench::verdict_text(m.cells[0][0]) == "holds, misses target");
+    CHECK(bench::cell_text(*stack, m.cells[0][0]) == "6.1 × the target, top_drift 0.306 m");
+    CHECK(bench::verdict_text(m.cells[1][0]) == "meets target");
+    CHECK(bench::cell_text(*stack, m.cells[1][0]) == "top_drift 0.0295 m");
+    CHECK(bench::verdict_text(m.cells[2][0]) == "fails");
+    CHECK(bench::cell_text(*stack, m.cells[2][0]) == "collapsed at 5.55 s, top_drift 10.9 m");
+
+    bench::BenchRun run;
+    run.scenes = {stack};
+    run.methods = {"pgs_split", "soft_step", "book"};
+    run.iterations = {4, 8};
+    run.rows = rows;
+    const std::string md = bench::stability_markdown(run);
+    CHECK(md.find("| stack_10 | top_drift <= 0.05 m | **holds, misses target**: 6.1 × the target, top_drift 0.306 m | "
+                  "**meets target**: top_drift 0.0295 m | **fails**: collapsed at 5.55 s, top_drift 10.9 m |") !=
+          std::string::npos);
+}
+
+TEST_CASE("chart markers at one place are moved apart, sideways first, and one alone stays where its data is") {
+    using gui::ChartPoint;
+    const ChartPoint lo{0, 0}, hi{400, 300};
+    // Three runs with the same time and error (book N = 2, 4, 8 at rest), and one elsewhere.
+    const std::vector<ChartPoint> at{{100, 100}, {100, 100}, {100, 100}, {300, 50}};
+    const std::vector<ChartPoint> drawn = gui::dodged_markers(at, 15.0f, lo, hi);
+    REQUIRE(drawn.size() == 4);
+    CHECK(drawn[0].x == 100.0f);  // the first keeps its place
+    CHECK(drawn[1].x == 115.0f);  // one width to the right
+    CHECK(drawn[2].x == 85.0f);   // then to the left
+    for (std::size_t i = 0; i < 3; ++i) CHECK(drawn[i].y == 100.0f);
+    CHECK(drawn[3].x == 300.0f);
+    CHECK(drawn[3].y == 50.0f);
+    for (std::size_t i = 0; i < drawn.size(); ++i)
+        for (std::size_t j = i + 1; j < drawn.size(); ++j)
+            CHECK(std::hypot(drawn[i].x - drawn[j].x, drawn[i].y - drawn[j].y) >= 15.0f);
+    // At the plot's left edge, the second goes right and the third further right: never off the plot.
+    const std::vector<ChartPoint> edge = gui::dodged_markers({{0, 10}, {0, 10}, {0, 10}}, 15.0f, lo, hi);
+    CHECK(edge[1].x == 15.0f);
+    CHECK(edge[2].x == 30.0f);
 }
 
 TEST_CASE("the cheapest configuration meeting a target is the fastest row of that scene that meets it") {

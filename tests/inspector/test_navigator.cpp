@@ -386,6 +386,32 @@ TEST_CASE("step=angular_change goes to the position phase's table that shows the
     CHECK(resolve_goto(trace, parse_goto("phase=velocity,step=impulse", "g"), "g") == Cursor{0, Stage::velocity, 0, 3});
 }
 
+TEST_CASE("a step named without a phase is found in the first stage of the frame that shows it") {
+    // The ruler's preparation shows no angular change; its position phase does (the test above): without phase=,
+    // the goto lands where the step is, as an iteration without a phase lands in the first phase that has it.
+    const Trace trace = opened("cases/ruler");
+    CHECK(resolve_goto(trace, parse_goto("step=angular_change", "g"), "g") ==
+          resolve_goto(trace, parse_goto("phase=position,step=angular_change", "g"), "g"));
+    // The preparation still comes first for a step it has.
+    CHECK(resolve_goto(trace, parse_goto("step=basis", "g"), "g") == Cursor{0, Stage::preparation, 0, 0});
+}
+
+TEST_CASE("a goto step in another phase than the one named says which phase has it") {
+    // Regression: a misspelt step was answered with the preparation's list of steps, which does not hold the step
+    // meant, so the user could not see the right name.
+    const Trace trace = opened("cases/ruler");
+    CHECK(goto_error(trace, "phase=velocity,step=angular_change").problem() ==
+          "no step or quantity \"angular_change\" in the velocity phase; it is in the position phase "
+          "(phase=position)");
+    const std::string misspelt = goto_error(trace, "step=angualr_change").problem();
+    CHECK(contains(misspelt, "no step or quantity \"angualr_change\" in the preparation (its steps: basis, "));
+    CHECK(contains(misspelt, "; did you mean \"angular_change\", in the position phase (phase=position)?"));
+    // A name close to one of this stage's own is suggested without a phase.
+    CHECK(contains(goto_error(trace, "phase=velocity,step=impuls").problem(), "did you mean \"impulse\"?"));
+    // Nothing near: no suggestion.
+    CHECK_FALSE(contains(goto_error(trace, "step=nonsense").problem(), "did you mean"));
+}
+
 TEST_CASE("the location of every place leads back to that place") {
     for (const Trace& trace : {opened("cases/ruler"), stack_run(), relaxed("deep_plank")}) {
         for (const Cursor& c : walked_forward(trace)) {
@@ -462,11 +488,15 @@ TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accu
     CHECK(first.sweep->stage == SolverStage::warm_start);
     const Cursor at{2, Stage::velocity, 0, 0};
     CHECK(step_names(trace, at) == std::vector<std::string>{"choice", "contact_velocity", "desired_delta_velocity",
-                                                            "position_bias", "accumulated_impulse", "impulse",
-                                                            "velocity_change", "updates"});
+                                                            "accumulated_impulse", "impulse", "velocity_change",
+                                                            "updates"});
     const explain::StepTable choice = step_tables(trace, at)[0];
     CHECK(choice.title == "choice — warm_start visits contact " + std::to_string(first.contact));
-    const explain::StepTable total = step_tables(trace, at)[4];
+    // Baumgarte's bias is a row of desired_delta_velocity.
+    const explain::StepTable desired = step_tables(trace, at)[2];
+    CHECK(std::any_of(desired.rows.begin(), desired.rows.end(),
+                      [](const explain::Row& r) { return r.quantity == "position_bias"; }));
+    const explain::StepTable total = step_tables(trace, at)[3];
     REQUIRE(total.rows.size() == 4);
     CHECK(total.rows[0].quantity == "accumulated_before");
     CHECK(total.rows[2].quantity == "clamp");

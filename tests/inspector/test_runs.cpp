@@ -3,7 +3,12 @@
 
 #include "io/scene_file.hpp"
 #include "io/trace_json.hpp"
+#include "io/input_error.hpp"
 #include "model/runs.hpp"
+#include "model/script.hpp"
+#include "model/session.hpp"
+
+#include "support/opened.hpp"
 
 #include <doctest/doctest.h>
 
@@ -47,4 +52,42 @@ TEST_CASE("run_frames of a scene that stays finite reports nothing broken") {
     const Trace trace = inspect::run_frames(scene, TraceFilter{}, 5, {}, &broken);
     CHECK_FALSE(broken.has_value());
     CHECK(trace.frames.size() == 5);
+}
+
+TEST_CASE("the inspector's run stops where its recording is full, so every frame it runs is a frame it shows") {
+    inspect::OpenOptions options;
+    options.max_trace_mb = 0.1;  // three frames of the resting box (about 30 kB each, its header aside)
+    const inspect::Session session = test::opened_session("box_resting", options);
+    CHECK(session.trace().frames.size() == 3);
+    CHECK(session.trace().scene.world.frames == 3);  // what re-running it needs
+    CHECK(session.recording_note() ==
+          "recorded frames 0..2 of 0..59 (the trace reached --max-trace-mb 0.1 at frame 3)");
+    // `run` goes on past it: it writes every frame's states.
+    std::optional<int> stopped;
+    const Trace whole = inspect::run_frames(session.trace().scene, TraceFilter{}, 10, {100000, &stopped});
+    CHECK(stopped == 3);
+    CHECK(whole.scene.world.frames == 10);
+    // Nothing to say when everything asked for was recorded.
+    CHECK_FALSE(test::opened_session("box_resting").recording_note());
+}
+
+TEST_CASE("after a setting changes, the session says which frames the re-run recorded, and a goto beyond names them") {
+    inspect::OpenOptions options;
+    options.max_trace_mb = 0.1;
+    inspect::Session session = test::opened_session("box_resting", options);
+    // A tiny velocity epsilon makes each frame's velocity phase run many more iterations: one frame fits.
+    session.set("velocity_epsilon=0.00001", "script: line 1");
+    CHECK(session.trace().frames.size() == 1);
+    CHECK(inspect::rerun_text(session, "velocity_epsilon=0.00001") ==
+          "re-ran with velocity_epsilon=0.00001: recorded frame 0 of 0..59 (the trace reached --max-trace-mb 0.1 "
+          "at frame 1)");
+    try {
+        inspect::perform(session, {inspect::ActionKind::go_to, "frame=2", 2, 0}, "script: line 2", nullptr);
+        FAIL("expected an error");
+    } catch (const io::InputError& e) {
+        CHECK(e.what() == std::string("script: line 2: frame 2 is not in the trace (recorded frames: 0..0)"));
+    }
+    // Back to a setting whose frames fit again.
+    session.set("velocity_epsilon=0.01", "script: line 3");
+    CHECK(session.trace().frames.size() == 3);
 }

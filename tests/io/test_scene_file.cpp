@@ -1,7 +1,9 @@
 // Scene files: what a minimal case means (its defaults), and a table of malformed cases, each rejected with
 // one line naming the JSON path, exit code 2, and no output file written.
 
+#include "io/input_error.hpp"
 #include "io/scene_file.hpp"
+#include "io/settings_json.hpp"
 #include "math/rotation.hpp"
 #include "support/approx.hpp"
 #include "support/run_cli.hpp"
@@ -245,4 +247,54 @@ TEST_CASE("every shipped scene reads, and writes out to a scene that reads back 
         const Scene s = io::read_scene_text(text.str());
         CHECK(io::read_scene(io::scene_json(s, true)) == s);
     }
+}
+
+TEST_CASE("a scene naming the old position method baumgarte is refused with what replaced it") {
+    // Baumgarte's bias became a term of step 5: position_method none with baumgarte true.
+    const std::string scene =
+        R"({"bodies": [{"shape": {"type": "sphere", "radius": 0.5}}], "settings": {"position_method": "baumgarte"}})";
+    try {
+        io::read_scene_text(scene);
+        FAIL("read");
+    } catch (const io::InputError& e) {
+        CHECK(e.where() == "settings.position_method");
+        CHECK(std::string(e.problem()) ==
+              "\"baumgarte\" is no longer a position method: Baumgarte's bias is now a term of step 5 (did you "
+              "mean \"position_method\": \"none\" with \"baumgarte\": true?)");
+    }
+    Scene fixed = io::read_scene_text(
+        R"({"bodies": [{"shape": {"type": "sphere", "radius": 0.5}}],
+            "settings": {"position_method": "none", "baumgarte": true}})");
+    CHECK(fixed.settings.position_method == PositionMethod::none);
+    CHECK(fixed.settings.baumgarte);
+}
+
+TEST_CASE("a misspelt settings value is told the value it is closest to, a wrong one only the choices") {
+    const auto problem = [](const std::string& value) {
+        try {
+            io::read_scene_text(
+                R"({"bodies": [{"shape": {"type": "sphere", "radius": 0.5}}], "settings": {"sliding_friction": ")" +
+                value + R"("}})");
+        } catch (const io::InputError& e) {
+            return std::string(e.problem());
+        }
+        return std::string("read");
+    };
+    CHECK(problem("agianst_slip") ==
+          "must be one of \"reference\", \"against_slip\"; got \"agianst_slip\" (did you mean \"against_slip\"?)");
+    CHECK(problem("x") == "must be one of \"reference\", \"against_slip\"; got \"x\"");
+}
+
+TEST_CASE("settings added after trace format 1 are written only when they differ from what it implied") {
+    // A trace of the book's defaults must stay the bytes older versions wrote (and could read).
+    ResolverSettings s = *preset("book");
+    const io::json plain = io::settings_json(s, WorldSettings{});
+    CHECK_FALSE(plain.contains("baumgarte"));
+    CHECK_FALSE(plain.contains("sliding_friction"));
+    s.baumgarte = true;
+    s.sliding_friction = SlidingFriction::against_slip;
+    const io::json changed = io::settings_json(s, WorldSettings{});
+    CHECK(changed["baumgarte"] == true);
+    CHECK(changed["sliding_friction"] == "against_slip");
+    CHECK(io::settings_json(*preset("pgs"), WorldSettings{})["baumgarte"] == true);
 }

@@ -1,30 +1,20 @@
-#include "derivation/impulse.hpp"
-#include "derivation/velocity_change.hpp"
+// Worst first, the book's velocity phase: "we find the contact with the largest closing velocity and resolve
+// it", then update the contact velocity and desired delta v of every contact that shares a body with it (the
+// linearised formulas of resolver/bookkeeping.cpp), and repeat until no desired delta v is above the epsilon
+// or the iteration limit is reached. Each impulse is the book's (steps 6 and 7 on the contact's bookkeeping
+// velocity and desired delta v, methods/solver_common.hpp), final: nothing takes it back.
+
 #include "methods/solver_common.hpp"
 #include "resolver/bookkeeping.hpp"
 #include "resolver/phases.hpp"
 
-#include <algorithm>
-
 namespace impulse {
 
-bool any_desired_delta_velocity_above(const std::vector<PreparedContact>& contacts, double epsilon) {
-    return std::any_of(contacts.begin(), contacts.end(), [epsilon](const PreparedContact& c) {
-        return !c.derivation.inert && desired_of(c) > epsilon;
-    });
-}
-
-PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<PreparedContact>& contacts,
-                                const ResolverSettings& settings, Recorder& recorder, ContactMemory* memory) {
-    switch (settings.velocity_method) {
-        case VelocityMethod::sequential_sweep:
-            return sweep_velocities(bodies, contacts, settings, recorder);
-        case VelocityMethod::projected_gauss_seidel:
-            return pgs_velocities(bodies, contacts, settings, recorder, memory);
-        case VelocityMethod::soft_step:  // soft_step never reaches here: resolve_contacts hands it to soft_step()
-        case VelocityMethod::worst_first:
-            break;
-    }
+PhaseOutcome worst_first_velocities(FrameContext& frame) {
+    std::vector<RigidBody>& bodies = frame.bodies;
+    std::vector<PreparedContact>& contacts = frame.contacts;
+    const ResolverSettings& settings = frame.settings;
+    Recorder& recorder = frame.recorder;
     PhaseOutcome outcome;
     outcome.iteration_limit = velocity_iteration_limit(settings, static_cast<int>(contacts.size()));
     std::vector<char> eligible(contacts.size());
@@ -40,16 +30,11 @@ PhaseOutcome resolve_velocities(std::vector<RigidBody>& bodies, std::vector<Prep
                                  .epsilon = settings.velocity_epsilon,
                                  .sweep = {},
                                  .accumulated = {},
-                                 .resolution = resolve_velocity(contact),
+                                 .resolution = resolve_velocity(contact, settings.sliding_friction),
                                  .updates = {}};
         const std::array<int, 2> changed = contact.derivation.bodies;
         const VelocityChange& change = record.resolution->velocity_change;
-        for (int i = 0; i < 2; ++i) {
-            if (changed[i] == world_body) continue;
-            RigidBody& body = bodies[static_cast<std::size_t>(changed[i])];
-            body.velocity += *change.velocity_change[i];
-            body.angular_velocity += *change.rotation_change[i];
-        }
+        apply_velocity_change(bodies, changed, change);
         const std::span<const int> sharing = selector.sharing(changed);
         update_contact_velocities(contacts, sharing, changed, change, settings,
                                   recorder.wants_updates() ? &record.updates : nullptr);

@@ -1,0 +1,128 @@
+#include "methods/contact_rows.hpp"
+
+#include "methods/solver_common.hpp"
+
+namespace impulse {
+
+std::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass) {
+    std::vector<SolverBody> solver(bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        solver[b].velocity = bodies[b].velocity;
+        solver[b].angular_velocity = bodies[b].angular_velocity;
+        solver[b].inverse_mass = mass[b].inverse_mass;
+        solver[b].inverse_inertia = mass[b].inverse_inertia_world;
+    }
+    return solver;
+}
+
+void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>& bodies) {
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        bodies[b].velocity = solver[b].velocity;
+        bodies[b].angular_velocity = solver[b].angular_velocity;
+    }
+}
+
+void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse, double& x, double& y,
+                     double limit) {
+    const double wx = k[0] * x + k[1] * y, wy = k[1] * x + k[2] * y;  // w = K_tt free
+    const double inverse_limit = 1.0 / limit;
+    // (K + nu 1)^-1 at nu = 0 is K^-1; after that, its adjugate [[k22 + nu, -k12], [-k12, k11 + nu]] / det.
+    double m00 = k_inverse[0], m01 = k_inverse[1], m11 = k_inverse[2];
+    double nu = 0.0;
+    for (int step = 0; step < 16; ++step) {
+        const double size_squared = x * x + y * y;
+        const double size = std::sqrt(size_squared);
+        if (size <= limit * (1.0 + 1e-13)) break;
+        // Newton on phi = 1/|lambda| - 1/limit, dphi/dnu = lambda . (K + nu 1)^-1 lambda / |lambda|^3:
+        // nu += |lambda|^2 (|lambda| / limit - 1) / (lambda . (K + nu 1)^-1 lambda).
+        const double curvature = x * (m00 * x + m01 * y) + y * (m01 * x + m11 * y);
+        nu += size_squared * (size * inverse_limit - 1.0) / curvature;
+        const double a = k[0] + nu, b = k[1], c = k[2] + nu;
+        const double inverse_det = 1.0 / (a * c - b * b);
+        m00 = c * inverse_det, m01 = -b * inverse_det, m11 = a * inverse_det;
+        x = m00 * wx + m01 * wy;
+        y = m01 * wx + m11 * wy;
+    }
+    const double scale = limit / std::sqrt(x * x + y * y);  // exactly on the circle
+    x *= scale;
+    y *= scale;
+}
+
+void fill_contact_row(ContactRow& row, int index, const PreparedContact& contact, const SolverBody* bodies,
+                      bool friction_rows) {
+    const ContactPreparation& d = contact.derivation;
+    row.contact = index;
+    for (int i = 0; i < 2; ++i) {
+        row.body[i] = d.bodies[i] == world_body ? -1 : d.bodies[i];
+        row.anchor[i] = d.relative_position[i] ? *d.relative_position[i] : Vec3::Zero();
+    }
+    row.normal = d.basis.normal;
+    row.tangent1 = d.basis.tangent1;
+    row.tangent2 = d.basis.tangent2;
+    row.normal_response = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;  // d (step 3)
+    row.normal_mass = 1.0 / row.normal_response;
+    row.friction = friction_rows ? d.friction : 0.0;
+    if (row.friction != 0.0) {
+        // K_ab = sum over bodies of m^-1 (a . b) + (r x a) . I^-1 (r x b): derivation/impulse.hpp's
+        // delta_velocity_matrix entry by entry (C^T (m^-1 1 - [r]x I^-1 [r]x) C), for the four entries the
+        // friction rows need.
+        double k_1n = 0.0, k_2n = 0.0, k_11 = 0.0, k_12 = 0.0, k_22 = 0.0;
+        const Vec3 &n = row.normal, &t1 = row.tangent1, &t2 = row.tangent2;
+        const double linear_1n = t1.dot(n), linear_2n = t2.dot(n), linear_12 = t1.dot(t2);  // 0 up to rounding
+        for (int i = 0; i < 2; ++i) {
+            if (row.body[i] < 0) continue;
+            const SolverBody& m = bodies[row.body[i]];
+            const Vec3& r = row.anchor[i];
+            // u_a = r x a (written out: the row's other functions keep to plain doubles too)
+            const double unx = r.y() * n.z() - r.z() * n.y(), uny = r.z() * n.x() - r.x() * n.z(),
+                         unz = r.x() * n.y() - r.y() * n.x();
+            const double u1x = r.y() * t1.z() - r.z() * t1.y(), u1y = r.z() * t1.x() - r.x() * t1.z(),
+                         u1z = r.x() * t1.y() - r.y() * t1.x();
+            const double u2x = r.y() * t2.z() - r.z() * t2.y(), u2y = r.z() * t2.x() - r.x() * t2.z(),
+                         u2z = r.x() * t2.y() - r.y() * t2.x();
+            // I^-1 is symmetric, so (r x t) . I^-1 (r x n) = (r x n) . I^-1 (r x t): two products serve all five.
+            const Mat3& inertia = m.inverse_inertia;
+            const double j1x = inertia(0, 0) * u1x + inertia(0, 1) * u1y + inertia(0, 2) * u1z,
+                         j1y = inertia(1, 0) * u1x + inertia(1, 1) * u1y + inertia(1, 2) * u1z,
+                         j1z = inertia(2, 0) * u1x + inertia(2, 1) * u1y + inertia(2, 2) * u1z;
+            const double j2x = inertia(0, 0) * u2x + inertia(0, 1) * u2y + inertia(0, 2) * u2z,
+                         j2y = inertia(1, 0) * u2x + inertia(1, 1) * u2y + inertia(1, 2) * u2z,
+                         j2z = inertia(2, 0) * u2x + inertia(2, 1) * u2y + inertia(2, 2) * u2z;
+            k_1n += m.inverse_mass * linear_1n + (unx * j1x + uny * j1y + unz * j1z);
+            k_2n += m.inverse_mass * linear_2n + (unx * j2x + uny * j2y + unz * j2z);
+            k_11 += m.inverse_mass + (u1x * j1x + u1y * j1y + u1z * j1z);
+            k_12 += m.inverse_mass * linear_12 + (u1x * j2x + u1y * j2y + u1z * j2z);
+            k_22 += m.inverse_mass + (u2x * j2x + u2y * j2y + u2z * j2z);
+        }
+        row.normal_to_tangent = {k_1n, k_2n};
+        row.tangent_response = {k_11, k_12, k_22};
+        const double det = k_11 * k_22 - k_12 * k_12;
+        row.tangent_invertible = det > 0.0;
+        if (row.tangent_invertible) {
+            const double inverse_det = 1.0 / det;
+            row.tangent_mass = {k_22 * inverse_det, -k_12 * inverse_det, k_11 * inverse_det};
+        } else {
+            // Singular (a body that turns about one axis only): solve each tangent row on its own.
+            row.tangent_mass = {k_11 > 0.0 ? 1.0 / k_11 : 0.0, 0.0, k_22 > 0.0 ? 1.0 / k_22 : 0.0};
+        }
+    }
+}
+
+std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const ContactKey& key) {
+    if (memory_.size() == 0) return std::nullopt;
+    const std::ptrdiff_t slot = memory_.slot_of(key);
+    if (slot < 0 || taken_[static_cast<std::size_t>(slot)]) return std::nullopt;
+    taken_[static_cast<std::size_t>(slot)] = 1;
+    const Vec3& g = memory_.impulse_at(slot);  // world; C^T g in this frame's basis
+    return within_limits({row.normal.dot(g), row.tangent1.dot(g), row.tangent2.dot(g)}, row.friction);
+}
+
+void remember_totals(std::span<const ContactRow> rows, std::span<const ContactKey> keys, ContactMemory& memory) {
+    std::vector<std::pair<ContactKey, Vec3>> totals;
+    totals.reserve(rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        totals.emplace_back(keys[r], world_impulse(rows[r], rows[r].total_impulse));
+    memory.remember(std::move(totals));
+}
+
+}  // namespace impulse

@@ -1,0 +1,362 @@
+#pragma once
+// The accumulated-impulse rows of one contact, written once (solver2d's solve_common, Jolt's
+// AxisConstraintPart) and used by every method that accumulates: projected Gauss-Seidel, the split impulse's
+// push rows and soft step. A contact has three rows, the normal row and two friction rows in its tangent
+// plane, and keeps its total impulse lambda = (lambda_n, lambda_t1, lambda_t2) in contact coordinates.
+//
+// The hot loop reads plain data (Box2D's contact constraint structs): a ContactRow per contact holding what a
+// visit needs, copied once per frame from the contact's preparation, and a SolverBody per body holding its
+// velocities and mass. The row functions compute in plain doubles, component by component (Eigen's packed
+// arithmetic on 3-vectors mixes 16- and 8-byte loads and stores of the same values, which stalls the loop).
+// The recorder sees the same numbers through the same functions: a method runs one loop templated on whether
+// it records, so recording costs nothing when off and changes no bit when on.
+//
+// The normal row (K = the 3x3 velocity change per unit impulse in contact coordinates, K_nn = d of step 3):
+//   delta lambda_n = normal_mass mass_scale (target - v_n) - impulse_scale lambda_n,   normal_mass = 1 / d
+//   lambda_n       = max(lambda_n + delta lambda_n, 0)                                  push only
+// A rigid row has mass_scale 1 and impulse_scale 0; soft step's soft contact scales both (soft_step.hpp).
+//
+// The friction rows, on the slip the normal change leaves, v_t' = v_t + K_tn (lambda_n after - before):
+//   lambda_t,free  = lambda_t - K_tt^-1 v_t'   the total that stops the slip (a 2-D solve: at a corner K_tt
+//                                               couples the two tangents)
+//   static         |lambda_t,free| <= mu lambda_n:  lambda_t = lambda_t,free, the slip stops
+//   sliding        otherwise: lambda_t = the point of the disc |lambda_t| <= mu lambda_n nearest lambda_t,free
+//                  in K_tt's metric (clamp "friction"), found as below
+//
+// Why this projection. Coulomb's law (maximal dissipation) says a sliding contact's friction has size
+// mu lambda_n and opposes the slip. The slip after the visit is v_t,after = v_t' + K_tt (lambda_t - lambda_t,old)
+// = K_tt (lambda_t - lambda_t,free). Minimising |lambda_t - lambda_t,free|_K over the disc gives, by its
+// optimality condition, K_tt (lambda_t - lambda_t,free) + nu lambda_t = 0 with nu >= 0, i.e.
+//   v_t,after = -nu lambda_t:  the friction lies on the circle exactly against the slip the visit leaves,
+// and lambda_t(nu) = (K_tt + nu 1)^-1 K_tt lambda_t,free with nu the root of |lambda_t(nu)| = mu lambda_n.
+// nu is found by Newton's method on phi(nu) = 1/|lambda_t(nu)| - 1/(mu lambda_n) (the trust-region
+// subproblem's secular equation, Moré and Sorensen 1983): phi is concave and increasing, so Newton from nu = 0
+// climbs to the root without overshooting, to rounding in 3 or 4 steps; the result is then put exactly on the
+// circle. The alternatives, and why not:
+//   - scaling lambda_t,free back onto the circle (what this engine did before, and Jolt and Box2D's 3-D ports
+//     do): its fixed point has lambda_t parallel to K_tt^-1 v_t, not to v_t. At a box corner K_tt is
+//     anisotropic and only cos(angle between them) of the friction opposes the slip: a box sliding along x on
+//     its four corners stopped 7.9 % too late and veered (docs/methods.md).
+//   - putting lambda_t = -mu lambda_n v_t' / |v_t'| (against the slip before the visit): the same fixed point
+//     for a steady slide, but when the cone shrinks under a contact that holds (lambda_n falls, v_t' is
+//     rounding noise) it points the whole friction along the noise; a resting box under soft step lost
+//     contacts that way.
+//   - Bullet's slip-aligned tangent (one row along the slip as prepared, each row clamped alone to
+//     +-mu lambda_n): opposes the slip as prepared, not as it turns within the frame, and a box clamp allows
+//     sqrt(2) mu lambda_n across it.
+// None of this depends on a basis: a turn of the tangents about the normal turns lambda_t, v_t and K_tt
+// together, so the same scene turned as a whole gives the turned motion. When K_tt is singular (a body that
+// turns about one axis only) lambda_t,free is scaled back onto the circle.
+//
+// Contact velocity (step 4 on the bodies' current motion, anchors and inverse inertia fixed at preparation):
+//   v = C^T [(v0 + w0 x r0) - (v1 + w1 x r1)] + offset
+// where offset is a method's constant term (projected Gauss-Seidel: step 4's tangential acceleration term).
+// Applying an increment g (world) is step 7: body 0 gets +g, body 1 gets -g,
+//   impulsive_torque = r x (+-g),  velocity_change = (+-g) m^-1,  rotation_change = I^-1 impulsive_torque.
+
+#include "body/rigid_body.hpp"
+#include "derivation/velocity_change.hpp"
+#include "memory/contact_memory.hpp"
+#include "record/iteration_records.hpp"
+#include "resolver/prepared_contact.hpp"
+
+#include <cmath>
+#include <span>
+#include <type_traits>
+#include <vector>
+
+// The row functions are small and called from every visit of every sweep: they are always inlined, so a sweep
+// compiles to one loop (GCC and clang would otherwise keep some of them out of line at -O2).
+#define IMPULSE_ROW_FUNCTION [[gnu::always_inline]] inline
+
+namespace impulse {
+
+// Three numbers along a contact's axes, (normal, tangent 1, tangent 2): a velocity or an impulse in contact
+// coordinates, as the row functions carry them.
+struct Axes {
+    double n = 0.0;
+    double t1 = 0.0;
+    double t2 = 0.0;
+
+    bool operator==(const Axes&) const = default;
+};
+
+inline Vec3 vector_of(const Axes& a) {
+    return {a.n, a.t1, a.t2};
+}
+inline Axes axes_of(const Vec3& v) {
+    return {v.x(), v.y(), v.z()};
+}
+
+// A body as the solver loop sees it (Box2D's b2BodyState): its velocities and its mass for the frame.
+struct SolverBody {
+    Vec3 velocity = Vec3::Zero();          // p-dot (m/s)
+    Vec3 angular_velocity = Vec3::Zero();  // theta-dot (rad/s)
+    double inverse_mass = 0.0;             // m^-1
+    Mat3 inverse_inertia = Mat3::Zero();   // I^-1, world axes, as prepared
+};
+
+// The solver's bodies for a frame: velocities from `bodies`, mass as the contacts were prepared with.
+std::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass);
+
+// Copies the solver's velocities back to the bodies.
+void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>& bodies);
+
+// m v, written out: Eigen's 3x3 product is a call at -O2.
+IMPULSE_ROW_FUNCTION Vec3 times(const Mat3& m, const Vec3& v) {
+    return {m(0, 0) * v.x() + m(0, 1) * v.y() + m(0, 2) * v.z(), m(1, 0) * v.x() + m(1, 1) * v.y() + m(1, 2) * v.z(),
+            m(2, 0) * v.x() + m(2, 1) * v.y() + m(2, 2) * v.z()};
+}
+
+// One contact's rows: what a visit reads, fixed for the frame, and the total it accumulates.
+struct ContactRow {
+    int contact = 0;                  // index in the prepared list
+    std::array<int, 2> body{0, -1};   // solver bodies; -1 = the world (body 1 only)
+    Vec3 normal;                      // contact x, world
+    Vec3 tangent1;                    // contact y
+    Vec3 tangent2;                    // contact z
+    std::array<Vec3, 2> anchor;       // r_i: contact point minus body centre (step 2); zero for the world
+    double normal_mass = 0.0;         // 1 / d: impulse per unit change of normal velocity (step 3)
+    double normal_response = 0.0;     // d = K_nn: normal velocity per unit normal impulse
+    double friction = 0.0;            // mu
+    bool tangent_invertible = false;  // K_tt is invertible
+    std::array<double, 2> normal_to_tangent{0.0, 0.0};      // K_tn: slip velocity per unit normal impulse
+    std::array<double, 3> tangent_response{0.0, 0.0, 0.0};  // K_tt (11, 12, 22): slip per unit friction impulse
+    std::array<double, 3> tangent_mass{0.0, 0.0, 0.0};      // K_tt^-1 (11, 12, 22) (its diagonal's inverse if singular)
+    std::array<double, 2> slip_offset{0.0, 0.0};            // a constant added to v_t (see above)
+    Axes total_impulse;                                     // lambda (N s)
+};
+
+// Fills `row` with the rows of a prepared contact, with its bodies' mass from `bodies` (K as
+// derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes) only the
+// normal row is filled. (In place: a row is 300 bytes, and a frame builds one per contact.)
+void fill_contact_row(ContactRow& row, int index, const PreparedContact& contact, const SolverBody* bodies,
+                      bool friction_rows = true);
+
+// What the normal row aims for in one visit.
+struct NormalTarget {
+    double velocity = 0.0;       // the normal velocity the row asks for (m/s)
+    double mass_scale = 1.0;     // share of the rigid impulse applied (soft contact: < 1)
+    double impulse_scale = 0.0;  // share of the total given back per visit (soft contact: > 0)
+};
+
+// Body `slot`'s point velocity at the row's anchor, v + w x r (9.5), world, added to `out` with `sign`.
+IMPULSE_ROW_FUNCTION void add_point_velocity(const SolverBody& b, const Vec3& r, double sign, double* out) {
+    const Vec3& v = b.velocity;
+    const Vec3& w = b.angular_velocity;
+    out[0] += sign * (v.x() + (w.y() * r.z() - w.z() * r.y()));
+    out[1] += sign * (v.y() + (w.z() * r.x() - w.x() * r.z()));
+    out[2] += sign * (v.z() + (w.x() * r.y() - w.y() * r.x()));
+}
+
+IMPULSE_ROW_FUNCTION double along(const Vec3& axis, const double* v) {
+    return axis.x() * v[0] + axis.y() * v[1] + axis.z() * v[2];
+}
+
+// Step 4 for the row: the contact velocity (v_n, v_t1, v_t2) from the bodies as they are now, plus slip_offset.
+IMPULSE_ROW_FUNCTION Axes row_velocity(const ContactRow& row, const SolverBody* bodies) {
+    double relative[3] = {0.0, 0.0, 0.0};
+    add_point_velocity(bodies[row.body[0]], row.anchor[0], 1.0, relative);
+    if (row.body[1] >= 0) add_point_velocity(bodies[row.body[1]], row.anchor[1], -1.0, relative);
+    return {along(row.normal, relative), along(row.tangent1, relative) + row.slip_offset[0],
+            along(row.tangent2, relative) + row.slip_offset[1]};
+}
+
+// The normal velocity alone (the split impulse's push rows).
+IMPULSE_ROW_FUNCTION double row_normal_velocity(const ContactRow& row, const SolverBody* bodies) {
+    double relative[3] = {0.0, 0.0, 0.0};
+    add_point_velocity(bodies[row.body[0]], row.anchor[0], 1.0, relative);
+    if (row.body[1] >= 0) add_point_velocity(bodies[row.body[1]], row.anchor[1], -1.0, relative);
+    return along(row.normal, relative);
+}
+
+// lambda_n after the normal row; `unclamped` receives the total before the push-only clamp.
+IMPULSE_ROW_FUNCTION double normal_row(double total, double normal_velocity, double normal_mass,
+                                       const NormalTarget& target, double& unclamped) {
+    unclamped =
+        total + normal_mass * target.mass_scale * (target.velocity - normal_velocity) - target.impulse_scale * total;
+    return unclamped < 0.0 ? 0.0 : unclamped;
+}
+
+// The point of the disc |lambda_t| <= limit nearest (x, y) in K_tt's metric, for (x, y) outside it (see the
+// header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt (x, y), Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
+// `k` is K_tt as (11, 12, 22), `k_inverse` its inverse. Returns the point in (x, y).
+void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse, double& x, double& y,
+                     double limit);
+
+// One visit's three rows, as plain numbers: the total before, unclamped and after, and the clamps that acted.
+struct RowVisit {
+    Axes before;
+    Axes unclamped;
+    Axes after;
+    bool pushed_only = false;  // the normal total would have pulled
+    bool sliding = false;      // the friction total left the cone
+
+    ImpulseClamp clamp() const {
+        return pushed_only && sliding ? ImpulseClamp::both
+               : pushed_only          ? ImpulseClamp::push_only
+               : sliding              ? ImpulseClamp::friction
+                                      : ImpulseClamp::none;
+    }
+    Axes increment() const { return {after.n - before.n, after.t1 - before.t1, after.t2 - before.t2}; }
+    // As the trace records it.
+    AccumulatedImpulse accumulated() const {
+        return {vector_of(before), vector_of(unclamped), vector_of(after), clamp()};
+    }
+};
+
+// The friction rows (see the header) on the slip (s1, s2) once the normal change acts, from the tangential total
+// (x, y) before, and the cone's radius mu lambda_n: (x, y) becomes lambda_t,free in (free_x, free_y) and the total
+// after in (x, y); returns whether the contact slides (the cone clamped). Plain doubles in and out, so the caller's
+// values stay in registers.
+IMPULSE_ROW_FUNCTION bool friction_rows(const ContactRow& row, double s1, double s2, double limit, double& free_x,
+                                        double& free_y, double& x, double& y) {
+    const std::array<double, 3>& m = row.tangent_mass;
+    free_x = x - (m[0] * s1 + m[1] * s2);  // lambda_t,free = lambda_t - K_tt^-1 v_t'
+    free_y = y - (m[1] * s1 + m[2] * s2);
+    x = free_x;
+    y = free_y;
+    if (x * x + y * y <= limit * limit) return false;
+    if (limit <= 0.0) {
+        x = y = 0.0;
+    } else if (row.tangent_invertible) {
+        double px = x, py = y;  // (a copy whose address the out-of-line projection may take)
+        project_on_cone(row.tangent_response, row.tangent_mass, px, py, limit);
+        x = px;
+        y = py;
+    } else {
+        const double scale = limit / std::sqrt(x * x + y * y);
+        x *= scale;
+        y *= scale;
+    }
+    return true;
+}
+
+// One visit's three rows on the velocity `velocity` (row_velocity). The row's total is not changed here.
+IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& velocity, const NormalTarget& target) {
+    const Axes before = row.total_impulse;
+    double unclamped_n;
+    const double n = normal_row(before.n, velocity.n, row.normal_mass, target, unclamped_n);
+    double free_x = before.t1, free_y = before.t2, x = 0.0, y = 0.0;
+    bool sliding = false;
+    if (row.friction != 0.0) {
+        // The slip once the normal change acts: v_t' = v_t + K_tn (lambda_n after - before).
+        const double change = n - before.n;
+        x = before.t1;
+        y = before.t2;
+        sliding =
+            friction_rows(row, velocity.t1 + row.normal_to_tangent[0] * change,
+                          velocity.t2 + row.normal_to_tangent[1] * change, row.friction * n, free_x, free_y, x, y);
+    }
+    return RowVisit{before, {unclamped_n, free_x, free_y}, {n, x, y}, unclamped_n < 0.0, sliding};
+}
+
+// The normal row alone (soft step's restitution, the split impulse's pushes): tangential totals unchanged.
+IMPULSE_ROW_FUNCTION RowVisit solve_normal_row(const ContactRow& row, double normal_velocity,
+                                               const NormalTarget& target) {
+    RowVisit v;
+    v.before = v.unclamped = v.after = row.total_impulse;
+    v.after.n = normal_row(v.before.n, normal_velocity, row.normal_mass, target, v.unclamped.n);
+    v.pushed_only = v.unclamped.n < 0.0;
+    return v;
+}
+
+// A total from elsewhere (last frame's, re-projected on this frame's basis) put inside the limits a total
+// obeys: lambda_n >= 0 and |lambda_t| <= mu lambda_n (scaled back: there is no slip to oppose yet).
+inline RowVisit within_limits(const Vec3& total, double friction) {
+    RowVisit v;
+    v.unclamped = v.after = axes_of(total);
+    v.pushed_only = total.x() < 0.0;
+    if (v.pushed_only) v.after.n = 0.0;
+    const double limit = friction * v.after.n;
+    const double tangential = v.after.t1 * v.after.t1 + v.after.t2 * v.after.t2;
+    v.sliding = tangential > limit * limit;
+    if (v.sliding) {
+        const double scale = tangential > 0.0 ? limit / std::sqrt(tangential) : 0.0;
+        v.after.t1 *= scale;
+        v.after.t2 *= scale;
+    }
+    return v;
+}
+
+// The impulse `a` (contact coordinates) in world coordinates, g = C a.
+IMPULSE_ROW_FUNCTION Vec3 world_impulse(const ContactRow& row, const Axes& a) {
+    return {row.normal.x() * a.n + row.tangent1.x() * a.t1 + row.tangent2.x() * a.t2,
+            row.normal.y() * a.n + row.tangent1.y() * a.t1 + row.tangent2.y() * a.t2,
+            row.normal.z() * a.n + row.tangent1.z() * a.t1 + row.tangent2.z() * a.t2};
+}
+
+// Step 7 for one body: adds g m^-1 and I^-1 (r x g) to it; with `Change` a VelocityChange*, records exactly what
+// was added as its body `slot`'s values.
+template <typename Change>
+IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, double gx, double gy, double gz, int slot,
+                                        Change change) {
+    const double ux = r.y() * gz - r.z() * gy, uy = r.z() * gx - r.x() * gz,
+                 uz = r.x() * gy - r.y() * gx;   // u = q_rel x g  (14.2)
+    const double m = body.inverse_mass;          // (7.5)
+    const Mat3& inertia = body.inverse_inertia;  // I^-1 u  (14.1)
+    const double wx = inertia(0, 0) * ux + inertia(0, 1) * uy + inertia(0, 2) * uz;
+    const double wy = inertia(1, 0) * ux + inertia(1, 1) * uy + inertia(1, 2) * uz;
+    const double wz = inertia(2, 0) * ux + inertia(2, 1) * uy + inertia(2, 2) * uz;
+    body.velocity.x() += gx * m;
+    body.velocity.y() += gy * m;
+    body.velocity.z() += gz * m;
+    body.angular_velocity.x() += wx;
+    body.angular_velocity.y() += wy;
+    body.angular_velocity.z() += wz;
+    if constexpr (!std::is_same_v<Change, std::nullptr_t>) {
+        change->impulsive_torque[slot] = Vec3(ux, uy, uz);
+        change->velocity_change[slot] = Vec3(gx * m, gy * m, gz * m);
+        change->rotation_change[slot] = Vec3(wx, wy, wz);
+    }
+}
+
+// Step 7: applies g (world) to the row's bodies, +g to body 0 and -g to body 1. With `Change` a VelocityChange*,
+// also records exactly what was added; with std::nullptr_t, records nothing.
+template <typename Change>
+IMPULSE_ROW_FUNCTION void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse, Change change) {
+    const double gx = impulse.x(), gy = impulse.y(), gz = impulse.z();
+    apply_to_body(bodies[row.body[0]], row.anchor[0], gx, gy, gz, 0, change);
+    if (row.body[1] >= 0) apply_to_body(bodies[row.body[1]], row.anchor[1], -gx, -gy, -gz, 1, change);
+}
+
+// Keeps `after` as the row's total, field by field (a copy of the struct can become one 16-byte load of values
+// just stored 8 bytes at a time, which the processor cannot forward).
+IMPULSE_ROW_FUNCTION void keep_total(ContactRow& row, const Axes& after) {
+    row.total_impulse.n = after.n;
+    row.total_impulse.t1 = after.t1;
+    row.total_impulse.t2 = after.t2;
+}
+
+// |K (after - before)|^2: how much a visit changed its own contact's velocity (m/s), squared. A norm, so the
+// early stop of a sweeping method does not depend on the tangent basis.
+IMPULSE_ROW_FUNCTION double velocity_change_squared(const ContactRow& row, const Axes& d) {
+    const std::array<double, 2>& k_tn = row.normal_to_tangent;
+    const std::array<double, 3>& k_tt = row.tangent_response;
+    const double n = row.normal_response * d.n + k_tn[0] * d.t1 + k_tn[1] * d.t2;
+    const double t1 = k_tn[0] * d.n + k_tt[0] * d.t1 + k_tt[1] * d.t2;
+    const double t2 = k_tn[1] * d.n + k_tt[1] * d.t1 + k_tt[2] * d.t2;
+    return n * n + t1 * t1 + t2 * t2;
+}
+
+// Last frame's totals for this frame's rows, each remembered impulse given to one contact only: contacts of a
+// frame that share a memory key (hand-written contacts carry no features) leave it to the first, since the
+// memory kept the first one's total.
+class RememberedTotals {
+public:
+    explicit RememberedTotals(const ContactMemory& memory) : memory_(memory), taken_(memory.size(), 0) {}
+
+    // The remembered total of the row whose contact has `key` (contact_key), re-projected on this frame's basis
+    // and put within the row's limits, or nothing.
+    std::optional<RowVisit> of(const ContactRow& row, const ContactKey& key);
+
+private:
+    const ContactMemory& memory_;
+    std::vector<char> taken_;
+};
+
+// Stores every row's total, in world coordinates, under its contact's key (keys[r] for rows[r]), as this
+// frame's memory.
+void remember_totals(std::span<const ContactRow> rows, std::span<const ContactKey> keys, ContactMemory& memory);
+
+}  // namespace impulse

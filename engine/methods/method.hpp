@@ -1,0 +1,56 @@
+#pragma once
+// One signature for every resolution method, as solver2d gives every solver one (s2Solve_X(world, context)):
+// a method receives the frame (its bodies, its contacts prepared by steps 1-5, the settings, the forces, the
+// recorder and the contact memory), does its work, reports every iteration to the recorder, ends its phase
+// (recorder.end_phase) and says how the phase ended. Each method is one file in engine/methods/ defining one
+// of the functions below; engine/methods/method_table.hpp maps each settings value to its function, its scope
+// and the settings it reads. Nothing else names a method: adding one is its file, its enumerator in
+// resolver/settings.hpp, one row of the table, and its section in docs/methods.md.
+
+#include "body/rigid_body.hpp"
+#include "memory/contact_memory.hpp"
+#include "record/recorder.hpp"
+#include "resolver/prepared_contact.hpp"
+#include "resolver/settings.hpp"
+#include "world/integrate.hpp"
+
+#include <span>
+#include <vector>
+
+namespace impulse {
+
+// What acts on the bodies between contacts: only a method that owns the whole step (it integrates the bodies
+// itself) uses it. `impulse-lab resolve` gives none: the bodies move by their velocities alone.
+struct Forces {
+    Vec3 gravity = Vec3::Zero();
+    Damping damping{};
+};
+
+// One frame as a method sees it.
+struct FrameContext {
+    std::vector<RigidBody>& bodies;          // changed in place
+    std::vector<PreparedContact>& contacts;  // steps 1-5 and the bookkeeping the book's loops update
+    std::span<const MassProperties> mass;    // per body, as the contacts were prepared with
+    const ResolverSettings& settings;
+    Recorder& recorder;
+    ContactMemory* memory;  // warm-starting methods' impulses from last frame, replaced at the end (may be null)
+    Forces forces;
+};
+
+using MethodFunction = PhaseOutcome (*)(FrameContext& frame);
+
+// The velocity methods (velocity phase, or the whole step).
+PhaseOutcome worst_first_velocities(FrameContext& frame);             // worst_first.cpp
+PhaseOutcome sequential_sweep_velocities(FrameContext& frame);        // sequential_sweep.cpp
+PhaseOutcome projected_gauss_seidel_velocities(FrameContext& frame);  // projected_gauss_seidel.cpp
+PhaseOutcome soft_step(FrameContext& frame);                          // soft_step.cpp
+
+// The position methods.
+PhaseOutcome linear_projection_positions(FrameContext& frame);     // linear_projection.cpp
+PhaseOutcome nonlinear_projection_positions(FrameContext& frame);  // nonlinear_projection.cpp
+PhaseOutcome velocity_based_positions(FrameContext& frame);        // velocity_based.cpp
+PhaseOutcome relaxation_positions(FrameContext& frame);            // relaxation.cpp
+PhaseOutcome split_impulse_positions(FrameContext& frame);         // split_impulse.cpp
+PhaseOutcome no_positions(FrameContext& frame);                    // no_position_phase.cpp
+
+}  // namespace impulse

@@ -1,0 +1,81 @@
+#include "cli/outputs.hpp"
+
+#include "cli/input_files.hpp"
+#include "io/atomic_file.hpp"
+#include "io/input_error.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace impulse::cli {
+
+bool is_terminal(const std::ostream& stream) {
+    if (&stream == &std::cout) return ::isatty(STDOUT_FILENO) == 1;
+    if (&stream == &std::cerr) return ::isatty(STDERR_FILENO) == 1;
+    return false;
+}
+
+bool names_standard_output(const std::string& path, const std::ostream& out) {
+    if (path == standard_stream) return true;
+    if (&out != &std::cout) return false;
+    struct stat named {
+    }, standard{};
+    return ::stat(path.c_str(), &named) == 0 && ::fstat(STDOUT_FILENO, &standard) == 0 &&
+           named.st_dev == standard.st_dev && named.st_ino == standard.st_ino;
+}
+
+void Outputs::add(std::string_view flag, const std::optional<std::string>& path) {
+    if (!path) return;
+    const bool standard = names_standard_output(*path, out_);
+    if (standard) {
+        const auto first = std::find_if(named_.begin(), named_.end(), [](const Named& n) { return n.standard_output; });
+        if (first != named_.end())
+            throw io::InputError(std::string(flag),
+                                 "standard output already carries " + first->flag + "; only one output can go there");
+        to_standard_output_ = true;
+    } else {
+        io::check_writable(*path, flag);
+    }
+    named_.push_back({std::string(flag), *path, standard});
+}
+
+bool Outputs::to_standard_output(std::string_view flag) const {
+    return std::any_of(named_.begin(), named_.end(),
+                       [flag](const Named& n) { return n.flag == flag && n.standard_output; });
+}
+
+void Outputs::write(const std::vector<Text>& texts) const {
+    const auto named = [this](std::string_view flag) -> const Named* {
+        const auto found =
+            std::find_if(named_.begin(), named_.end(), [flag](const Named& n) { return n.flag == flag; });
+        return found == named_.end() ? nullptr : &*found;
+    };
+    std::string_view standard_text;
+    bool standard = false;
+    {
+        const io::DeferredSignals held;
+        std::vector<io::StagedFile> files;
+        for (const Text& t : texts) {
+            const Named* n = named(t.flag);
+            if (!n) continue;
+            if (n->standard_output) {
+                standard_text = t.text;
+                standard = true;
+            } else {
+                files.emplace_back(n->path, t.text, n->flag);
+            }
+        }
+        for (io::StagedFile& f : files) f.commit();
+    }
+    if (standard) out_.write(standard_text.data(), static_cast<std::streamsize>(standard_text.size())).flush();
+}
+
+std::string Outputs::file_of(std::string_view flag) const {
+    const auto found = std::find_if(named_.begin(), named_.end(), [flag](const Named& n) { return n.flag == flag; });
+    if (found == named_.end() || found->standard_output) return {};
+    return found->path;
+}
+
+}  // namespace impulse::cli

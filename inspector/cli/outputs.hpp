@@ -1,0 +1,60 @@
+#pragma once
+// The files a command writes, named by its flags. "-" is standard output, and so is a path that names the very
+// file, pipe or terminal standard output already is (/dev/stdout, or the file it was redirected to): writing
+// that path by name would replace a file the shell holds open, or write a device twice. When standard output
+// carries a file nothing else goes there: the command's report moves to standard error. The other outputs are
+// checked before the command runs and written together at its end, atomically (io/atomic_file.hpp).
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impulse::cli {
+
+// True when `stream` is the program's standard output or error and that is a terminal.
+bool is_terminal(const std::ostream& stream);
+
+// True when writing `path` would write the program's standard output: "-", or a path naming what standard
+// output is. Only when `out` is std::cout can a path name it (in-process tests give a string stream).
+bool names_standard_output(const std::string& path, const std::ostream& out);
+
+class Outputs {
+public:
+    Outputs(std::ostream& out, std::ostream& err) : out_(out), err_(err) {}
+
+    // Names one output, if given, and checks it now: writable, or standard output. Throws io::InputError(flag, ...)
+    // for a second output on standard output, or an output that cannot be written.
+    void add(std::string_view flag, const std::optional<std::string>& path);
+
+    // Where the command's report and notes go: standard output, or standard error when a file goes there.
+    std::ostream& report() const { return to_standard_output_ ? err_ : out_; }
+    bool to_standard_output() const { return to_standard_output_; }
+    // The output a flag names goes to standard output.
+    bool to_standard_output(std::string_view flag) const;
+
+    // Writes each output's text (by its flag; an output not named is skipped): the files are staged, renamed
+    // together with Ctrl-C held back until all are in place, then standard output gets its one.
+    struct Text {
+        std::string_view flag;
+        std::string_view text;
+    };
+    void write(const std::vector<Text>& texts) const;
+
+    // The file a flag's output goes to, for the report; "" when it goes to standard output or was not named.
+    std::string file_of(std::string_view flag) const;
+
+private:
+    struct Named {
+        std::string flag;
+        std::string path;
+        bool standard_output;
+    };
+    std::ostream& out_;
+    std::ostream& err_;
+    std::vector<Named> named_;
+    bool to_standard_output_ = false;
+};
+
+}  // namespace impulse::cli

@@ -118,8 +118,7 @@ json preparation_json(const ContactPreparation& d) {
     };
     out["torque_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::torque_per_unit_impulse));
     out["rotation_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::rotation_per_unit_impulse));
-    out["point_velocity_per_unit_impulse"] =
-        per_body_vec3(field(&UnitImpulseResponse::velocity_per_unit_impulse));
+    out["point_velocity_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::velocity_per_unit_impulse));
     out["angular_component"] = per_body_number(field(&UnitImpulseResponse::angular_component));
     out["linear_component"] = per_body_number(field(&UnitImpulseResponse::linear_component));
     out["delta_velocity_per_unit_impulse"] = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;

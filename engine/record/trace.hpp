@@ -68,7 +68,7 @@ inline void end_recording_before(TraceFilter& filter, int frame) {
 
 struct Trace {
     int version = trace_format_version;  // the format the file was written in (a reader upgrades older ones)
-    Scene scene;  // the bodies and contacts as loaded, with the settings that ran
+    Scene scene;                         // the bodies and contacts as loaded, with the settings that ran
     TraceFilter recording;
     std::vector<FrameRecord> frames;
 

@@ -14,20 +14,20 @@ namespace impulse::words {
 // The step names, each a word of the table below (or, for `choice`, `contact`, `body` and `settings`, what a
 // given value comes from). Code names a step through these constants, never through a string literal.
 namespace step {
-inline constexpr std::string_view choice = "choice";          // which contact an iteration takes, and why
-inline constexpr std::string_view basis = "basis";            // step 1
+inline constexpr std::string_view choice = "choice";                        // which contact an iteration takes, and why
+inline constexpr std::string_view basis = "basis";                          // step 1
 inline constexpr std::string_view relative_position = "relative_position";  // step 2
 inline constexpr std::string_view delta_velocity_per_unit_impulse = "delta_velocity_per_unit_impulse";  // 3
 inline constexpr std::string_view contact_velocity = "contact_velocity";                                // 4
 inline constexpr std::string_view desired_delta_velocity = "desired_delta_velocity";                    // 5
-inline constexpr std::string_view accumulated = "accumulated";  // the accumulating solvers' running total
-inline constexpr std::string_view impulse = "impulse";          // step 6
+inline constexpr std::string_view accumulated = "accumulated";          // the accumulating solvers' running total
+inline constexpr std::string_view impulse = "impulse";                  // step 6
 inline constexpr std::string_view velocity_change = "velocity_change";  // step 7
 inline constexpr std::string_view rewind = "rewind";                    // step 8, velocity-based
 inline constexpr std::string_view penetration_inertia = "penetration_inertia";  // step 8
 inline constexpr std::string_view move_split = "move_split";                    // step 8
 inline constexpr std::string_view position_change = "position_change";          // step 8
-inline constexpr std::string_view updates = "updates";  // the other contacts' bookkeeping
+inline constexpr std::string_view updates = "updates";                          // the other contacts' bookkeeping
 // Where a given value comes from (not steps a table shows).
 inline constexpr std::string_view contact = "contact";    // collision detection or the case file
 inline constexpr std::string_view body = "body";          // a body's state or mass
@@ -46,17 +46,17 @@ enum class Kind {
     integer,
     number,
     boolean,
-    word,             // a string from a fixed list
+    word,  // a string from a fixed list
     vec2,
     vec3,
     mat3,
     per_body_number,  // [body0, body1], null for the world or where it does not apply
     per_body_vec3,
     per_body_bool,
-    bodies,           // [body0, body1] indices, null = the world
-    object,           // an object whose keys are words of their own ("rewind": "rewind.time", ...)
-    list,             // an array of objects whose keys are words of their own ("updates[].after")
-    none,             // not stored under this name: shown by the inspector, kept elsewhere (see `stored_at`)
+    bodies,  // [body0, body1] indices, null = the world
+    object,  // an object whose keys are words of their own ("rewind": "rewind.time", ...)
+    list,    // an array of objects whose keys are words of their own ("updates[].after")
+    none,    // not stored under this name: shown by the inspector, kept elsewhere (see `stored_at`)
 };
 
 // What a word is to the derivation.

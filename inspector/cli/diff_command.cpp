@@ -249,8 +249,7 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     if (!whole_class) {
         // One file: its every mismatch; a file that cannot be read is bad input.
         const coursework::DiffReport r = diff_file(reference, files.front().file, tolerance, err);
-        const coursework::DiffSubject subject{input_name(options.reference), input_name(files.front().file),
-                                              tolerance};
+        const coursework::DiffSubject subject{input_name(options.reference), input_name(files.front().file), tolerance};
         const std::string report = options.format == "json"  ? coursework::report_json(r, subject)
                                    : options.format == "csv" ? coursework::report_csv(r)
                                                              : coursework::report_text(r, subject);

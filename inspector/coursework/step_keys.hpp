@@ -33,8 +33,8 @@ struct StepKey {
     ItemKind item;
     std::string_view key;  // inside the item object: "basis", "friction_solve.static_impulse", "updates[].after"
     Role role;
-    std::string_view step;  // the step table that shows it; empty for given and context keys
-    bool per_body;          // a [body0, body1] array: one cell per body present (null = the world)
+    std::string_view step;    // the step table that shows it; empty for given and context keys
+    bool per_body;            // a [body0, body1] array: one cell per body present (null = the world)
     const words::Word* word;  // its word (engine/record/words.hpp): formula, equation, unit, meaning
 };
 

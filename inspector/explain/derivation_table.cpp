@@ -154,7 +154,8 @@ std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bo
 }
 
 StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false, bool warm_start = false) {
-    Table t(std::string(words::step::desired_delta_velocity), "desired_delta_velocity — the velocity change the impulse must make");
+    Table t(std::string(words::step::desired_delta_velocity),
+            "desired_delta_velocity — the velocity change the impulse must make");
     t.row("separating_velocity", d.separating_velocity);
     t.row("restitution", d.restitution);
     if (d.restitution_cutoff > 0.0) {
@@ -219,7 +220,8 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
         .row("basis", d.basis.contact_to_world);
     tables.push_back(basis_step.done());
 
-    Table relative(std::string(words::step::relative_position), "relative_position — where the contact is on each body", basis);
+    Table relative(std::string(words::step::relative_position), "relative_position — where the contact is on each body",
+                   basis);
     relative.world_vectors("relative_position", d.relative_position);
     tables.push_back(relative.done());
 
@@ -260,7 +262,8 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
         const bool split = r->method == PositionMethod::split_impulse;
         if (r->rewind) {
             const Rewind& w = *r->rewind;
-            Table rewind(std::string(words::step::rewind), "rewind — move the bodies back along their paths (velocity_based)", basis);
+            Table rewind(std::string(words::step::rewind),
+                         "rewind — move the bodies back along their paths (velocity_based)", basis);
             rewind.row("rewind.closing_velocity", w.closing_velocity)
                 .row("rewind.time", w.time, std::nullopt, {},
                      w.time == w.time_limit && w.time > 0 ? "the whole frame" : "")
@@ -283,7 +286,8 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
                 .row("penetration_inertia", r->inertia.total_inertia, std::nullopt, linear_only ? "Σ linear" : "");
             tables.push_back(inertia.done());
 
-            Table moves(std::string(words::step::move_split), "move_split — how much of the move is linear, how much angular");
+            Table moves(std::string(words::step::move_split),
+                        "move_split — how much of the move is linear, how much angular");
             bool limited = false;
             if (const auto& limit = r->angular_limit) {
                 moves.per_body("angular_limit.linear_move_before", limit->before.linear_move)
@@ -375,7 +379,8 @@ std::string sweep_meaning(SolverStage stage) {
 std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, const Mat3* basis) {
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
-        Table velocity(std::string(words::step::contact_velocity), "contact_velocity — as the resolver has it now", basis);
+        Table velocity(std::string(words::step::contact_velocity), "contact_velocity — as the resolver has it now",
+                       basis);
         // The book's resolver keeps it as bookkeeping (the prepared value, updated by each iteration that
         // changed a body); the accumulating solvers read it from the bodies at every visit.
         velocity.contact_vector("contact_velocity", r->contact_velocity,
@@ -386,8 +391,8 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         const bool warm_start = it.sweep && it.sweep->stage == SolverStage::warm_start;
         tables.push_back(desired_table(r->desired_delta_velocity, accumulating, warm_start));
         if (const auto& a = it.accumulated) {
-            Table total(std::string(words::step::accumulated), "accumulated — the running total, kept within its limits",
-                        basis);
+            Table total(std::string(words::step::accumulated),
+                        "accumulated — the running total, kept within its limits", basis);
             total.contact_vector("accumulated.before", a->before)
                 .contact_vector("accumulated.unclamped", a->unclamped,
                                 warm_start ? "λ, last frame's total re-applied"
@@ -411,7 +416,7 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
                 .row("friction_solve.cone_limit", s->cone_limit);
             if (s->sliding_direction)
                 impulse.row("friction_solve.sliding_direction", "(" + number(s->sliding_direction->x(), 1.0) + ", " +
-                                                     number(s->sliding_direction->y(), 1.0) + ")");
+                                                                    number(s->sliding_direction->y(), 1.0) + ")");
             if (s->sliding_normal_response)
                 impulse.row("friction_solve.sliding_normal_response", *s->sliding_normal_response);
         }

@@ -68,7 +68,8 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
          "epsilon",
          e_exact},
     };
-    return {std::string(words::step::choice), "choice — iteration " + count + " picks contact " + chosen, std::move(rows)};
+    return {std::string(words::step::choice), "choice — iteration " + count + " picks contact " + chosen,
+            std::move(rows)};
 }
 
 // A position iteration's pass, as the choice table words it.

@@ -154,7 +154,7 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
     // Ben's d is the first wrong number; the impulse and everything computed from it follow.
     CHECK(summary[2].fields[6] != "100.0");
     CHECK(summary[2].fields[7] ==
-          "frame 0 · preparation · contact 0 · velocity_per_unit_impulse: delta_velocity_per_unit_impulse");
+          "frame 0 · preparation · contact 0 · delta_velocity_per_unit_impulse: delta_velocity_per_unit_impulse");
     CHECK(summary[2].fields[8] == "frames[0].contacts[0].delta_velocity_per_unit_impulse");
     // 14 blank of 67: 53 / 67 = 79.1 %.
     CHECK(summary[3].fields == std::vector<std::string>{dir.file("class/cy.csv").string(), "worksheet", "67", "53", "0",
@@ -172,7 +172,7 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
                row.fields[9] == "frames[0].contacts[0].delta_velocity_per_unit_impulse";
     });
     REQUIRE(ben_d != cells.end());
-    CHECK(ben_d->fields[1] == "frame 0 · preparation · contact 0 · velocity_per_unit_impulse");
+    CHECK(ben_d->fields[1] == "frame 0 · preparation · contact 0 · delta_velocity_per_unit_impulse");
     CHECK(ben_d->fields[2] == "delta_velocity_per_unit_impulse");
     CHECK(ben_d->fields[3] == "m/s per N·s");
     CHECK(ben_d->fields[5] == "1.33333");
@@ -213,7 +213,7 @@ TEST_CASE("the class summary in the terminal shows each file's wrong cells in th
                                                           "frame 0 · velocity phase · iteration 0 · contact 0 · "
                                                           "impulse\n"
                                                           "▶  value  impulse_world[1]  0.14073673208  0.15   N·s   "
-                                                          "0.0658      C · impulse_contact\n") != std::string::npos);
+                                                          "0.0658      C · impulse\n") != std::string::npos);
     CHECK(r.out.find("2 files: 1 all match, 1 with mismatches or blanks, 0 unreadable") != std::string::npos);
 }
 

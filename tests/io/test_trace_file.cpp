@@ -110,13 +110,12 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
                                             "desired_delta_velocity"};
     CHECK(keys == expected);
     const io::json& position = j["frames"][0]["phases"][0]["iterations"][0];
-    for (const char* key :
-         {"linear_inertia", "angular_inertia", "penetration_inertia", "move_split", "angular_limit", "position_change",
-          "updates"})
+    for (const char* key : {"linear_inertia", "angular_inertia", "penetration_inertia", "move_split", "angular_limit",
+                            "position_change", "updates"})
         CHECK_MESSAGE(position.contains(key), key);
     const io::json& velocity = j["frames"][0]["phases"][1]["iterations"][0];
-    for (const char* key : {"contact_velocity", "desired_delta_velocity", "impulse", "impulse_world",
-                            "velocity_change", "rotation_change", "updates"})
+    for (const char* key : {"contact_velocity", "desired_delta_velocity", "impulse", "impulse_world", "velocity_change",
+                            "rotation_change", "updates"})
         CHECK_MESSAGE(velocity.contains(key), key);
 }
 

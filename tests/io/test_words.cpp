@@ -2,6 +2,7 @@
 // (every key in both, of the same kind), the keys and kinds a trace writes, the committed docs, and format 1's
 // traces, which still open with the renames.
 
+#include "io/input_error.hpp"
 #include "io/json_text.hpp"
 #include "io/scene_file.hpp"
 #include "io/trace_docs.hpp"
@@ -94,33 +95,43 @@ KeyKinds word_keys(char item) {
 // The kind of a written value, as the word list names kinds (per body: two elements, one maybe null).
 bool value_is(const io::json& v, words::Kind kind) {
     const auto vec = [](const io::json& x, std::size_t n) {
-        return x.is_array() && x.size() == n && std::all_of(x.begin(), x.end(), [](const io::json& e) {
-                   return e.is_number();
-               });
+        return x.is_array() && x.size() == n &&
+               std::all_of(x.begin(), x.end(), [](const io::json& e) { return e.is_number(); });
     };
     const auto per_body = [&v](auto element) {
-        return v.is_array() && v.size() == 2 && std::all_of(v.begin(), v.end(), [&](const io::json& e) {
-                   return e.is_null() || element(e);
-               });
+        return v.is_array() && v.size() == 2 &&
+               std::all_of(v.begin(), v.end(), [&](const io::json& e) { return e.is_null() || element(e); });
     };
     switch (kind) {
-        case words::Kind::integer: return v.is_number_integer();
-        case words::Kind::number: return v.is_number();
-        case words::Kind::boolean: return v.is_boolean();
-        case words::Kind::word: return v.is_string();
-        case words::Kind::vec2: return vec(v, 2);
-        case words::Kind::vec3: return vec(v, 3);
+        case words::Kind::integer:
+            return v.is_number_integer();
+        case words::Kind::number:
+            return v.is_number();
+        case words::Kind::boolean:
+            return v.is_boolean();
+        case words::Kind::word:
+            return v.is_string();
+        case words::Kind::vec2:
+            return vec(v, 2);
+        case words::Kind::vec3:
+            return vec(v, 3);
         case words::Kind::mat3:
-            return v.is_array() && v.size() == 3 && std::all_of(v.begin(), v.end(), [&](const io::json& r) {
-                       return vec(r, 3);
-                   });
-        case words::Kind::per_body_number: return per_body([](const io::json& e) { return e.is_number(); });
-        case words::Kind::per_body_vec3: return per_body([&](const io::json& e) { return vec(e, 3); });
-        case words::Kind::per_body_bool: return per_body([](const io::json& e) { return e.is_boolean(); });
-        case words::Kind::bodies: return per_body([](const io::json& e) { return e.is_number_integer(); });
-        case words::Kind::object: return v.is_object();
-        case words::Kind::list: return v.is_array();
-        case words::Kind::none: return false;
+            return v.is_array() && v.size() == 3 &&
+                   std::all_of(v.begin(), v.end(), [&](const io::json& r) { return vec(r, 3); });
+        case words::Kind::per_body_number:
+            return per_body([](const io::json& e) { return e.is_number(); });
+        case words::Kind::per_body_vec3:
+            return per_body([&](const io::json& e) { return vec(e, 3); });
+        case words::Kind::per_body_bool:
+            return per_body([](const io::json& e) { return e.is_boolean(); });
+        case words::Kind::bodies:
+            return per_body([](const io::json& e) { return e.is_number_integer(); });
+        case words::Kind::object:
+            return v.is_object();
+        case words::Kind::list:
+            return v.is_array();
+        case words::Kind::none:
+            return false;
     }
     return false;
 }
@@ -142,7 +153,8 @@ void check_item(const io::json& item, char kind, const std::string& prefix, std:
 
 Trace resolved_case(const std::string& name, const std::string& preset, const std::vector<std::string>& set = {}) {
     Trace trace;
-    trace.scene = io::read_scene(io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/scenes/" + name + ".json")), preset);
+    trace.scene =
+        io::read_scene(io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/scenes/" + name + ".json")), preset);
     for (const std::string& s : set) io::apply_setting(trace.scene, s, "--set");
     std::vector<RigidBody> bodies = trace.scene.bodies;
     TraceRecorder recorder(trace);
@@ -232,4 +244,96 @@ TEST_CASE("docs/trace-format.md lists the words as the word list has them") {
     CHECK_MESSAGE(generated == committed,
                   "docs/trace-format.md's word tables differ from engine/record/words.cpp; regenerate them with "
                   "IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*'");
+}
+
+namespace {
+
+// A committed trace of format 1 (tests/data/format1, written by the last format-1 build) and the same run today.
+struct Format1Pair {
+    io::json old_document;
+    Trace read;     // the format-1 file read
+    Trace current;  // the same case and settings resolved now
+};
+
+Format1Pair format1_pair(const std::string& file, const std::string& name, const std::string& preset,
+                         const std::vector<std::string>& set = {}) {
+    Format1Pair pair;
+    pair.old_document = io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/tests/data/format1/" + file));
+    pair.read = io::read_trace(pair.old_document);
+    pair.current = resolved_case(name, preset, set);
+    return pair;
+}
+
+}  // namespace
+
+TEST_CASE("a format-1 trace opens: every value where format 2 keeps it, and the version says it was format 1") {
+    // tilted_box with velocity-based resolution: the rewind, the angular limit, the move split and the position
+    // change of format 1's flat keys (linear_move, total_inertia, linear_change ...), and an impulse_contact.
+    const Format1Pair velocity_based = format1_pair("tilted_box.velocity_based.trace.json", "cases/tilted_box", "book",
+                                                    {"position_method=velocity_based"});
+    CHECK(velocity_based.old_document["version"] == 1);
+    CHECK(velocity_based.read.version == 1);
+    CHECK(velocity_based.read.frames == velocity_based.current.frames);
+    // Written again, it is format 2, key for key what today's run writes.
+    CHECK(io::trace_json(velocity_based.read) == io::trace_json(velocity_based.current));
+
+    // The split impulse's push was `amount` in format 1: it is read as push_impulse, in N·s.
+    const Format1Pair split = format1_pair("tilted_box.pgs_split.trace.json", "cases/tilted_box", "pgs_split");
+    CHECK(split.read.frames == split.current.frames);
+    CHECK(io::trace_json(split.read) == io::trace_json(split.current));
+    const io::json upgraded = io::trace_json(split.read);
+    bool pushed = false;
+    for (const io::json& phase : upgraded["frames"][0]["phases"])
+        for (const io::json& it : phase["iterations"])
+            if (it.contains("method") && it["method"] == "split_impulse") {
+                CHECK(it.contains("push_impulse"));
+                CHECK_FALSE(it.contains("amount"));
+                pushed = true;
+            }
+    CHECK(pushed);
+}
+
+TEST_CASE("upgrading a format-1 document moves exactly the renamed keys and sets the version") {
+    io::json document =
+        io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/tests/data/format1/tilted_box.velocity_based.trace.json"));
+    const io::json& old_position = document["frames"][0]["phases"][0]["iterations"][0];
+    const io::json linear_move = old_position["linear_move"];
+    const io::json total = old_position["total_inertia"];
+    const io::json impulse = document["frames"][0]["phases"][1]["iterations"][0]["impulse_contact"];
+    const io::json point_velocity = document["frames"][0]["contacts"][0]["velocity_per_unit_impulse"];
+    REQUIRE(io::upgrade_trace_document(document) == std::optional<int>(1));
+    CHECK(document["version"] == trace_format_version);
+    const io::json& position = document["frames"][0]["phases"][0]["iterations"][0];
+    CHECK(position["move_split"]["linear_move"] == linear_move);
+    CHECK(position["penetration_inertia"] == total);
+    CHECK_FALSE(position.contains("linear_move"));
+    CHECK_FALSE(position.contains("total_inertia"));
+    CHECK(position.contains("amount"));  // velocity-based: a distance, still `amount`
+    CHECK(document["frames"][0]["phases"][1]["iterations"][0]["impulse"] == impulse);
+    CHECK(document["frames"][0]["contacts"][0]["point_velocity_per_unit_impulse"] == point_velocity);
+    // A current document is left alone.
+    CHECK_FALSE(io::upgrade_trace_document(document).has_value());
+    // The note names the file and the two formats in one line.
+    const std::string note = io::format1_note("old.json");
+    CHECK(note.find("old.json") != std::string::npos);
+    CHECK(note.find("format 1") != std::string::npos);
+    CHECK(note.find('\n') == std::string::npos);
+}
+
+TEST_CASE("a format-2 trace that records a split impulse's push as amount is refused with the path") {
+    io::json document = io::trace_json(resolved_case("cases/tilted_box", "pgs_split"));
+    for (io::json& phase : document["frames"][0]["phases"])
+        for (io::json& it : phase["iterations"])
+            if (it.contains("push_impulse")) {
+                it["amount"] = it["push_impulse"];
+                it.erase("push_impulse");
+                break;
+            }
+    try {
+        io::read_trace(document);
+        FAIL("read");
+    } catch (const io::InputError& e) {
+        CHECK(e.where().find("frames[0].phases[") == 0);
+        CHECK(e.problem().find("push_impulse") != std::string::npos);
+    }
 }

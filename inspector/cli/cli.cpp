@@ -138,7 +138,8 @@ void add_lesson(CLI::App& app, LessonOptions& o, FlagCatalog& c) {
     CLI::App* lesson = app.add_subcommand(
         "lesson",
         "The course on chapter 14: without N, the lessons and your progress; with N, that lesson in the\n"
-        "inspector (a window; with --headless or without a display, annotated text and PNGs in a folder).\n"
+        "inspector's window; with --text, or without a display in a terminal, asked in the terminal; with\n"
+        "--headless, or with neither, annotated text with the answers and PNGs in a folder.\n"
         "Example: impulse-lab lesson 1");
     whole_number(lesson->add_option("N", o.number, "Lesson number"), c, 1, 99);
     lesson->add_flag("--headless", o.headless, "Print the lesson as text; write its trace and a PNG per step");
@@ -418,8 +419,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (app.got_subcommand("worksheet")) return worksheet_command(worksheet, out, err);
         if (app.got_subcommand("diff")) return diff_command(diff, out, err);
-        if (app.got_subcommand("bench"))
-            return bench_command(bench, out, err, err_is_terminal ? &err : nullptr);
+        if (app.got_subcommand("bench")) return bench_command(bench, out, err, err_is_terminal ? &err : nullptr);
         if (app.got_subcommand("completion")) {
             out << bash_completion(app, catalog);
             return exit_ok;

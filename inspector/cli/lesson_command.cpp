@@ -1,6 +1,7 @@
 // `impulse-lab lesson [N]`: the course. Without N, the lessons with their titles and the student's progress;
-// with N, the lesson in the inspector's window, or, headless (or with no display), as annotated text in the
-// terminal plus the trace and one screenshot per step in a folder.
+// with N, the lesson in the inspector's window; with --text (or no display but a terminal on standard input)
+// asked in the terminal; headless (or with neither) as annotated text with the answers, plus the trace and one
+// screenshot per step in a folder.
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"

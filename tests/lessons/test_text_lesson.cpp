@@ -2,12 +2,16 @@
 // until given, a wrong answer told how far off, a retry, a skip, quitting midway and coming back; progress
 // saved as the window saves it. Without a terminal the lesson is printed with its answers and never waits.
 
+#include "lessons/lesson.hpp"
 #include "lessons/progress.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 #include "support/terminal.hpp"
 
 #include <doctest/doctest.h>
+
+#include <cmath>
+#include <cstdio>
 
 namespace impulse::test {
 
@@ -113,6 +117,57 @@ TEST_CASE("a student who quits a lesson in a terminal midway comes back to the s
     t.expect("Lesson 1: 2 right at the first try.");
     CHECK(t.wait() == 0);
     CHECK(lessons::tally(course.progress()).first_try == 2);
+}
+
+// Every shipped lesson taken to its end in a terminal, each question answered with the engine's value: before
+// the answer is given the terminal never shows it (a predict answer's text, "0.132 N·s"), and at the end every
+// question counts as right at the first try. The lessons whose runs are long (the brick wall) take a few
+// seconds; the whole course well under a minute.
+TEST_CASE("every shipped lesson can be taken to its end in a terminal without seeing an answer before answering") {
+    const std::filesystem::path course = IMPULSE_SOURCE_DIR "/lessons";
+    const std::vector<std::filesystem::path> files = lessons::lesson_files(course);
+    REQUIRE(files.size() == 13);
+    for (const std::filesystem::path& file : files) {
+        INFO(file.filename().string());
+        const lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(file));
+        const std::vector<lessons::Step>& steps = prepared.lesson.steps;
+        TempDir config;
+        Terminal t({program, "lesson", std::to_string(prepared.lesson.number), "--text", "--lessons", course.string()},
+                   {{"XDG_CONFIG_HOME", config.file("cfg").string()},
+                    {"DISPLAY", std::nullopt},
+                    {"WAYLAND_DISPLAY", std::nullopt}});
+        for (std::size_t k = 0; k < steps.size(); ++k) {
+            t.expect("Step " + std::to_string(k + 1) + " of " + std::to_string(steps.size()));
+            if (const auto& q = steps[k].question) {
+                const lessons::Answer& answer = *prepared.answers[k];
+                const std::string shown = t.expect("Your answer");
+                std::string typed;
+                if (q->kind == lessons::Question::Kind::predict) {
+                    const double value = answer.value.get<double>();
+                    const double allowed = std::max(q->tolerance.relative.value_or(0) * std::abs(value),
+                                                    q->tolerance.absolute.value_or(0));
+                    // A 0 is everywhere; any other answer's text is the giveaway.
+                    if (std::abs(value) > allowed)
+                        CHECK_MESSAGE(
+                            shown.find(answer.shown) == std::string::npos,
+                            "step " << k + 1 << " shows its answer " << answer.shown << " before it is given");
+                    char text[32];
+                    std::snprintf(text, sizeof text, "%.17g", value);
+                    typed = text;
+                } else {
+                    typed = std::to_string(answer.correct_option + 1);
+                }
+                t.send(typed);
+                t.expect("right: ");
+            }
+            t.expect(k + 1 == steps.size() ? "That was the last step" : "Enter: next step");
+            t.send("");
+        }
+        const int questions = lessons::question_count(prepared.lesson);
+        t.expect("Lesson " + std::to_string(prepared.lesson.number) + ": " + std::to_string(questions) +
+                 " right at the first try.");
+        CHECK(t.wait() == 0);
+    }
 }
 
 TEST_CASE("without a display, a lesson in a terminal asks its questions there and says why") {

@@ -185,7 +185,7 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
     const std::string ben = read_text(dir.file("report/feedback/ben.md"));
     CHECK(ben.starts_with("# Feedback on ben.csv\n"));
     CHECK(
-        ben.find("## ▶ Where it first went wrong\n\n**frame 0 · preparation · contact 0 · velocity_per_unit_impulse**, "
+        ben.find("## ▶ Where it first went wrong\n\n**frame 0 · preparation · contact 0 · delta_velocity_per_unit_impulse**, "
                  "`delta_velocity_per_unit_impulse` (m/s per N·s): the engine has 2.22559, you have 1.33333") !=
         std::string::npos);
     CHECK(lines_with(ben, "| ▶ |") == 1);

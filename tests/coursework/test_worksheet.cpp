@@ -70,6 +70,14 @@ std::vector<Trace> every_kind_of_trace() {
     inspect::OpenOptions scene;
     scene.frames = 3;
     traces.push_back(opened("box_tipping", scene));
+    // The sweeping methods' words: sweeps, accumulated totals, the split impulse's push, Baumgarte's bias.
+    for (const char* preset : {"sweep", "pgs", "pgs_split", "soft_step"}) {
+        inspect::OpenOptions options;
+        options.preset = preset;
+        traces.push_back(opened("cases/tilted_box", options));
+        options.settings = {"baumgarte=true"};
+        traces.push_back(opened("cases/tilted_box", options));
+    }
     return traces;
 }
 

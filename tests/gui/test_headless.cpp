@@ -73,7 +73,7 @@ TEST_CASE("a headless script steps through the ruler case, exports, and the expo
                                   "screenshot " +
                                       dir.file("desired.png").string() +
                                       "\n"
-                                      "goto phase=position,step=angular_change\n"
+                                      "goto phase=position,step=position_change.angular_change\n"
                                       "screenshot " +
                                       dir.file("angular.png").string() +
                                       "\n"

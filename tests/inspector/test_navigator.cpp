@@ -374,7 +374,8 @@ TEST_CASE("step=angular_change goes to the position phase's table that shows the
     const Trace trace = opened("cases/ruler");
     REQUIRE(item_count(trace.frames[0], Stage::position) == 1);
     REQUIRE(trace.frames[0].position.iterations[0].resolution.has_value());
-    const Cursor c = resolve_goto(trace, parse_goto("phase=position,step=angular_change", "--goto"), "--goto");
+    const Cursor c =
+        resolve_goto(trace, parse_goto("phase=position,step=position_change.angular_change", "--goto"), "--goto");
     CHECK(c == Cursor{0, Stage::position, 0, 3});
     CHECK(step_at(trace, c) == "position_change");
     const std::vector<explain::StepTable> tables = step_tables(trace, c);
@@ -390,8 +391,8 @@ TEST_CASE("a step named without a phase is found in the first stage of the frame
     // The ruler's preparation shows no angular change; its position phase does (the test above): without phase=,
     // the goto lands where the step is, as an iteration without a phase lands in the first phase that has it.
     const Trace trace = opened("cases/ruler");
-    CHECK(resolve_goto(trace, parse_goto("step=angular_change", "g"), "g") ==
-          resolve_goto(trace, parse_goto("phase=position,step=angular_change", "g"), "g"));
+    CHECK(resolve_goto(trace, parse_goto("step=position_change.angular_change", "g"), "g") ==
+          resolve_goto(trace, parse_goto("phase=position,step=position_change.angular_change", "g"), "g"));
     // The preparation still comes first for a step it has.
     CHECK(resolve_goto(trace, parse_goto("step=basis", "g"), "g") == Cursor{0, Stage::preparation, 0, 0});
 }

@@ -122,7 +122,7 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
 TEST_CASE("the header says what ran: format, version, conventions, full settings and the scene") {
     const io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
     CHECK(j["format"] == "impulse-lab-trace");
-    CHECK(j["version"] == 1);
+    CHECK(j["version"] == 2);
     CHECK(j["conventions"]["quaternion"] == "[w, x, y, z], unit, body to world");
     CHECK(j["settings"] == io::settings_json(*preset("book"), WorldSettings{}));
     CHECK(j["scene"]["bodies"][0]["name"] == "ruler");
@@ -143,8 +143,8 @@ TEST_CASE("a trace whose indices point outside its scene is rejected with the pa
 
 TEST_CASE("a trace from a future format version is refused") {
     io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
-    j["version"] = 2;
-    CHECK_THROWS_WITH_AS(io::read_trace(j), "version: must be 1, got 2", io::InputError);
+    j["version"] = 3;
+    CHECK_THROWS_WITH_AS(io::read_trace(j), "version: must be 2, got 3", io::InputError);
 }
 
 TEST_CASE("a misspelt derivation key in a trace is named with its path") {

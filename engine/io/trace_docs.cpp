@@ -52,7 +52,7 @@ std::string item_table(char item, std::string_view title) {
     out += title;
     out += "\n\n| key | kind | unit | step | formula | equation | meaning |\n|---|---|---|---|---|---|---|\n";
     for (const words::Word& w : words::all()) {
-        if (!words::held_by(w, item)) continue;
+        if (!words::held_by(w, item) || w.kind == words::Kind::none) continue;
         const bool derived = w.role == words::Role::computed;
         out += "| `" + cell(w.quantity) + "` | " + std::string(kind_name(w.kind)) + " | " + cell(w.unit) + " | " +
                (derived ? "`" + std::string(w.step) + "`" : cell(w.step)) + " | " + cell(w.formula) + " | " +

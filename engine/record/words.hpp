@@ -78,7 +78,7 @@ struct Word {
     std::string_view step = {};
     std::string_view inputs = {};  // the words it is computed from, separated by spaces
     // The items that hold it: C a prepared contact, P a position iteration, V a velocity iteration, F the
-    // frame; empty when the trace does not keep it under this name (then `stored_at` says where it is).
+    // frame. A word of kind `none` is shown for those items but stored elsewhere (`stored_at`).
     std::string_view items = {};
     Kind kind = Kind::none;
     Role role = Role::computed;

@@ -20,7 +20,9 @@ std::vector<StepKey> keys_from_words() {
                                      std::pair{ItemKind::velocity_iteration, 'V'}})
         for (const words::Word& w : all) {
             // Objects and lists hold words of their own ("rewind.time", "updates[].after"): those are the keys.
-            if (!words::held_by(w, kind) || w.kind == words::Kind::object || w.kind == words::Kind::list) continue;
+            if (!words::held_by(w, kind) || w.kind == words::Kind::object || w.kind == words::Kind::list ||
+                w.kind == words::Kind::none)
+                continue;
             std::string_view step = w.step;
             if (w.role == words::Role::context || (w.role == words::Role::given && w.step != words::step::updates))
                 step = {};  // what the item starts from: an input of every step

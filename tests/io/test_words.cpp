@@ -88,7 +88,7 @@ void schema_keys(const io::json& schema, const io::json& object, const std::stri
 KeyKinds word_keys(char item) {
     KeyKinds out;
     for (const words::Word& w : words::all())
-        if (words::held_by(w, item)) out[std::string(w.quantity)] = w.kind;
+        if (words::held_by(w, item) && w.kind != words::Kind::none) out[std::string(w.quantity)] = w.kind;
     return out;
 }
 

@@ -209,7 +209,7 @@ TEST_CASE("the class summary in the terminal shows each file's wrong cells in th
     CHECK(r.code == 1);
     CHECK(r.out.find(dir.file("class/ben.csv").string() + ": 1 finding\n"
                                                           "   kind   quantity          expected       found  unit  "
-                                                          "rel. error  formula              eq.\n"
+                                                          "rel. error  formula      eq.\n"
                                                           "frame 0 · velocity phase · iteration 0 · contact 0 · "
                                                           "impulse\n"
                                                           "▶  value  impulse_world[1]  0.14073673208  0.15   N·s   "

@@ -114,9 +114,12 @@ void draw_derivation(const inspect::Session& /*session*/, UiState& state) {
     const CursorViews& v = state.views;
     if (!v.cursor) return;
     const inspect::DerivationView& view = v.derivation;
-    ImGui::TextUnformatted(view.step_title.c_str());
+    wrapped_text(view.step_title);
+    // The hint beside the title when the line has room for it, else on a line of its own.
+    const char* hint = "(highlighted: what this step computed)";
     ImGui::SameLine();
-    ImGui::TextDisabled("(highlighted: what this step computed)");
+    if (ImGui::CalcTextSize(hint).x > ImGui::GetContentRegionAvail().x) ImGui::NewLine();
+    ImGui::TextDisabled("%s", hint);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The rows above the highlighted ones are the earlier steps of this item, dimmed.");
 

@@ -168,11 +168,20 @@ void draw_scale_bar(ImDrawList* draw, ImVec2 at, float scale) {
 void draw_scene_view(const inspect::Session& session, UiState& state) {
     SceneCamera& camera = state.camera;
     const char* planes[] = {"Front (x, y)", "Top (x, z)", "Side (z, y)", "3D (drag to turn)"};
+    // The view buttons flow onto a second line when the panel is too narrow for one (1024 px wide).
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float right = ImGui::GetCursorScreenPos().x + ImGui::GetContentRegionAvail().x;
+    const auto same_line_if_fits = [&](float width) {
+        ImGui::SameLine();
+        if (ImGui::GetCursorScreenPos().x + width > right) ImGui::NewLine();
+    };
     for (int p = 0; p < 4; ++p) {
+        if (p > 0)
+            same_line_if_fits(ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(planes[p]).x);
         if (ImGui::RadioButton(planes[p], camera.plane == static_cast<ViewPlane>(p)))
             camera.plane = static_cast<ViewPlane>(p);
-        ImGui::SameLine();
     }
+    same_line_if_fits(ImGui::CalcTextSize("Fit").x + style.FramePadding.x * 2);
     if (ImGui::Button("Fit")) camera.zoom = 1.0f, camera.pan_x = camera.pan_y = 0.0f;
 
     const CursorViews& v = state.views;
@@ -313,7 +322,8 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
         if (c.contact == current) current_penetration = row.penetration;
         const ImVec2 p = project(c.point);
         // A depth under a pixel and a half is invisible at this zoom: not drawn; nor one a question hides.
-        if (row.penetration * project.scale > 1.5 && !mask.hides_value(*v.cursor, c.contact, "penetration", row.penetration))
+        if (row.penetration * project.scale > 1.5 &&
+            !mask.hides_value(*v.cursor, c.contact, "penetration", row.penetration))
             pen.line(p, project(c.point - c.normal * row.penetration), IM_COL32(240, 70, 60, 255), 2.0f);
         const bool show_arrow = (v.contacts.size() <= crowded || near_current(c)) &&
                                 !mask.hides_value(*v.cursor, c.contact, "impulse_world", row.impulse_so_far.norm());
@@ -354,11 +364,10 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
                       IM_COL32(255, 80, 220, 255), 3.0f);
             }
         }
-        const std::string label =
-            mask.hides_value(*v.cursor, current, "penetration", current_penetration)
-                ? "contact " + std::to_string(current)
-                : "contact " + std::to_string(current) + " · penetration " +
-                      explain::number(current_penetration, std::abs(c->penetration)) + " m";
+        const std::string label = mask.hides_value(*v.cursor, current, "penetration", current_penetration)
+                                      ? "contact " + std::to_string(current)
+                                      : "contact " + std::to_string(current) + " · penetration " +
+                                            explain::number(current_penetration, std::abs(c->penetration)) + " m";
         // Beside the point, or to its left where the canvas ends.
         const float label_width = ImGui::CalcTextSize(label.c_str()).x;
         const float x = p.x + 12 + label_width > bottom_right.x - 4 ? p.x - 12 - label_width : p.x + 12;

@@ -79,10 +79,14 @@ void draw_contacts(inspect::Session& session, UiState& state) {
     const Trace& trace = session.trace();
     const int current = inspect::contact_at(trace, *v.cursor);
     const lessons::Mask& mask = state.mask;  // what a lesson's open questions hide
-    ImGui::TextDisabled("Before this item, status in the %s phase. Click to go.",
-                        v.cursor->stage == inspect::Stage::velocity   ? "velocity"
-                        : v.cursor->stage == inspect::Stage::position ? "position"
-                                                                      : "first");
+    // Wrapped: at 1024 px wide the tab is narrower than the sentence.
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    wrapped_text(std::string("Before this item, status in the ") +
+                 (v.cursor->stage == inspect::Stage::velocity   ? "velocity"
+                  : v.cursor->stage == inspect::Stage::position ? "position"
+                                                                : "first") +
+                 " phase. Click to go.");
+    ImGui::PopStyleColor();
     if (!begin_list_table(
             "contacts",
             {{"#", 0.35f}, {"bodies", 1.2f}, {"pen. m", 0.9f}, {"Δv m/s", 0.9f}, {"|g| N s", 0.8f}, {"status", 0.75f}},
@@ -125,7 +129,8 @@ void draw_contacts(inspect::Session& session, UiState& state) {
                     ImGui::SetTooltip("exactly %s", explain::exact(value).c_str());
             };
             ImGui::TableSetColumnIndex(2);
-            cell("penetration", row.penetration, std::max(std::abs(row.prepared->penetration), std::abs(row.penetration)));
+            cell("penetration", row.penetration,
+                 std::max(std::abs(row.prepared->penetration), std::abs(row.penetration)));
             ImGui::TableSetColumnIndex(3);
             const double desired = row.prepared->desired_delta_velocity.desired_delta_velocity;
             cell("desired_delta_velocity", row.desired_delta_velocity,
@@ -169,7 +174,8 @@ void draw_bodies(const inspect::Session& session, UiState& state) {
             ImGui::TextUnformatted(trace.scene.body_names[b].c_str());
             if (hide_before || hide_after) {
                 ImGui::TableSetColumnIndex(1);
-                ImGui::TextWrapped(hide_before ? "? (hidden until you answer)" : "as before → ? (hidden until you answer)");
+                ImGui::TextWrapped(hide_before ? "? (hidden until you answer)"
+                                               : "as before → ? (hidden until you answer)");
                 ImGui::TableSetColumnIndex(2);
                 ImGui::TextWrapped("?");
                 if (hide_before) continue;

@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace impulse::gui {
 
@@ -57,8 +58,17 @@ void go_to_lesson_step(inspect::Session& session, UiState& state, int step) {
         l.run.answered_before(l.run.step());
         refresh_mask(session, state);
     }
+    // The answer last given to this step's question is shown again in its field or as its option.
     l.typed.fill('\0');
     l.chosen = -1;
+    const std::string& given = l.run.given(l.run.step());
+    if (const auto& q = l.run.current().question; q && !given.empty()) {
+        if (q->kind == lessons::Question::Kind::predict)
+            given.copy(l.typed.data(), std::min(given.size(), l.typed.size() - 1));
+        else if (const int option = std::atoi(given.c_str());
+                 option >= 1 && option <= static_cast<int>(q->options.size()))
+            l.chosen = option - 1;
+    }
     l.focus_answer = true;
     // The step's place in this trace: the lesson's own run, or the same place in a re-run with other settings.
     const lessons::Step& s = l.run.current();

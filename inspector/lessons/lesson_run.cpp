@@ -11,6 +11,7 @@ LessonRun::LessonRun(const PreparedLesson& lesson, Progress* progress, std::opti
     const std::vector<Step>& steps = lesson.lesson.steps;
     states_.assign(steps.size(), QuestionState::none);
     feedback_.assign(steps.size(), {});
+    given_.assign(steps.size(), {});
     tries_.assign(steps.size(), 0);
     for (std::size_t i = 0; i < steps.size(); ++i)
         if (steps[i].question) states_[i] = QuestionState::open;
@@ -24,6 +25,7 @@ LessonRun::LessonRun(const PreparedLesson& lesson, Progress* progress, std::opti
         if (!steps[i].question || saved == found->second.answers.end()) continue;
         const AnswerRecord& a = saved->second;
         tries_[i] = a.tries;
+        given_[i] = a.answer;
         if (a.skipped) {
             states_[i] = QuestionState::skipped;
             feedback_[i] = skipped_text(*lesson.answers[i]);
@@ -59,6 +61,7 @@ Verdict LessonRun::answer(std::string_view typed) {
     if (states_[i] != QuestionState::open) return verdict;  // already settled: a check, not a new answer
     states_[i] = verdict.correct ? QuestionState::answered : QuestionState::open;
     feedback_[i] = verdict.feedback;
+    given_[i] = std::string(typed);
     ++tries_[i];
     if (AnswerRecord* r = record(step_)) {
         r->answer = std::string(typed);

@@ -40,6 +40,8 @@ public:
     bool waiting() const { return state(step_) == QuestionState::open; }
     // The last thing the student was told about a step's question (a verdict, or the skipped answer).
     const std::string& feedback(int step) const { return feedback_[static_cast<std::size_t>(step)]; }
+    // The last answer the student gave to a step's question, as typed ("7.4", or an option's number from 1).
+    const std::string& given(int step) const { return given_[static_cast<std::size_t>(step)]; }
     // Whether that last answer was right.
     bool right(int step) const { return state(step) == QuestionState::answered; }
 
@@ -72,6 +74,7 @@ private:
     int step_ = 0;
     std::vector<QuestionState> states_;
     std::vector<std::string> feedback_;
+    std::vector<std::string> given_;
     std::vector<int> tries_;
     std::string save_problem_;
 };

@@ -103,7 +103,7 @@ Reference open_reference(const DiffOptions& o) {
 }
 
 coursework::DiffReport diff_file(const Reference& reference, const std::string& file,
-                                 const coursework::Tolerance& tolerance) {
+                                 const coursework::Tolerance& tolerance, std::ostream& err) {
     const std::string text = read_input_file(file);
     try {
         coursework::DiffReport report;
@@ -112,12 +112,14 @@ coursework::DiffReport diff_file(const Reference& reference, const std::string& 
             report =
                 coursework::diff_worksheet(reference.document, coursework::read_worksheet_csv(text), tolerance, asked);
         } else {
-            const io::json document = io::parse_json_text(text);
+            io::json document = io::parse_json_text(text);
             if (coursework::is_worksheet(document)) {
                 report = coursework::diff_worksheet(reference.document, coursework::read_worksheet_json(document),
                                                     tolerance, asked);
             } else if (document.is_object() && document.contains("format") &&
                        document["format"] == io::trace_format_name) {
+                // A format-1 trace is compared in today's words: its renamed keys moved first.
+                if (io::upgrade_trace_document(document)) err << io::format1_note(file) << '\n';
                 io::read_trace(document);  // its schema, and that every index names a body or contact
                 report = coursework::diff_traces(reference.document, document, tolerance);
             } else {
@@ -246,7 +248,7 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     const Reference reference = open_reference(options);
     if (!whole_class) {
         // One file: its every mismatch; a file that cannot be read is bad input.
-        const coursework::DiffReport r = diff_file(reference, files.front().file, tolerance);
+        const coursework::DiffReport r = diff_file(reference, files.front().file, tolerance, err);
         const coursework::DiffSubject subject{input_name(options.reference), input_name(files.front().file), tolerance};
         const std::string report = options.format == "json"  ? coursework::report_json(r, subject)
                                    : options.format == "csv" ? coursework::report_csv(r)
@@ -263,7 +265,7 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
     for (const Submission& s : files) {
         try {
             if (!s.not_read.empty()) throw FileError{s.file, "", s.not_read};
-            rows.push_back({input_name(s.file), diff_file(reference, s.file, tolerance), ""});
+            rows.push_back({input_name(s.file), diff_file(reference, s.file, tolerance, err), ""});
             if (!rows.back().report->all_match()) code = exit_verdict;
         } catch (const FileError& e) {
             const std::string error = (e.where.empty() ? "" : e.where + ": ") + e.problem;

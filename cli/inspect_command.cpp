@@ -1,5 +1,6 @@
 // `impulse-lab inspect FILE`: open a case, scene or trace in the inspector, in a window or headless.
 
+#include "formats/trace_json.hpp"
 #include "cli/commands.hpp"
 #include "model/input_files.hpp"
 #include "cli/outputs.hpp"
@@ -74,6 +75,7 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
 
     const auto start = std::chrono::steady_clock::now();
     inspect::Session session = inspect::Session::open(options.file, options.open);
+    if (session.trace().version != trace_format_version) err << io::format1_note(options.file) << '\n';
     if (const auto note = session.recording_note())
         err << "impulse-lab: note: " << *note << "; raise --max-trace-mb or narrow --record to see later frames\n";
     // Shown up to the frame before it: the frames that led there are what there is to debug.

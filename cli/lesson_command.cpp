@@ -94,6 +94,7 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
         throw io::InputError("lesson", "there is no lesson " + std::to_string(*options.number) + " in " +
                                            lessons_folder(options).string() + " (impulse-lab lesson lists them)");
     lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(*file));
+    for (const std::string& note : prepared.lesson.notes) err << "note: " << file->string() << ": " << note << '\n';
 
     const bool window = !options.text && !options.headless && gui::display_available();
     gui::InspectorRun run;

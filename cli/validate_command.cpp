@@ -55,9 +55,13 @@ std::string check_file(const std::string& path, const std::string& text) {
         std::size_t iterations = 0;
         for (const FrameRecord& f : trace.frames)
             iterations += f.position.iterations.size() + f.velocity.iterations.size();
-        return "valid trace (format version " + std::to_string(trace.version) + ", " +
-               count(trace.frames.size(), "frame", "frames") + ", " + count(iterations, "iteration", "iterations") +
-               ")";
+        // Format 1 is read with its renamed keys moved (docs/trace-format.md): say so in the verdict's line.
+        const std::string version = trace.version == trace_format_version
+                                        ? std::to_string(trace.version)
+                                        : std::to_string(trace.version) + ", read with format " +
+                                              std::to_string(trace_format_version) + "'s renamed keys";
+        return "valid trace (format version " + version + ", " + count(trace.frames.size(), "frame", "frames") + ", " +
+               count(iterations, "iteration", "iterations") + ")";
     }
     const Scene c = io::read_scene(document);
     // A case writes its contacts out; a scene leaves them to its shapes.

@@ -50,6 +50,7 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
         lesson.emplace(lessons::prepare_lesson(lessons::read_lesson(options.file)));
     }
     const inspect::Session session = lesson ? lesson->session : inspect::Session::open(options.file, options.open);
+    if (session.trace().version != trace_format_version) err << io::format1_note(options.file) << '\n';
     if (const auto note = session.recording_note())
         err << "impulse-lab: note: " << *note << "; raise --max-trace-mb or narrow --record to see later frames\n";
     // A worksheet's numbers must be re-made exactly by diff; a run that broke is not coursework.

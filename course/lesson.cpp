@@ -3,6 +3,7 @@
 #include "course/trace_path.hpp"
 #include "model/input_files.hpp"
 #include "explain/annotations.hpp"
+#include "record/words.hpp"
 #include "explain/format.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -156,6 +157,16 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
             throw io::InputError(where + ".id", "use letters, digits, - and _ only, got \"" + step.id + "\"");
         if (!ids.insert(step.id).second) throw io::InputError(where + ".id", "\"" + step.id + "\" is used twice");
         step.at = s["at"].get<std::string>();
+        // A step renamed since the lesson was written (docs/trace-format.md) is read by its new name, with a note.
+        for (const words::StepRename& r : words::step_renames()) {
+            const std::string old_place = "step=" + std::string(r.old_name);
+            const std::size_t found = step.at.find(old_place);
+            const std::size_t end = found + old_place.size();
+            if (found != std::string::npos && (end == step.at.size() || step.at[end] == ','))
+                step.at.replace(found + 5, r.old_name.size(), r.new_name),
+                    lesson.notes.push_back(where + ".at: step \"" + std::string(r.old_name) + "\" is now \"" +
+                                           std::string(r.new_name) + "\"");
+        }
         inspect::parse_goto(step.at, where + ".at");
         if (s.contains("question")) step.question = read_question(s["question"], where + ".question");
         lesson.steps.push_back(std::move(step));

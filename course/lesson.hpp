@@ -55,6 +55,7 @@ struct Lesson {
     std::vector<std::string> record;  // as --record takes them: frames=A..B, contacts=I,J
     std::string introduction;         // the text before the first section
     std::vector<Step> steps;
+    std::vector<std::string> notes;  // old words read by their new names: "steps[2].at: step \"a\" is now \"b\""
 };
 
 // How many of the lesson's steps ask a question.
@@ -102,7 +103,7 @@ Verdict check_answer(const Question& question, const Answer& answer, std::string
 // What a skipped question shows: "skipped: the engine's answer is 7.5 m/s".
 std::string skipped_text(const Answer& answer);
 
-// The vocabulary name of a question's value at a place of `stage`: "impulse_contact" for "impulse_contact[0]",
+// The vocabulary name of a question's value at a place of `stage`: "impulse" for "impulse[0]",
 // "velocity_update" for "updates[0].after[0]" in a velocity iteration. Empty when the path names none.
 std::string question_quantity(const Question& question, inspect::Stage stage);
 

@@ -29,9 +29,9 @@ bool fixed_row(std::string_view key) {
                                                                "friction",
                                                                "restitution_cutoff",
                                                                "velocity_from_acceleration_applied",
-                                                               "rewind_time_limit",
-                                                               "angular_limit_policy",
-                                                               "angular_limit_factor"};
+                                                               "rewind.time_limit",
+                                                               "angular_limit.policy",
+                                                               "angular_limit.factor"};
     return fixed.count(key) > 0;
 }
 

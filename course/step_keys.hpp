@@ -1,5 +1,6 @@
 #pragma once
-// Which derivation step computes which key of a trace's item objects: the one table behind worksheets
+// Which derivation step computes which key of a trace's item objects, read from the word list
+// (engine/record/words.hpp): the one table behind worksheets
 // (a step's cells are the keys it computes, its inputs the keys of the steps before it) and behind the
 // equation `diff` names beside a mismatch. An item is a prepared contact (frames[f].contacts[k]) or one
 // iteration of a phase (frames[f].phases[p].iterations[i]); the step names are those of the inspector's
@@ -7,6 +8,8 @@
 // checks over the shipped cases run with every method.
 
 #include "course/json_path.hpp"
+#include "course/json_path.hpp"
+#include "record/words.hpp"
 
 #include <span>
 #include <string>
@@ -31,14 +34,9 @@ struct StepKey {
     ItemKind item;
     std::string_view key;  // inside the item object: "basis", "friction_solve.static_impulse", "updates[].after"
     Role role;
-    std::string_view step;  // the step table that shows it; empty for given and context keys
-    bool per_body;          // a [body0, body1] array: one cell per body present (null = the world)
-    // The vocabulary name whose annotation (formula, equation, unit, meaning) applies; empty: the key's last
-    // part when that is annotated, else the text below.
-    std::string_view annotation = {};
-    std::string_view unit = {};
-    std::string_view formula = {};
-    std::string_view meaning = {};
+    std::string_view step;    // the step table that shows it; empty for given and context keys
+    bool per_body;            // a [body0, body1] array: one cell per body present (null = the world)
+    const words::Word* word;  // its word (engine/record/words.hpp): formula, equation, unit, meaning
 };
 
 std::span<const StepKey> step_keys();

@@ -118,7 +118,7 @@ json preparation_json(const ContactPreparation& d) {
     };
     out["torque_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::torque_per_unit_impulse));
     out["rotation_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::rotation_per_unit_impulse));
-    out["velocity_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::velocity_per_unit_impulse));
+    out["point_velocity_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::velocity_per_unit_impulse));
     out["angular_component"] = per_body_number(field(&UnitImpulseResponse::angular_component));
     out["linear_component"] = per_body_number(field(&UnitImpulseResponse::linear_component));
     out["delta_velocity_per_unit_impulse"] = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;
@@ -149,7 +149,7 @@ ContactPreparation read_preparation(const json& j) {
     d.relative_position = read_per_body_vec3(j["relative_position"]);
     const PerBody<Vec3> torque = read_per_body_vec3(j["torque_per_unit_impulse"]);
     const PerBody<Vec3> rotation = read_per_body_vec3(j["rotation_per_unit_impulse"]);
-    const PerBody<Vec3> velocity = read_per_body_vec3(j["velocity_per_unit_impulse"]);
+    const PerBody<Vec3> velocity = read_per_body_vec3(j["point_velocity_per_unit_impulse"]);
     const PerBody<double> angular = read_per_body_number(j["angular_component"]);
     const PerBody<double> linear = read_per_body_number(j["linear_component"]);
     for (int i = 0; i < 2; ++i)
@@ -201,16 +201,17 @@ json position_iteration_json(const PositionIteration& it) {
     if (it.pass) out["pass"] = *it.pass;
     if (const auto& r = it.resolution) {
         out["method"] = name_of(position_method_names, r->method);
-        out["amount"] = r->amount;
+        // The split impulse pushes with an impulse (N·s), the projections by a distance (m): two words.
+        out[r->method == PositionMethod::split_impulse ? "push_impulse" : "amount"] = r->amount;
         if (r->rewind) out["rewind"] = rewind_json(*r->rewind);
         out["linear_inertia"] = per_body_number(r->inertia.linear_inertia);
         out["angular_inertia"] = per_body_number(r->inertia.angular_inertia);
-        out["total_inertia"] = r->inertia.total_inertia;
-        out["linear_move"] = per_body_number(r->moves.linear_move);
-        out["angular_move"] = per_body_number(r->moves.angular_move);
+        out["penetration_inertia"] = r->inertia.total_inertia;
+        out["move_split"] = {{"linear_move", per_body_number(r->moves.linear_move)},
+                             {"angular_move", per_body_number(r->moves.angular_move)}};
         if (r->angular_limit) out["angular_limit"] = angular_limit_json(*r->angular_limit);
-        out["linear_change"] = per_body_vec3(r->change.linear_change);
-        out["angular_change"] = per_body_vec3(r->change.angular_change);
+        out["position_change"] = {{"linear_change", per_body_vec3(r->change.linear_change)},
+                                  {"angular_change", per_body_vec3(r->change.angular_change)}};
     }
     json updates = json::array();
     for (const PenetrationUpdate& u : it.updates)
@@ -235,13 +236,15 @@ PositionIteration read_position_iteration(const json& j) {
         PositionResolution r;
         r.method = read_enum(position_method_names, j["method"]);
         r.penetration = it.penetration;
-        r.amount = j["amount"].get<double>();
+        r.amount = j[r.method == PositionMethod::split_impulse ? "push_impulse" : "amount"].get<double>();
         if (j.contains("rewind")) r.rewind = read_rewind(j["rewind"]);
         r.inertia = {read_per_body_number(j["linear_inertia"]), read_per_body_number(j["angular_inertia"]),
-                     j["total_inertia"].get<double>()};
-        r.moves = {read_per_body_number(j["linear_move"]), read_per_body_number(j["angular_move"])};
+                     j["penetration_inertia"].get<double>()};
+        const json& moves = j["move_split"];
+        r.moves = {read_per_body_number(moves["linear_move"]), read_per_body_number(moves["angular_move"])};
         if (j.contains("angular_limit")) r.angular_limit = read_angular_limit(j["angular_limit"]);
-        r.change = {read_per_body_vec3(j["linear_change"]), read_per_body_vec3(j["angular_change"])};
+        const json& change = j["position_change"];
+        r.change = {read_per_body_vec3(change["linear_change"]), read_per_body_vec3(change["angular_change"])};
         it.resolution = r;
     }
     for (const json& u : j["updates"])
@@ -297,7 +300,7 @@ json velocity_iteration_json(const VelocityIteration& it) {
         write_desired(out, r->desired_delta_velocity);
         out["impulse_model"] = name_of(impulse_model_names, r->impulse.model);
         if (r->impulse.friction) out["friction_solve"] = friction_solve_json(*r->impulse.friction);
-        out["impulse_contact"] = vec3_json(r->impulse.impulse_contact);
+        out["impulse"] = vec3_json(r->impulse.impulse_contact);
         out["impulse_world"] = vec3_json(r->impulse.impulse_world);
         out["impulsive_torque"] = per_body_vec3(r->velocity_change.impulsive_torque);
         out["velocity_change"] = per_body_vec3(r->velocity_change.velocity_change);
@@ -338,7 +341,7 @@ VelocityIteration read_velocity_iteration(const json& j) {
         r.desired_delta_velocity = read_desired(j);
         r.impulse.model = read_enum(impulse_model_names, j["impulse_model"]);
         if (j.contains("friction_solve")) r.impulse.friction = read_friction_solve(j["friction_solve"]);
-        r.impulse.impulse_contact = read_vec3(j["impulse_contact"]);
+        r.impulse.impulse_contact = read_vec3(j["impulse"]);
         r.impulse.impulse_world = read_vec3(j["impulse_world"]);
         r.velocity_change = {read_per_body_vec3(j["impulsive_torque"]), read_per_body_vec3(j["velocity_change"]),
                              read_per_body_vec3(j["rotation_change"])};
@@ -482,6 +485,15 @@ void check_references(const json& frame, const std::string& path, std::size_t bo
         for (std::size_t i = 0; i < iterations.size(); ++i) {
             const std::string at = json_path_index(json_path_child(phase_path, "iterations"), i);
             in_range(iterations[i]["contact"], contacts, json_path_child(at, "contact"), "contact");
+            // A distance or an impulse: which of the two words the move records follows from its method.
+            if (iterations[i].contains("method")) {
+                const bool split = iterations[i]["method"] == "split_impulse";
+                if (!iterations[i].contains(split ? "push_impulse" : "amount"))
+                    throw InputError(json_path_child(at, split ? "amount" : "push_impulse"),
+                                     split ? "a split_impulse move records push_impulse (N·s), not amount"
+                                           : "only a split_impulse move records push_impulse; this one records "
+                                             "amount (m)");
+            }
             const json& updates = iterations[i]["updates"];
             for (std::size_t u = 0; u < updates.size(); ++u) {
                 const std::string update = json_path_index(json_path_child(at, "updates"), u);
@@ -515,14 +527,85 @@ void check_frame_values(const FrameRecord& f, const std::string& path) {
     }
 }
 
+// --- format 1 ------------------------------------------------------------------------------------------
+
+// The value at a word's key path inside an item ("move_split.linear_move"), or null.
+json* at_key(json& item, std::string_view path) {
+    json* at = &item;
+    for (std::size_t start = 0;;) {
+        const std::size_t dot = path.find('.', start);
+        const std::string key(path.substr(start, dot == std::string_view::npos ? path.npos : dot - start));
+        if (!at->is_object() || !at->contains(key)) return nullptr;
+        at = &(*at)[key];
+        if (dot == std::string_view::npos) return at;
+        start = dot + 1;
+    }
+}
+
+// Moves a format-1 key to its word's path, creating the objects on the way ("linear_move" -> "move_split").
+void rename_key(json& item, std::string_view from, std::string_view to) {
+    json* value = at_key(item, from);
+    if (!value) return;
+    json moved = std::move(*value);
+    item.erase(std::string(from));  // format 1's renamed keys were all top-level keys of their item
+    json* at = &item;
+    for (std::size_t start = 0;;) {
+        const std::size_t dot = to.find('.', start);
+        const std::string key(to.substr(start, dot == std::string_view::npos ? to.npos : dot - start));
+        if (dot == std::string_view::npos) {
+            (*at)[key] = std::move(moved);
+            return;
+        }
+        at = &(*at)[key];
+        start = dot + 1;
+    }
+}
+
+// Format 1 -> 2 for one item: every word of the list whose format-1 key was another is moved to its name.
+void upgrade_item(json& item, char kind) {
+    if (!item.is_object()) return;  // the schema names what is wrong with it
+    // Format 1 wrote the split impulse's push (N·s) under the projections' `amount` (m): format 2 has a word
+    // for each, so `amount` moves only in a split impulse's iteration.
+    const bool split = kind == 'P' && item.contains("method") && item["method"] == "split_impulse";
+    for (const words::Word& w : words::all()) {
+        if (w.format1.empty() || !words::held_by(w, kind)) continue;
+        if (w.quantity == "push_impulse" && !split) continue;
+        rename_key(item, w.format1, w.quantity);
+    }
+}
+
 }  // namespace
+
+std::optional<int> upgrade_trace_document(json& document) {
+    if (!document.is_object() || !document.contains("version") || document["version"] != 1 ||
+        !document.contains("frames") || !document["frames"].is_array())
+        return std::nullopt;  // current, or not a trace: the schema says which
+    for (json& frame : document["frames"]) {
+        if (!frame.is_object()) continue;
+        if (frame.contains("contacts") && frame["contacts"].is_array())
+            for (json& contact : frame["contacts"]) upgrade_item(contact, 'C');
+        if (frame.contains("phases") && frame["phases"].is_array())
+            for (json& phase : frame["phases"]) {
+                if (!phase.is_object() || !phase.contains("iterations") || !phase["iterations"].is_array()) continue;
+                const char kind = phase.contains("phase") && phase["phase"] == "position" ? 'P' : 'V';
+                for (json& iteration : phase["iterations"]) upgrade_item(iteration, kind);
+            }
+    }
+    document["version"] = trace_format_version;
+    return 1;
+}
+
+std::string format1_note(std::string_view file) {
+    return "impulse-lab: note: " + std::string(file) + " was written in trace format 1; read with format " +
+           std::to_string(trace_format_version) + "'s renamed keys (docs/trace-format.md lists them)";
+}
 
 json trace_json(const Trace& trace) {
     json frames = json::array();
     for (const FrameRecord& f : trace.frames) frames.push_back(frame_json(f, trace.scene.settings));
     const TraceFilter& r = trace.recording;
     return {{"format", trace_format_name},
-            {"version", trace.version},
+            {"version", trace_format_version},
             {"conventions", conventions_json()},
             {"settings", settings_json(trace.scene.settings, trace.scene.world)},
             {"recording",
@@ -533,12 +616,19 @@ json trace_json(const Trace& trace) {
             {"frames", frames}};
 }
 
-Trace read_trace(const json& document) {
-    if (document.is_object() && document.contains("settings"))
-        refuse_renamed_settings(document["settings"], "settings");
+Trace read_trace(const json& given) {
+    if (given.is_object() && given.contains("settings")) refuse_renamed_settings(given["settings"], "settings");
+    json upgraded;
+    const json* read = &given;
+    if (given.is_object() && given.contains("version") && given["version"] == 1) {
+        upgraded = given;
+        upgrade_trace_document(upgraded);
+        read = &upgraded;
+    }
+    const json& document = *read;
     validate_trace_document(document);
     Trace trace;
-    trace.version = document["version"].get<int>();
+    trace.version = given["version"].get<int>();
     try {
         trace.scene = read_scene(document["scene"]);
     } catch (const InputError& e) {

@@ -7,6 +7,8 @@
 #include "formats/json_values.hpp"
 #include "record/trace.hpp"
 
+#include <optional>
+#include <string>
 #include <string_view>
 
 namespace impulse::io {
@@ -21,7 +23,16 @@ json item_json(const ContactPreparation& contact);
 json item_json(const PositionIteration& iteration);
 json item_json(const VelocityIteration& iteration);
 
-// Checks the schema, then reads; throws InputError with the JSON path of the first problem.
+// Format 1 (the keys before the word list renamed them: docs/trace-format.md) read as the current format:
+// moves each renamed key of every item to its word's path and sets the version. Returns the version the
+// document was written in when it was upgraded, nothing for a current document (or one that is not a trace).
+std::optional<int> upgrade_trace_document(json& document);
+
+// The line a command prints when it read a format-1 file.
+std::string format1_note(std::string_view file);
+
+// Checks the schema, then reads (a format-1 document upgraded first: the trace's `version` says so); throws
+// InputError with the JSON path of the first problem.
 Trace read_trace(const json& document);
 Trace read_trace_text(std::string_view text);
 

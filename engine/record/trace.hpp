@@ -4,6 +4,8 @@
 
 #include "record/iteration_records.hpp"
 #include "preparation/prepared_contact.hpp"
+#include "record/words.hpp"
+#include "preparation/prepared_contact.hpp"
 #include "scene/scene.hpp"
 
 #include <climits>
@@ -12,7 +14,7 @@
 
 namespace impulse {
 
-inline constexpr int trace_format_version = 1;
+inline constexpr int trace_format_version = words::format_version;
 
 // The part of a body's state that resolution changes.
 struct BodyState {
@@ -66,8 +68,8 @@ inline void end_recording_before(TraceFilter& filter, int frame) {
 }
 
 struct Trace {
-    int version = trace_format_version;
-    Scene scene;  // the bodies and contacts as loaded, with the settings that ran
+    int version = trace_format_version;  // the format the file was written in (a reader upgrades older ones)
+    Scene scene;                         // the bodies and contacts as loaded, with the settings that ran
     TraceFilter recording;
     std::vector<FrameRecord> frames;
 

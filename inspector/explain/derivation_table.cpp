@@ -2,6 +2,7 @@
 
 #include "explain/annotations.hpp"
 #include "explain/format.hpp"
+#include "record/words.hpp"
 #include "resolver/settings_names.hpp"
 
 #include <algorithm>
@@ -153,7 +154,8 @@ std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bo
 }
 
 StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false, bool warm_start = false) {
-    Table t("desired_delta_velocity", "desired_delta_velocity — the velocity change the impulse must make");
+    Table t(std::string(words::step::desired_delta_velocity),
+            "desired_delta_velocity — the velocity change the impulse must make");
     t.row("separating_velocity", d.separating_velocity);
     t.row("restitution", d.restitution);
     if (d.restitution_cutoff > 0.0) {
@@ -174,7 +176,7 @@ StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false
 
 std::vector<StepTable> updates_tables(const std::string& what, std::vector<Row> rows) {
     if (rows.empty()) return {};
-    return {StepTable{"updates", "updates — " + what, std::move(rows)}};
+    return {StepTable{std::string(words::step::updates), "updates — " + what, std::move(rows)}};
 }
 
 // A row of the updates table: contact `contact`'s values before → after, each at the scale of the pair.
@@ -197,7 +199,7 @@ std::string change_text(double before, double after, std::string_view unit) {
 
 std::string amount_formula(const PositionResolution& r) {
     if (r.method == PositionMethod::split_impulse) return "the push impulse this visit, λ_after − λ_before";
-    if (r.rewind) return "penetration − removed_penetration";
+    if (r.rewind) return "penetration − rewind.removed_penetration";
     if (r.penetration > 0.0 && r.amount != r.penetration)
         return "relaxation.fraction × penetration (" + number(r.amount / r.penetration) + " here)";
     return "penetration";
@@ -209,7 +211,7 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
     std::vector<StepTable> tables;
     const Mat3* basis = &d.basis.contact_to_world;
 
-    Table basis_step("basis", "basis — contact coordinates from the normal");
+    Table basis_step(std::string(words::step::basis), "basis — contact coordinates from the normal");
     basis_step.row("swapped", yes_no(d.swapped, "yes: given with the world as body 0, exchanged and n reversed", "no"))
         .row("normal", d.basis.normal)
         .row("tangent_seed", std::string(d.basis.seed == TangentSeed::world_x ? "world X" : "world Y"))
@@ -218,24 +220,26 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
         .row("basis", d.basis.contact_to_world);
     tables.push_back(basis_step.done());
 
-    Table relative("relative_position", "relative_position — where the contact is on each body", basis);
+    Table relative(std::string(words::step::relative_position), "relative_position — where the contact is on each body",
+                   basis);
     relative.world_vectors("relative_position", d.relative_position);
     tables.push_back(relative.done());
 
     const VelocityPerUnitImpulse& chain = d.velocity_per_unit_impulse;
-    Table unit("velocity_per_unit_impulse", "velocity_per_unit_impulse — linear and angular parts", basis);
+    Table unit(std::string(words::step::delta_velocity_per_unit_impulse),
+               "delta_velocity_per_unit_impulse — linear and angular parts", basis);
     unit.world_vectors("torque_per_unit_impulse",
                        unit_response_field(chain, &UnitImpulseResponse::torque_per_unit_impulse))
         .world_vectors("rotation_per_unit_impulse",
                        unit_response_field(chain, &UnitImpulseResponse::rotation_per_unit_impulse))
-        .world_vectors("velocity_per_unit_impulse",
+        .world_vectors("point_velocity_per_unit_impulse",
                        unit_response_field(chain, &UnitImpulseResponse::velocity_per_unit_impulse))
         .per_body("angular_component", unit_response_field(chain, &UnitImpulseResponse::angular_component))
         .per_body("linear_component", unit_response_field(chain, &UnitImpulseResponse::linear_component))
         .row("delta_velocity_per_unit_impulse", chain.delta_velocity_per_unit_impulse);
     tables.push_back(unit.done());
 
-    Table velocity("contact_velocity", "contact_velocity — how the contact points move", basis);
+    Table velocity(std::string(words::step::contact_velocity), "contact_velocity — how the contact points move", basis);
     velocity.world_vectors("point_velocity", d.contact_velocity.point_velocity)
         .per_body("tangential_acceleration_velocity", d.contact_velocity.tangential_acceleration_velocity)
         .contact_vector("contact_velocity", d.contact_velocity.contact_velocity,
@@ -258,33 +262,36 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
         const bool split = r->method == PositionMethod::split_impulse;
         if (r->rewind) {
             const Rewind& w = *r->rewind;
-            Table rewind("rewind", "rewind — move the bodies back along their paths (velocity_based)", basis);
-            rewind.row("closing_velocity", w.closing_velocity)
-                .row("rewind_time", w.time, std::nullopt, {},
+            Table rewind(std::string(words::step::rewind),
+                         "rewind — move the bodies back along their paths (velocity_based)", basis);
+            rewind.row("rewind.closing_velocity", w.closing_velocity)
+                .row("rewind.time", w.time, std::nullopt, {},
                      w.time == w.time_limit && w.time > 0 ? "the whole frame" : "")
-                .row("removed_penetration", w.removed_penetration)
-                .world_vectors("rewind_linear_change", w.linear_change)
-                .world_vectors("rewind_angular_change", w.angular_change);
+                .row("rewind.removed_penetration", w.removed_penetration)
+                .world_vectors("rewind.linear_change", w.linear_change)
+                .world_vectors("rewind.angular_change", w.angular_change);
             tables.push_back(rewind.done());
         }
         // When moving back along the paths removed everything, there is nothing left to project.
         const bool projected = !(r->rewind && r->amount <= 1e-12 * r->penetration);
         if (projected) {
-            Table inertia("penetration_inertia",
+            Table inertia(std::string(words::step::penetration_inertia),
                           "penetration_inertia — how readily each body gives way (" + method + ")");
-            inertia.row("penetration", r->penetration).row("amount", r->amount, std::nullopt, amount_formula(*r));
-            if (split) inertia.unit("N·s");
+            // The split impulse pushes with an impulse (N·s), not a distance: its own word.
+            inertia.row("penetration", r->penetration)
+                .row(split ? "push_impulse" : "amount", r->amount, std::nullopt, split ? "" : amount_formula(*r));
             inertia.per_body("linear_inertia", r->inertia.linear_inertia)
                 .per_body("angular_inertia", r->inertia.angular_inertia,
                           linear_only ? "0: linear projection never turns" : "")
-                .row("total_inertia", r->inertia.total_inertia, std::nullopt, linear_only ? "Σ linear" : "");
+                .row("penetration_inertia", r->inertia.total_inertia, std::nullopt, linear_only ? "Σ linear" : "");
             tables.push_back(inertia.done());
 
-            Table moves("move_split", "move_split — how much of the move is linear, how much angular");
+            Table moves(std::string(words::step::move_split),
+                        "move_split — how much of the move is linear, how much angular");
             bool limited = false;
             if (const auto& limit = r->angular_limit) {
-                moves.per_body("linear_move_before", limit->before.linear_move)
-                    .per_body("angular_move_before", limit->before.angular_move);
+                moves.per_body("angular_limit.linear_move_before", limit->before.linear_move)
+                    .per_body("angular_limit.angular_move_before", limit->before.angular_move);
                 const std::string policy(name_of(angular_limit_policy_names, limit->policy));
                 const std::string maximum_formula =
                     limit->policy == AngularLimitPolicy::fixed       ? "angular_limit.factor"
@@ -292,15 +299,15 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
                     : limit->policy == AngularLimitPolicy::angle     ? "the move that turns the body by factor degrees"
                                                                      : "";
                 if (limit->policy == AngularLimitPolicy::none)
-                    moves.row("angular_limit", std::string("no limit (policy none)"));
+                    moves.row("angular_limit.maximum", std::string("no limit (policy none)"));
                 for (int i = 0; i < 2 && limit->policy != AngularLimitPolicy::none; ++i) {
                     if (!limit->applied[i]) continue;  // no body 1: the world
                     if (limit->maximum[i])
-                        moves.row("angular_limit", *limit->maximum[i], i, maximum_formula,
+                        moves.row("angular_limit.maximum", *limit->maximum[i], i, maximum_formula,
                                   policy + " " + number(limit->factor));
                     else
-                        moves.row("angular_limit", std::string("none"), i, maximum_formula);
-                    moves.row("angular_limit_applied",
+                        moves.row("angular_limit.maximum", std::string("none"), i, maximum_formula);
+                    moves.row("angular_limit.applied",
                               yes_no(*limit->applied[i], "yes: the excess moves linearly", "no"), i);
                     limited = limited || *limit->applied[i];
                 }
@@ -312,22 +319,22 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
             const std::string_view angular_formula = split     ? "(angular_change × q_rel) · n"
                                                      : limited ? "±amount · angular / total; limited: ±angular_limit"
                                                                : "";
-            moves.per_body("linear_move", r->moves.linear_move, linear_formula)
-                .per_body("angular_move", r->moves.angular_move, angular_formula);
+            moves.per_body("move_split.linear_move", r->moves.linear_move, linear_formula)
+                .per_body("move_split.angular_move", r->moves.angular_move, angular_formula);
             tables.push_back(moves.done());
         }
 
-        Table change("position_change", "position_change — the move applied", basis);
+        Table change(std::string(words::step::position_change), "position_change — the move applied", basis);
         // Velocity-based resolution applies the rewind and the projection together.
         change
-            .world_vectors("linear_change", r->change.linear_change,
-                           r->rewind ? "rewind_linear_change + n · linear_move"
-                           : split   ? "Δṗ of the push × Δt = amount m⁻¹ n Δt"
+            .world_vectors("position_change.linear_change", r->change.linear_change,
+                           r->rewind ? "rewind.linear_change + n · linear_move"
+                           : split   ? "Δṗ of the push × Δt = push_impulse m⁻¹ n Δt"
                                      : "")
-            .world_vectors("angular_change", r->change.angular_change,
-                           r->rewind     ? "rewind_angular_change + I⁻¹(q_rel × n) · angular_move / angular"
+            .world_vectors("position_change.angular_change", r->change.angular_change,
+                           r->rewind     ? "rewind.angular_change + I⁻¹(q_rel × n) · angular_move / angular"
                            : linear_only ? "0: linear projection never turns"
-                           : split       ? "Δθ̇ of the push × Δt = I⁻¹(q_rel × amount n) Δt"
+                           : split       ? "Δθ̇ of the push × Δt = I⁻¹(q_rel × push_impulse n) Δt"
                                          : "");
         tables.push_back(change.done());
     }
@@ -372,7 +379,8 @@ std::string sweep_meaning(SolverStage stage) {
 std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, const Mat3* basis) {
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
-        Table velocity("contact_velocity", "contact_velocity — as the resolver has it now", basis);
+        Table velocity(std::string(words::step::contact_velocity), "contact_velocity — as the resolver has it now",
+                       basis);
         // The book's resolver keeps it as bookkeeping (the prepared value, updated by each iteration that
         // changed a body); the accumulating solvers read it from the bodies at every visit.
         velocity.contact_vector("contact_velocity", r->contact_velocity,
@@ -383,46 +391,47 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         const bool warm_start = it.sweep && it.sweep->stage == SolverStage::warm_start;
         tables.push_back(desired_table(r->desired_delta_velocity, accumulating, warm_start));
         if (const auto& a = it.accumulated) {
-            Table total("accumulated_impulse", "accumulated_impulse — the running total, kept within its limits",
-                        basis);
-            total.contact_vector("accumulated_before", a->before)
-                .contact_vector("accumulated_unclamped", a->unclamped,
+            Table total(std::string(words::step::accumulated),
+                        "accumulated — the running total, kept within its limits", basis);
+            total.contact_vector("accumulated.before", a->before)
+                .contact_vector("accumulated.unclamped", a->unclamped,
                                 warm_start ? "λ, last frame's total re-applied"
                                            : "λ + this visit's raw impulse (normal: Δv over the normal response; "
                                              "sliding: −K_tt⁻¹ v_t)")
-                .row("clamp", std::string(name_of(impulse_clamp_names, a->clamp)))
-                .contact_vector("accumulated_after", a->after, "clamp(accumulated_unclamped)");
+                .row("accumulated.clamp", std::string(name_of(impulse_clamp_names, a->clamp)))
+                .contact_vector("accumulated.after", a->after, "clamp(accumulated.unclamped)");
             tables.push_back(total.done());
         }
 
         const Impulse& g = r->impulse;
-        Table impulse("impulse", "impulse — impulse_contact and impulse_world", basis);
+        Table impulse(std::string(words::step::impulse), "impulse — in contact and world coordinates", basis);
         impulse.row(
             "impulse_model", std::string(name_of(impulse_model_names, g.model)), std::nullopt,
             accumulating ? "μ = 0: frictionless; sliding when the clamp held friction to its cone; else static" : "");
         if (const auto& s = g.friction) {
-            impulse.row("delta_velocity_matrix", s->delta_velocity_matrix)
-                .contact_vector("target_delta_velocity", s->target_delta_velocity)
-                .contact_vector("static_impulse", s->static_impulse)
-                .row("tangential_impulse", s->tangential_impulse)
-                .row("cone_limit", s->cone_limit);
+            impulse.row("friction_solve.delta_velocity_matrix", s->delta_velocity_matrix)
+                .contact_vector("friction_solve.target_delta_velocity", s->target_delta_velocity)
+                .contact_vector("friction_solve.static_impulse", s->static_impulse)
+                .row("friction_solve.tangential_impulse", s->tangential_impulse)
+                .row("friction_solve.cone_limit", s->cone_limit);
             if (s->sliding_direction)
-                impulse.row("sliding_direction", "(" + number(s->sliding_direction->x(), 1.0) + ", " +
-                                                     number(s->sliding_direction->y(), 1.0) + ")");
-            if (s->sliding_normal_response) impulse.row("sliding_normal_response", *s->sliding_normal_response);
+                impulse.row("friction_solve.sliding_direction", "(" + number(s->sliding_direction->x(), 1.0) + ", " +
+                                                                    number(s->sliding_direction->y(), 1.0) + ")");
+            if (s->sliding_normal_response)
+                impulse.row("friction_solve.sliding_normal_response", *s->sliding_normal_response);
         }
-        impulse.contact_vector("impulse_contact", g.impulse_contact,
-                               accumulating                            ? "accumulated_after − accumulated_before"
+        impulse.contact_vector("impulse", g.impulse_contact,
+                               accumulating                            ? "accumulated.after − accumulated.before"
                                : g.model == ImpulseModel::frictionless ? std::string_view{}
                                : g.model == ImpulseModel::static_friction
-                                   ? "static_impulse (inside the cone)"
+                                   ? "friction_solve.static_impulse (inside the cone)"
                                    : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding_normal_response");
         // (14.3) is the frictionless g = Δv / d; the friction solve is chapter 15's, a sweep's increment its own.
         if (accumulating || g.model != ImpulseModel::frictionless) impulse.equation(accumulating ? "" : "ch. 15");
         impulse.world_vector("impulse_world", g.impulse_world);
         tables.push_back(impulse.done());
 
-        Table change("velocity_change", "velocity_change — the impulse applied", basis);
+        Table change(std::string(words::step::velocity_change), "velocity_change — the impulse applied", basis);
         change.world_vectors("impulsive_torque", r->velocity_change.impulsive_torque)
             .world_vectors("velocity_change", r->velocity_change.velocity_change)
             .world_vectors("rotation_change", r->velocity_change.rotation_change);

@@ -1,5 +1,7 @@
 #include "model/navigator.hpp"
 
+#include "record/words.hpp"
+
 #include "explain/format.hpp"
 #include "formats/input_error.hpp"
 #include "formats/suggest.hpp"
@@ -44,7 +46,7 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
              chosen},
             {what, v, "", "", "its value now, after the visits before this one", {}, what, v_exact},
         };
-        return {"choice", "choice — " + place + " visits contact " + chosen, std::move(rows)};
+        return {std::string(words::step::choice), "choice — " + place + " visits contact " + chosen, std::move(rows)};
     }
     std::vector<Row> rows{
         {"iteration", count + pass, "", "", "iterations count from 0 within the phase", {}, "iteration", count + pass},
@@ -66,7 +68,8 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
          "epsilon",
          e_exact},
     };
-    return {"choice", "choice — iteration " + count + " picks contact " + chosen, std::move(rows)};
+    return {std::string(words::step::choice), "choice — iteration " + count + " picks contact " + chosen,
+            std::move(rows)};
 }
 
 // A position iteration's pass, as the choice table words it.
@@ -349,6 +352,10 @@ GotoSpec parse_goto(std::string_view text, std::string_view where) {
         } else if (name == "step") {
             if (value.empty()) throw io::InputError(std::string(where), "step needs a name, e.g. step=impulse");
             spec.step = std::string(value);
+            // A step's name from before trace format 2 (velocity_per_unit_impulse, accumulated_impulse) reads as
+            // today's (docs/trace-format.md).
+            for (const words::StepRename& r : words::step_renames())
+                if (*spec.step == r.old_name) spec.step = std::string(r.new_name);
         } else
             throw io::InputError(std::string(where), "unknown part \"" + std::string(name) +
                                                          "\" (parts: frame, phase, iteration, contact, step)");

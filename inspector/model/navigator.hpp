@@ -72,7 +72,7 @@ std::optional<Cursor> previous_stage(const Trace& trace, const Cursor& cursor);
 
 // A place named by a person: --goto frame=F,phase=preparation|position|velocity,iteration=I,contact=C,
 // step=NAME. Every part is optional; `step` takes a step name ("impulse") or a quantity shown in one
-// ("angular_change").
+// ("position_change.angular_change").
 struct GotoSpec {
     std::optional<int> frame;  // the frame number, as recorded
     std::optional<Stage> stage;

@@ -18,7 +18,7 @@ fail() { echo "$*"; failures=$((failures + 1)); }
 cmp -s "$work/piped.json" "$work/expected.json" || fail "resolve - --trace - did not print exactly the trace"
 grep -q "velocity phase" "$work/stderr" || fail "the summary did not go to stderr"
 verdict=$("$program" resolve - --trace - < "$case_file" 2> /dev/null | "$program" validate -)
-[ "$verdict" = "<stdin>: valid trace (format version 1, 1 frame, 2 iterations)" ] || fail "validate - said: $verdict"
+[ "$verdict" = "<stdin>: valid trace (format version 2, 1 frame, 2 iterations)" ] || fail "validate - said: $verdict"
 
 # A FIFO read by another process.
 mkfifo "$work/trace.fifo"

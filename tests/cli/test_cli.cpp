@@ -31,7 +31,7 @@ TEST_CASE("resolve --explain prints every derivation step of the ruler as an ann
     // Each table is titled by its step's name (the chapter's step numbers differ from method to method).
     const char* steps[] = {"basis — ",
                            "relative_position — ",
-                           "velocity_per_unit_impulse — ",
+                           "delta_velocity_per_unit_impulse — ",
                            "contact_velocity — ",
                            "desired_delta_velocity — ",
                            "impulse — ",
@@ -60,7 +60,7 @@ TEST_CASE("resolve writes a trace that validate accepts, and says where it went"
     CHECK(r.out.find("trace written to " + trace) != std::string::npos);
     const CliResult v = run_cli({"validate", trace});
     CHECK(v.code == 0);
-    CHECK(v.out == trace + ": valid trace (format version 1, 1 frame, 2 iterations)\n");
+    CHECK(v.out == trace + ": valid trace (format version 2, 1 frame, 2 iterations)\n");
 }
 
 TEST_CASE("every shipped case validates") {

@@ -270,7 +270,7 @@ private:
             const PerBody<Vec3> q = relative_position(vec(k(at(c, "point"))), centres);  // q_rel = q − p (1.8)
             for (std::size_t i = 0; i < 2; ++i)
                 if (q[i]) put(at(at(c, "relative_position"), i), json_of(*q[i]));
-        } else if (step == "velocity_per_unit_impulse") {
+        } else if (step == "delta_velocity_per_unit_impulse") {
             const VelocityPerUnitImpulse chain =
                 velocity_per_unit_impulse(vec(k(at(c, "normal"))), relative_positions(c, bodies), masses(bodies));
             for (std::size_t i = 0; i < 2; ++i) {
@@ -278,7 +278,7 @@ private:
                 const UnitImpulseResponse& r = *chain.bodies[i];
                 put(at(at(c, "torque_per_unit_impulse"), i), json_of(r.torque_per_unit_impulse));
                 put(at(at(c, "rotation_per_unit_impulse"), i), json_of(r.rotation_per_unit_impulse));
-                put(at(at(c, "velocity_per_unit_impulse"), i), json_of(r.velocity_per_unit_impulse));
+                put(at(at(c, "point_velocity_per_unit_impulse"), i), json_of(r.velocity_per_unit_impulse));
                 put(at(at(c, "angular_component"), i), r.angular_component);
                 put(at(at(c, "linear_component"), i), r.linear_component);
             }
@@ -335,10 +335,10 @@ private:
         const auto chain = [&] {
             return velocity_per_unit_impulse(normal, relative_positions(c, bodies), masses(bodies));
         };
-        const auto per_body = [&](const std::string& key) {
+        const auto per_body = [&](const std::string& key, const std::string& object = {}) {
             PerBody<double> values;
             for (std::size_t i = 0; i < 2; ++i)
-                if (!bodies[i].is_null()) values[i] = number(at(at(p, key), i));
+                if (!bodies[i].is_null()) values[i] = number(at(at(object.empty() ? p : at(p, object), key), i));
             return values;
         };
         if (step == "choice") {
@@ -368,7 +368,7 @@ private:
                 put(at(at(p, "linear_inertia"), i), *inertia.linear_inertia[i]);
                 put(at(at(p, "angular_inertia"), i), *inertia.angular_inertia[i]);
             }
-            put(at(p, "total_inertia"), inertia.total_inertia);
+            put(at(p, "penetration_inertia"), inertia.total_inertia);
         } else if (step == "rewind") {
             // The bodies go back along their paths by the same time t = penetration / closing speed, at most the
             // frame (the chapter's velocity-based resolution).
@@ -399,7 +399,7 @@ private:
             }
         } else if (step == "move_split") {
             PenetrationInertia inertia{per_body("linear_inertia"), per_body("angular_inertia"),
-                                       number(at(p, "total_inertia"))};
+                                       number(at(p, "penetration_inertia"))};
             MoveSplit moves;
             if (inertia.total_inertia > 0.0) {
                 moves = move_split(number(at(p, "amount")), inertia);
@@ -425,11 +425,11 @@ private:
             }
             for (std::size_t i = 0; i < 2; ++i) {
                 if (!moves.linear_move[i]) continue;
-                put(at(at(p, "linear_move"), i), *moves.linear_move[i]);
-                put(at(at(p, "angular_move"), i), *moves.angular_move[i]);
+                put(at(at(at(p, "move_split"), "linear_move"), i), *moves.linear_move[i]);
+                put(at(at(at(p, "move_split"), "angular_move"), i), *moves.angular_move[i]);
             }
         } else if (step == "position_change") {
-            const MoveSplit moves{per_body("linear_move"), per_body("angular_move")};
+            const MoveSplit moves{per_body("linear_move", "move_split"), per_body("angular_move", "move_split")};
             PositionChange change = position_change(moves, normal, chain());
             const std::string r = at(p, "rewind");
             const bool rewound = k(at(p, "method")) == "velocity_based";
@@ -439,8 +439,8 @@ private:
                     *change.linear_change[i] += vec(k(at(at(r, "linear_change"), i)));
                     *change.angular_change[i] += vec(k(at(at(r, "angular_change"), i)));
                 }
-                put(at(at(p, "linear_change"), i), json_of(*change.linear_change[i]));
-                put(at(at(p, "angular_change"), i), json_of(*change.angular_change[i]));
+                put(at(at(at(p, "position_change"), "linear_change"), i), json_of(*change.linear_change[i]));
+                put(at(at(at(p, "position_change"), "angular_change"), i), json_of(*change.angular_change[i]));
             }
         } else if (step == "updates") {
             const std::string updates = at(p, "updates");
@@ -453,8 +453,8 @@ private:
                 const double before = number(current(phase, iteration, u, other, "penetration", "after"));
                 // The moved point of the other contact along its normal: (Δp + Δθ × q_rel) · n.
                 const Vec3 q = vec(k(at(at(o, "relative_position"), slot)));
-                const Vec3 move =
-                    vec(k(at(at(p, "linear_change"), moved))) + vec(k(at(at(p, "angular_change"), moved))).cross(q);
+                const Vec3 move = vec(k(at(at(at(p, "position_change"), "linear_change"), moved))) +
+                                  vec(k(at(at(at(p, "position_change"), "angular_change"), moved))).cross(q);
                 const double delta = -body_sign(static_cast<int>(slot)) * move.dot(vec(k(at(o, "normal"))));
                 put(at(update, "delta"), delta);
                 put(at(update, "after"), before + delta);
@@ -494,7 +494,7 @@ private:
                         io::json::array({s.sliding_direction->x(), s.sliding_direction->y()}));
                 if (s.sliding_normal_response) put(at(f, "sliding_normal_response"), *s.sliding_normal_response);
             }
-            put(at(v, "impulse_contact"), json_of(g.impulse_contact));
+            put(at(v, "impulse"), json_of(g.impulse_contact));
             put(at(v, "impulse_world"), json_of(g.impulse_world));
         } else if (step == "velocity_change") {
             const VelocityChange change =

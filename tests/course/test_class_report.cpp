@@ -154,7 +154,7 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
     // Ben's d is the first wrong number; the impulse and everything computed from it follow.
     CHECK(summary[2].fields[6] != "100.0");
     CHECK(summary[2].fields[7] ==
-          "frame 0 · preparation · contact 0 · velocity_per_unit_impulse: delta_velocity_per_unit_impulse");
+          "frame 0 · preparation · contact 0 · delta_velocity_per_unit_impulse: delta_velocity_per_unit_impulse");
     CHECK(summary[2].fields[8] == "frames[0].contacts[0].delta_velocity_per_unit_impulse");
     // 14 blank of 67: 53 / 67 = 79.1 %.
     CHECK(summary[3].fields == std::vector<std::string>{dir.file("class/cy.csv").string(), "worksheet", "67", "53", "0",
@@ -172,7 +172,7 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
                row.fields[9] == "frames[0].contacts[0].delta_velocity_per_unit_impulse";
     });
     REQUIRE(ben_d != cells.end());
-    CHECK(ben_d->fields[1] == "frame 0 · preparation · contact 0 · velocity_per_unit_impulse");
+    CHECK(ben_d->fields[1] == "frame 0 · preparation · contact 0 · delta_velocity_per_unit_impulse");
     CHECK(ben_d->fields[2] == "delta_velocity_per_unit_impulse");
     CHECK(ben_d->fields[3] == "m/s per N·s");
     CHECK(ben_d->fields[5] == "1.33333");
@@ -184,10 +184,10 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
         CHECK_MESSAGE(std::filesystem::exists(dir.file(std::string("report/feedback/") + page)), page);
     const std::string ben = read_text(dir.file("report/feedback/ben.md"));
     CHECK(ben.starts_with("# Feedback on ben.csv\n"));
-    CHECK(
-        ben.find("## ▶ Where it first went wrong\n\n**frame 0 · preparation · contact 0 · velocity_per_unit_impulse**, "
-                 "`delta_velocity_per_unit_impulse` (m/s per N·s): the engine has 2.22559, you have 1.33333") !=
-        std::string::npos);
+    CHECK(ben.find("## ▶ Where it first went wrong\n\n**frame 0 · preparation · contact 0 · "
+                   "delta_velocity_per_unit_impulse**, "
+                   "`delta_velocity_per_unit_impulse` (m/s per N·s): the engine has 2.22559, you have 1.33333") !=
+          std::string::npos);
     CHECK(lines_with(ben, "| ▶ |") == 1);
     CHECK(ben.find("frames[0]") == std::string::npos);  // no raw paths for a student
     const std::string cy = read_text(dir.file("report/feedback/cy.md"));
@@ -209,11 +209,11 @@ TEST_CASE("the class summary in the terminal shows each file's wrong cells in th
     CHECK(r.code == 1);
     CHECK(r.out.find(dir.file("class/ben.csv").string() + ": 1 finding\n"
                                                           "   kind   quantity          expected       found  unit  "
-                                                          "rel. error  formula              eq.\n"
+                                                          "rel. error  formula      eq.\n"
                                                           "frame 0 · velocity phase · iteration 0 · contact 0 · "
                                                           "impulse\n"
                                                           "▶  value  impulse_world[1]  0.14073673208  0.15   N·s   "
-                                                          "0.0658      C · impulse_contact\n") != std::string::npos);
+                                                          "0.0658      C · impulse\n") != std::string::npos);
     CHECK(r.out.find("2 files: 1 all match, 1 with mismatches or blanks, 0 unreadable") != std::string::npos);
 }
 

@@ -139,7 +139,7 @@ TEST_CASE("one perturbed value is reported at exactly its path as the first dive
     CHECK(f["place"] == "frame 0 · velocity phase · iteration 0 · contact 0 · impulse");
     CHECK(f["quantity"] == "impulse_world[1]");
     CHECK(f["unit"] == "N·s");
-    CHECK(f["formula"] == "C · impulse_contact");
+    CHECK(f["formula"] == "C · impulse");
     CHECK(f["first_divergence"] == true);
     CHECK(report["first_divergence"] == f["path"]);
 
@@ -148,7 +148,7 @@ TEST_CASE("one perturbed value is reported at exactly its path as the first dive
     const CliResult text = run_cli({"diff", ruler, other});
     CHECK(text.code == 1);
     CHECK(text.out.find("frame 0 · velocity phase · iteration 0 · contact 0 · impulse\n"
-                        "▶  value  impulse_world[1]  0.14073673208  0.15   N·s   0.0658      C · impulse_contact\n") !=
+                        "▶  value  impulse_world[1]  0.14073673208  0.15   N·s   0.0658      C · impulse\n") !=
           std::string::npos);
     CHECK(text.out.find("▶ first divergence: frame 0 · velocity phase · iteration 0 · contact 0 · impulse: "
                         "impulse_world[1] (frames[0].phases[1].iterations[0].impulse_world[1])") != std::string::npos);
@@ -275,7 +275,7 @@ TEST_CASE("one wrong cell of a worksheet is reported alone, and a blank one as b
     TempDir dir;
     io::json document = filled_worksheet("cases/sliding_box");
     // Two of the sliding box's values: the first impulse's normal part, and body 0's rotation change.
-    cell_at(document, "frames[0].phases[1].iterations[0].impulse_contact")[0] = 0.5;
+    cell_at(document, "frames[0].phases[1].iterations[0].impulse")[0] = 0.5;
     cell_at(document, "frames[0].phases[1].iterations[0].rotation_change[0]")[2] = nullptr;
     const std::string sheet = write_json(dir, "student.json", document);
     const io::json report = diff_json(cases + "sliding_box.json", sheet, 1);
@@ -284,7 +284,7 @@ TEST_CASE("one wrong cell of a worksheet is reported alone, and a blank one as b
     REQUIRE(report["findings"].size() == 2);
     const io::json& wrong = report["findings"][0];
     CHECK(wrong["kind"] == "value");
-    CHECK(wrong["path"] == "frames[0].phases[1].iterations[0].impulse_contact[0]");
+    CHECK(wrong["path"] == "frames[0].phases[1].iterations[0].impulse[0]");
     CHECK(wrong["expected"].get<double>() == doctest::Approx(0.45291949485020394));
     CHECK(wrong["found"] == 0.5);
     CHECK(wrong["equation"] == "(14.3)");
@@ -309,7 +309,7 @@ TEST_CASE("a CSV worksheet is graded the same way, one row per number") {
     REQUIRE(at != std::string::npos);
     text.replace(at + row.size(), text.find(',', at + row.size()) - at - row.size(), "0.15");
     const std::string blank_row =
-        "cell,frames[0].phases[0].iterations[0].total_inertia,penetration_inertia,total_inertia,";
+        "cell,frames[0].phases[0].iterations[0].penetration_inertia,penetration_inertia,penetration_inertia,";
     const std::size_t blank_at = text.find(blank_row);
     REQUIRE(blank_at != std::string::npos);
     text.erase(blank_at + blank_row.size(), text.find(',', blank_at + blank_row.size()) - blank_at - blank_row.size());
@@ -317,7 +317,7 @@ TEST_CASE("a CSV worksheet is graded the same way, one row per number") {
     REQUIRE(report["findings"].size() == 2);
     // In trace order: the position phase ran first.
     CHECK(report["findings"][0]["kind"] == "blank");
-    CHECK(report["findings"][0]["path"] == "frames[0].phases[0].iterations[0].total_inertia");
+    CHECK(report["findings"][0]["path"] == "frames[0].phases[0].iterations[0].penetration_inertia");
     CHECK(report["findings"][1]["kind"] == "value");
     CHECK(report["findings"][1]["path"] == "frames[0].phases[1].iterations[0].impulse_world[1]");
     CHECK(report["findings"][1]["first_divergence"] == true);

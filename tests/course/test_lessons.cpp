@@ -111,6 +111,22 @@ TEST_CASE(
     }
 }
 
+TEST_CASE("a lesson written with a step's name from before trace format 2 opens at the renamed step, with a note") {
+    // velocity_per_unit_impulse was the step that computes d; it is delta_velocity_per_unit_impulse now.
+    TempDir dir;
+    const std::string steps =
+        R"({"id": "closing", "at": "phase=preparation,contact=0,step=velocity_per_unit_impulse"},
+           {"id": "desired", "at": "phase=velocity,iteration=0,step=desired_delta_velocity"})";
+    const auto file = dir.write("01-test.md", lesson_text(steps,
+                                                          "## closing\nThe `delta_velocity_per_unit_impulse`.\n\n"
+                                                          "## desired\nThe `desired_delta_velocity`.\n"));
+    const lessons::PreparedLesson p = lessons::prepare_lesson(lessons::read_lesson(file));
+    CHECK(p.lesson.steps[0].at == "phase=preparation,contact=0,step=delta_velocity_per_unit_impulse");
+    REQUIRE(p.lesson.notes.size() == 1);
+    CHECK(p.lesson.notes[0] ==
+          "steps[0].at: step \"velocity_per_unit_impulse\" is now \"delta_velocity_per_unit_impulse\"");
+}
+
 TEST_CASE("a predict answer is right within its tolerance and says how far off it was") {
     TempDir dir;
     const auto file = dir.write("01-test.md", lesson_text(good_steps, good_sections));
@@ -161,7 +177,7 @@ TEST_CASE("malformed lessons are rejected with the place of the problem") {
          "steps[0].question.options: no option equals the engine's value frictionless"},
         {lesson_text(R"({"id": "a", "at": "phase=velocity", "question": {"kind": "predict", "prompt": "?",
                        "value": "desired_delta_velocity", "tolerance": {"relative": 0.1},
-                       "reveals": ["impulse_contact", "angular_componet"]}})",
+                       "reveals": ["impulse", "angular_componet"]}})",
                      "## a\nx\n"),
          "steps[0].question.reveals[1]: \"angular_componet\" is not a quantity of the vocabulary "
          "(docs/trace-format.md); did you mean \"angular_component\"?"},

@@ -221,7 +221,7 @@ TEST_CASE("lesson 1's giveaways stay hidden until their questions are answered")
     // 15 N·s (step 6's) and the ball's velocity after (step 8's).
     const lessons::Mask first(reaches, run.open(), trace);
     CHECK(first.hides_value(preparation, 0, "desired_delta_velocity", 7.5));
-    CHECK(first.hides_row(iteration, row("impulse_contact")));
+    CHECK(first.hides_row(iteration, row("impulse")));
     CHECK(first.hides_row(iteration, row("impulse_world")));
     CHECK(first.hides_row(iteration, row("velocity_change")));
     CHECK(first.hides_body(iteration, 0, true));
@@ -231,12 +231,12 @@ TEST_CASE("lesson 1's giveaways stay hidden until their questions are answered")
     const lessons::Mask fifth(reaches, run.open(), trace);
     CHECK(fifth.hides_row(preparation, row("desired_delta_velocity")));
     CHECK_FALSE(fifth.hides_row(preparation, row("delta_velocity_per_unit_impulse")));
-    CHECK(fifth.hides_row(iteration, row("impulse_contact")));
+    CHECK(fifth.hides_row(iteration, row("impulse")));
     CHECK_FALSE(fifth.hides_row(preparation, row("separating_velocity")));  // what Δv is computed from
     // All answered: nothing hidden.
     run.answered_before(run.step_count());
     const lessons::Mask none(reaches, run.open(), trace);
-    CHECK_FALSE(none.hides_row(iteration, row("impulse_contact")));
+    CHECK_FALSE(none.hides_row(iteration, row("impulse")));
     CHECK_FALSE(none.hides_body(iteration, 0, true));
 }
 

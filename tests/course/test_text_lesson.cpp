@@ -29,10 +29,10 @@ std::string three_steps() {
                "question": {"kind": "predict", "prompt": "What desired change?", "value": "desired_delta_velocity",
                             "tolerance": {"relative": 0.02}}},
               {"id": "impulse", "at": "phase=velocity,iteration=0,step=desired_delta_velocity",
-               "question": {"kind": "predict", "prompt": "What impulse?", "value": "impulse_contact[0]",
+               "question": {"kind": "predict", "prompt": "What impulse?", "value": "impulse[0]",
                             "tolerance": {"relative": 0.02}}}])"
            "\n}\n```\n\nIntro.\n\n## closing\nThe `contact_velocity`.\n\n## desired\nThe "
-           "`desired_delta_velocity`.\n\n## impulse\nThe `impulse_contact` next.\n";
+           "`desired_delta_velocity`.\n\n## impulse\nThe `impulse` next.\n";
 }
 
 struct Course {

@@ -70,6 +70,14 @@ std::vector<Trace> every_kind_of_trace() {
     inspect::OpenOptions scene;
     scene.frames = 3;
     traces.push_back(opened("box_tipping", scene));
+    // The sweeping methods' words: sweeps, accumulated totals, the split impulse's push, Baumgarte's bias.
+    for (const char* preset : {"sweep", "pgs", "pgs_split", "soft_step"}) {
+        inspect::OpenOptions options;
+        options.preset = preset;
+        traces.push_back(opened("cases/tilted_box", options));
+        options.settings = {"baumgarte=true"};
+        traces.push_back(opened("cases/tilted_box", options));
+    }
     return traces;
 }
 
@@ -102,6 +110,7 @@ TEST_CASE("every key a trace writes into a contact or an iteration belongs to a 
         for (const std::string& key : seen[k]) {
             CAPTURE(k);
             CAPTURE(key);
+            if (key == "updates") continue;  // an empty list (a sweep that keeps no updates) holds no keys
             CHECK(find_step_key(kinds[k], key) != nullptr);
         }
     }
@@ -150,9 +159,9 @@ TEST_CASE("a worksheet step's cells are the values it computes and its inputs wh
     const WorksheetStep& step = sheet.steps[0];
     CHECK(step.at == "frame=0,phase=velocity,iteration=0,step=impulse");
     CHECK(step.place == "frame 0 · velocity phase · iteration 0 · contact 0 · impulse");
-    CHECK(quantities(step.cells) == std::vector<std::string>{"impulse_model", "impulse_contact", "impulse_world"});
+    CHECK(quantities(step.cells) == std::vector<std::string>{"impulse_model", "impulse", "impulse_world"});
     const WorksheetEntry& g = step.cells[1];
-    CHECK(g.path == "frames[0].phases[1].iterations[0].impulse_contact");
+    CHECK(g.path == "frames[0].phases[1].iterations[0].impulse");
     CHECK(g.step == "impulse");
     CHECK(g.unit == "N·s");
     CHECK(g.equation == "(14.3)");
@@ -192,7 +201,7 @@ TEST_CASE("the default worksheet has every step with something to fill in of the
     for (const inspect::Cursor& c : places)
         names.push_back(inspect::step_tables(trace, c)[static_cast<std::size_t>(c.step)].step);
     // The ruler: one contact, one position iteration, one velocity iteration (whose choice is all given).
-    CHECK(names == std::vector<std::string>{"basis", "relative_position", "velocity_per_unit_impulse",
+    CHECK(names == std::vector<std::string>{"basis", "relative_position", "delta_velocity_per_unit_impulse",
                                             "contact_velocity", "desired_delta_velocity", "choice",
                                             "penetration_inertia", "move_split", "position_change", "updates",
                                             "contact_velocity", "desired_delta_velocity", "impulse", "velocity_change",
@@ -268,7 +277,7 @@ TEST_CASE("worksheet writes CSV with one row per number, each input once") {
             CHECK_FALSE(row->fields[4].empty());
         }
     }
-    // impulse_model, impulse_contact (3), impulse_world (3); then torque, velocity and rotation change of body 0.
+    // impulse_model, impulse (3), impulse_world (3); then torque, velocity and rotation change of body 0.
     CHECK(cells == 1 + 3 + 3 + 3 * 3);
     CHECK(paths.count("frames[0].phases[1].iterations[0].impulse_world[1]") == 1);
     CHECK(paths.count("frames[0].contacts[0].delta_velocity_per_unit_impulse") == 1);

@@ -94,7 +94,7 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
                                             "relative_position",
                                             "torque_per_unit_impulse",
                                             "rotation_per_unit_impulse",
-                                            "velocity_per_unit_impulse",
+                                            "point_velocity_per_unit_impulse",
                                             "angular_component",
                                             "linear_component",
                                             "delta_velocity_per_unit_impulse",
@@ -110,19 +110,19 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
                                             "desired_delta_velocity"};
     CHECK(keys == expected);
     const io::json& position = j["frames"][0]["phases"][0]["iterations"][0];
-    for (const char* key : {"linear_inertia", "angular_inertia", "total_inertia", "linear_move", "angular_move",
-                            "angular_limit", "linear_change", "angular_change", "updates"})
+    for (const char* key : {"linear_inertia", "angular_inertia", "penetration_inertia", "move_split", "angular_limit",
+                            "position_change", "updates"})
         CHECK_MESSAGE(position.contains(key), key);
     const io::json& velocity = j["frames"][0]["phases"][1]["iterations"][0];
-    for (const char* key : {"contact_velocity", "desired_delta_velocity", "impulse_contact", "impulse_world",
-                            "velocity_change", "rotation_change", "updates"})
+    for (const char* key : {"contact_velocity", "desired_delta_velocity", "impulse", "impulse_world", "velocity_change",
+                            "rotation_change", "updates"})
         CHECK_MESSAGE(velocity.contains(key), key);
 }
 
 TEST_CASE("the header says what ran: format, version, conventions, full settings and the scene") {
     const io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
     CHECK(j["format"] == "impulse-lab-trace");
-    CHECK(j["version"] == 1);
+    CHECK(j["version"] == 2);
     CHECK(j["conventions"]["quaternion"] == "[w, x, y, z], unit, body to world");
     CHECK(j["settings"] == io::settings_json(*preset("book"), WorldSettings{}));
     CHECK(j["scene"]["bodies"][0]["name"] == "ruler");
@@ -143,8 +143,8 @@ TEST_CASE("a trace whose indices point outside its scene is rejected with the pa
 
 TEST_CASE("a trace from a future format version is refused") {
     io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
-    j["version"] = 2;
-    CHECK_THROWS_WITH_AS(io::read_trace(j), "version: must be 1, got 2", io::InputError);
+    j["version"] = 3;
+    CHECK_THROWS_WITH_AS(io::read_trace(j), "version: must be 2, got 3", io::InputError);
 }
 
 TEST_CASE("a misspelt derivation key in a trace is named with its path") {

@@ -53,7 +53,7 @@ TEST_CASE("a headless script steps through the ruler case, exports, and the expo
                                   "screenshot " +
                                       dir.file("desired.png").string() +
                                       "\n"
-                                      "goto phase=position,step=angular_change\n"
+                                      "goto phase=position,step=position_change.angular_change\n"
                                       "screenshot " +
                                       dir.file("angular.png").string() +
                                       "\n"
@@ -75,7 +75,7 @@ TEST_CASE("a headless script steps through the ruler case, exports, and the expo
     // The table exported at angular_change ends with that step's rows, marked as changed.
     const std::string csv = read(dir.file("angular.csv"));
     CHECK(csv.starts_with("step,quantity,value,exact,other_frame,formula,equation,meaning,changed\n"));
-    CHECK(csv.find("position_change,angular_change[0],") != std::string::npos);
+    CHECK(csv.find("position_change,position_change.angular_change[0],") != std::string::npos);
     CHECK(csv.find("basis,") == std::string::npos);  // an iteration's table starts from its choice, not step 1
 
     const Image desired = load_png(dir.file("desired.png"));

@@ -175,7 +175,7 @@ TEST_CASE("a trace that records nothing has no first or last place") {
 TEST_CASE("a prepared contact's steps are the five of the preparation, in order") {
     const Trace trace = opened("cases/ruler");
     CHECK(step_names(trace, {0, Stage::preparation, 0, 0}) ==
-          std::vector<std::string>{"basis", "relative_position", "velocity_per_unit_impulse", "contact_velocity",
+          std::vector<std::string>{"basis", "relative_position", "delta_velocity_per_unit_impulse", "contact_velocity",
                                    "desired_delta_velocity"});
 }
 
@@ -374,13 +374,14 @@ TEST_CASE("step=angular_change goes to the position phase's table that shows the
     const Trace trace = opened("cases/ruler");
     REQUIRE(item_count(trace.frames[0], Stage::position) == 1);
     REQUIRE(trace.frames[0].position.iterations[0].resolution.has_value());
-    const Cursor c = resolve_goto(trace, parse_goto("phase=position,step=angular_change", "--goto"), "--goto");
+    const Cursor c =
+        resolve_goto(trace, parse_goto("phase=position,step=position_change.angular_change", "--goto"), "--goto");
     CHECK(c == Cursor{0, Stage::position, 0, 3});
     CHECK(step_at(trace, c) == "position_change");
     const std::vector<explain::StepTable> tables = step_tables(trace, c);
     const std::vector<explain::Row>& rows = tables[3].rows;
-    CHECK(
-        std::any_of(rows.begin(), rows.end(), [](const explain::Row& r) { return r.quantity == "angular_change[0]"; }));
+    CHECK(std::any_of(rows.begin(), rows.end(),
+                      [](const explain::Row& r) { return r.quantity == "position_change.angular_change[0]"; }));
     // A step name is taken before a quantity: step=impulse is the impulse table even though the choice shows no
     // impulse and desired_delta_velocity (step 2) precedes it.
     CHECK(resolve_goto(trace, parse_goto("phase=velocity,step=impulse", "g"), "g") == Cursor{0, Stage::velocity, 0, 3});
@@ -390,8 +391,8 @@ TEST_CASE("a step named without a phase is found in the first stage of the frame
     // The ruler's preparation shows no angular change; its position phase does (the test above): without phase=,
     // the goto lands where the step is, as an iteration without a phase lands in the first phase that has it.
     const Trace trace = opened("cases/ruler");
-    CHECK(resolve_goto(trace, parse_goto("step=angular_change", "g"), "g") ==
-          resolve_goto(trace, parse_goto("phase=position,step=angular_change", "g"), "g"));
+    CHECK(resolve_goto(trace, parse_goto("step=position_change.angular_change", "g"), "g") ==
+          resolve_goto(trace, parse_goto("phase=position,step=position_change.angular_change", "g"), "g"));
     // The preparation still comes first for a step it has.
     CHECK(resolve_goto(trace, parse_goto("step=basis", "g"), "g") == Cursor{0, Stage::preparation, 0, 0});
 }
@@ -400,12 +401,12 @@ TEST_CASE("a goto step in another phase than the one named says which phase has 
     // Regression: a misspelt step was answered with the preparation's list of steps, which does not hold the step
     // meant, so the user could not see the right name.
     const Trace trace = opened("cases/ruler");
-    CHECK(goto_error(trace, "phase=velocity,step=angular_change").problem() ==
-          "no step or quantity \"angular_change\" in the velocity phase; it is in the position phase "
+    CHECK(goto_error(trace, "phase=velocity,step=position_change").problem() ==
+          "no step or quantity \"position_change\" in the velocity phase; it is in the position phase "
           "(phase=position)");
-    const std::string misspelt = goto_error(trace, "step=angualr_change").problem();
-    CHECK(contains(misspelt, "no step or quantity \"angualr_change\" in the preparation (its steps: basis, "));
-    CHECK(contains(misspelt, "; did you mean \"angular_change\", in the position phase (phase=position)?"));
+    const std::string misspelt = goto_error(trace, "step=positon_change").problem();
+    CHECK(contains(misspelt, "no step or quantity \"positon_change\" in the preparation (its steps: basis, "));
+    CHECK(contains(misspelt, "; did you mean \"position_change\", in the position phase (phase=position)?"));
     // A name close to one of this stage's own is suggested without a phase.
     CHECK(contains(goto_error(trace, "phase=velocity,step=impuls").problem(), "did you mean \"impulse\"?"));
     // Nothing near: no suggestion.
@@ -488,8 +489,7 @@ TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accu
     CHECK(first.sweep->stage == SolverStage::warm_start);
     const Cursor at{2, Stage::velocity, 0, 0};
     CHECK(step_names(trace, at) == std::vector<std::string>{"choice", "contact_velocity", "desired_delta_velocity",
-                                                            "accumulated_impulse", "impulse", "velocity_change",
-                                                            "updates"});
+                                                            "accumulated", "impulse", "velocity_change", "updates"});
     const explain::StepTable choice = step_tables(trace, at)[0];
     CHECK(choice.title == "choice — warm_start visits contact " + std::to_string(first.contact));
     // Baumgarte's bias is a row of desired_delta_velocity.
@@ -498,9 +498,9 @@ TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accu
                       [](const explain::Row& r) { return r.quantity == "position_bias"; }));
     const explain::StepTable total = step_tables(trace, at)[3];
     REQUIRE(total.rows.size() == 4);
-    CHECK(total.rows[0].quantity == "accumulated_before");
-    CHECK(total.rows[2].quantity == "clamp");
-    CHECK(total.rows[3].quantity == "accumulated_after");
+    CHECK(total.rows[0].quantity == "accumulated.before");
+    CHECK(total.rows[2].quantity == "accumulated.clamp");
+    CHECK(total.rows[3].quantity == "accumulated.after");
     // A later visit is a solve sweep, and names its pass.
     const auto solve = std::find_if(frame.velocity.iterations.begin(), frame.velocity.iterations.end(),
                                     [](const VelocityIteration& it) { return it.sweep->stage == SolverStage::solve; });

@@ -399,7 +399,7 @@ TEST_CASE("world vectors carry their contact coordinates and contact vectors the
     bool saw_world = false, saw_contact = false;
     for (const ViewRow& r : impulse.rows) {
         if (r.row.quantity == "impulse_world") saw_world = starts_with(r.row.other_frame, "contact (");
-        if (r.row.quantity == "impulse_contact") saw_contact = starts_with(r.row.other_frame, "world (");
+        if (r.row.quantity == "impulse") saw_contact = starts_with(r.row.other_frame, "world (");
     }
     CHECK(saw_world);
     CHECK(saw_contact);

@@ -38,7 +38,7 @@ TEST_CASE("no quantity is computed from itself, however far its consumers reach"
     // By hand: the desired Δv feeds the impulse (14.3), the impulse the velocity change (7.5) and the
     // bodies; it is not an input of the basis or of d.
     const std::vector<std::string_view> from_desired = explain::consumers("desired_delta_velocity");
-    for (std::string_view c : {"impulse_contact", "impulse_world", "velocity_change", "bodies_after"})
+    for (std::string_view c : {"impulse", "impulse_world", "velocity_change", "bodies_after"})
         CHECK(std::find(from_desired.begin(), from_desired.end(), c) != from_desired.end());
     for (std::string_view c : {"basis", "delta_velocity_per_unit_impulse", "separating_velocity"})
         CHECK(std::find(from_desired.begin(), from_desired.end(), c) == from_desired.end());
@@ -75,14 +75,16 @@ TEST_CASE("a question's path names its quantity, with the item it is read in") {
         return a ? std::string(a->quantity) : std::string("none");
     };
     CHECK(name("desired_delta_velocity", ItemKind::contact) == "desired_delta_velocity");
-    CHECK(name("impulse_contact[0]", ItemKind::velocity_iteration) == "impulse_contact");
+    CHECK(name("impulse[0]", ItemKind::velocity_iteration) == "impulse");
     CHECK(name("updates[0].after[0]", ItemKind::velocity_iteration) == "velocity_update");
     CHECK(name("updates[2].after", ItemKind::position_iteration) == "penetration_update");
-    CHECK(name("rewind.time", ItemKind::position_iteration) == "rewind_time");
-    CHECK(name("friction_solve.delta_velocity_matrix[1][1]", ItemKind::velocity_iteration) == "delta_velocity_matrix");
-    CHECK(name("angular_limit.applied[0]", ItemKind::position_iteration) == "angular_limit_applied");
-    CHECK(name("angular_limit.maximum[0]", ItemKind::position_iteration) == "angular_limit");
-    CHECK(name("impulse_contact[0]", ItemKind::contact) == "none");  // a prepared contact has no impulse
+    CHECK(name("rewind.time", ItemKind::position_iteration) == "rewind.time");
+    CHECK(name("friction_solve.delta_velocity_matrix[1][1]", ItemKind::velocity_iteration) ==
+          "friction_solve.delta_velocity_matrix");
+    CHECK(name("angular_limit.applied[0]", ItemKind::position_iteration) == "angular_limit.applied");
+    CHECK(name("angular_limit.maximum[0]", ItemKind::position_iteration) == "angular_limit.maximum");
+    CHECK(name("move_split.linear_move[1]", ItemKind::position_iteration) == "move_split.linear_move");
+    CHECK(name("impulse[0]", ItemKind::contact) == "none");  // a prepared contact has no impulse
     CHECK(name("no_such_key", ItemKind::contact) == "none");
 }
 

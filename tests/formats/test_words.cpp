@@ -1,0 +1,339 @@
+// The word list (engine/record/words.hpp) against everything that spells its words: the committed JSON Schema
+// (every key in both, of the same kind), the keys and kinds a trace writes, the committed docs, and format 1's
+// traces, which still open with the renames.
+
+#include "formats/input_error.hpp"
+#include "formats/json_text.hpp"
+#include "formats/scene_file.hpp"
+#include "formats/trace_docs.hpp"
+#include "formats/trace_json.hpp"
+#include "record/trace_recorder.hpp"
+#include "record/words.hpp"
+#include "resolver/resolver.hpp"
+#include "settings/settings.hpp"
+#include "formats/settings_json.hpp"
+
+#include <doctest/doctest.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+using namespace impulse;
+
+namespace {
+
+std::string file_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+using KeyKinds = std::map<std::string, words::Kind>;
+
+// The kind the schema gives a property: its $ref's definition, or its type.
+words::Kind schema_kind(const io::json& property) {
+    if (property.contains("$ref")) {
+        const std::string ref = property["$ref"].get<std::string>();
+        const std::string name = ref.substr(ref.rfind('/') + 1);
+        if (name == "vec3") return words::Kind::vec3;
+        if (name == "vec2") return words::Kind::vec2;
+        if (name == "mat3") return words::Kind::mat3;
+        if (name.starts_with("per_body_vec3")) return words::Kind::per_body_vec3;
+        if (name.starts_with("per_body_number")) return words::Kind::per_body_number;
+        if (name == "per_body_bool") return words::Kind::per_body_bool;
+        return words::Kind::object;  // rewind, angular_limit, friction_solve, origin: objects of words
+    }
+    if (property.contains("enum")) {
+        const io::json& first = property["enum"][0];
+        return first.is_string() ? words::Kind::word : first.is_boolean() ? words::Kind::boolean : words::Kind::integer;
+    }
+    const io::json& type = property["type"];
+    if (type == "integer") return words::Kind::integer;
+    if (type == "number") return words::Kind::number;
+    if (type == "boolean") return words::Kind::boolean;
+    if (type == "string") return words::Kind::word;
+    if (type == "object") return words::Kind::object;
+    if (type == "array") {
+        const io::json& items = property.contains("items") ? property["items"] : io::json();
+        if (items.contains("$ref") || items.contains("type")) {
+            const bool objects = items.contains("$ref") || items["type"] == "object";
+            if (objects) return words::Kind::list;
+        }
+        return words::Kind::bodies;  // [body_index, body_index]
+    }
+    return words::Kind::none;
+}
+
+const io::json& resolved(const io::json& schema, const io::json& property) {
+    if (!property.contains("$ref")) return property;
+    const std::string ref = property["$ref"].get<std::string>();
+    return schema["$defs"][ref.substr(ref.rfind('/') + 1)];
+}
+
+// Every key of an item's schema, nested ones by their path ("rewind.time", "updates[].after").
+void schema_keys(const io::json& schema, const io::json& object, const std::string& prefix, KeyKinds& out) {
+    for (const auto& [key, property] : object["properties"].items()) {
+        const std::string path = prefix + key;
+        const words::Kind kind = schema_kind(property);
+        out[path] = kind;
+        if (kind == words::Kind::object) schema_keys(schema, resolved(schema, property), path + ".", out);
+        if (kind == words::Kind::list) schema_keys(schema, resolved(schema, property["items"]), path + "[].", out);
+    }
+}
+
+KeyKinds word_keys(char item) {
+    KeyKinds out;
+    for (const words::Word& w : words::all())
+        if (words::held_by(w, item) && w.kind != words::Kind::none) out[std::string(w.quantity)] = w.kind;
+    return out;
+}
+
+// The kind of a written value, as the word list names kinds (per body: two elements, one maybe null).
+bool value_is(const io::json& v, words::Kind kind) {
+    const auto vec = [](const io::json& x, std::size_t n) {
+        return x.is_array() && x.size() == n &&
+               std::all_of(x.begin(), x.end(), [](const io::json& e) { return e.is_number(); });
+    };
+    const auto per_body = [&v](auto element) {
+        return v.is_array() && v.size() == 2 &&
+               std::all_of(v.begin(), v.end(), [&](const io::json& e) { return e.is_null() || element(e); });
+    };
+    switch (kind) {
+        case words::Kind::integer:
+            return v.is_number_integer();
+        case words::Kind::number:
+            return v.is_number();
+        case words::Kind::boolean:
+            return v.is_boolean();
+        case words::Kind::word:
+            return v.is_string();
+        case words::Kind::vec2:
+            return vec(v, 2);
+        case words::Kind::vec3:
+            return vec(v, 3);
+        case words::Kind::mat3:
+            return v.is_array() && v.size() == 3 &&
+                   std::all_of(v.begin(), v.end(), [&](const io::json& r) { return vec(r, 3); });
+        case words::Kind::per_body_number:
+            return per_body([](const io::json& e) { return e.is_number(); });
+        case words::Kind::per_body_vec3:
+            return per_body([&](const io::json& e) { return vec(e, 3); });
+        case words::Kind::per_body_bool:
+            return per_body([](const io::json& e) { return e.is_boolean(); });
+        case words::Kind::bodies:
+            return per_body([](const io::json& e) { return e.is_number_integer(); });
+        case words::Kind::object:
+            return v.is_object();
+        case words::Kind::list:
+            return v.is_array();
+        case words::Kind::none:
+            return false;
+    }
+    return false;
+}
+
+void check_item(const io::json& item, char kind, const std::string& prefix, std::set<std::string>& seen) {
+    for (const auto& [key, value] : item.items()) {
+        const std::string path = prefix + key;
+        const words::Word* w = words::find(path, kind);
+        CAPTURE(kind);
+        CAPTURE(path);
+        REQUIRE(w != nullptr);
+        CHECK(value_is(value, w->kind));
+        seen.insert(path);
+        if (w->kind == words::Kind::object) check_item(value, kind, path + ".", seen);
+        if (w->kind == words::Kind::list)
+            for (const io::json& element : value) check_item(element, kind, path + "[].", seen);
+    }
+}
+
+Trace resolved_case(const std::string& name, const std::string& preset, const std::vector<std::string>& set = {}) {
+    Trace trace;
+    trace.scene =
+        io::read_scene(io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/scenes/" + name + ".json")), preset);
+    for (const std::string& s : set) io::apply_setting(trace.scene, s, "--set");
+    std::vector<RigidBody> bodies = trace.scene.bodies;
+    TraceRecorder recorder(trace);
+    resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
+    return trace;
+}
+
+}  // namespace
+
+TEST_CASE("the committed trace schema and the word list name the same keys, of the same kinds") {
+    const io::json schema = io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/schemas/trace.schema.json"));
+    CHECK(schema["properties"]["version"]["const"] == words::format_version);
+    for (const auto& [item, definition] :
+         {std::pair{'C', "contact"}, std::pair{'P', "position_iteration"}, std::pair{'V', "velocity_iteration"}}) {
+        KeyKinds in_schema;
+        schema_keys(schema, schema["$defs"][definition], "", in_schema);
+        const KeyKinds in_words = word_keys(item);
+        CAPTURE(item);
+        for (const auto& [key, kind] : in_schema) {
+            CAPTURE(key);
+            REQUIRE(in_words.count(key) == 1);
+            CHECK(static_cast<int>(in_words.at(key)) == static_cast<int>(kind));
+        }
+        for (const auto& [key, kind] : in_words) {
+            CAPTURE(key);
+            CHECK(in_schema.count(key) == 1);
+        }
+    }
+}
+
+TEST_CASE("every key a trace writes is a word of its item, its value of the word's kind") {
+    std::set<std::string> seen;
+    for (const std::string& name : {std::string("cases/ruler"), std::string("cases/sliding_box"),
+                                    std::string("cases/tilted_box"), std::string("cases/oblique_friction")})
+        for (std::string_view preset : preset_names())
+            for (const std::vector<std::string>& set :
+                 {std::vector<std::string>{}, std::vector<std::string>{"position_method=velocity_based"}}) {
+                const io::json document = io::trace_json(resolved_case(name, std::string(preset), set));
+                for (const io::json& frame : document["frames"]) {
+                    for (const io::json& contact : frame["contacts"]) check_item(contact, 'C', "", seen);
+                    for (const io::json& phase : frame["phases"])
+                        for (const io::json& it : phase["iterations"])
+                            check_item(it, phase["phase"] == "position" ? 'P' : 'V', "", seen);
+                }
+            }
+    CHECK(seen.count("push_impulse") == 1);  // split impulse ran
+    CHECK(seen.count("rewind.time") == 1);   // velocity-based ran
+}
+
+TEST_CASE("every word's inputs are words, and a step's name is a word of the item it belongs to") {
+    for (const words::Word& w : words::all()) {
+        CAPTURE(w.quantity);
+        CHECK_FALSE(w.step.empty());
+        std::string_view rest = w.inputs;
+        while (!rest.empty()) {
+            const std::size_t space = rest.find(' ');
+            const std::string_view input = rest.substr(0, space);
+            CAPTURE(input);
+            CHECK(words::find(input) != nullptr);
+            if (space == std::string_view::npos) break;
+            rest.remove_prefix(space + 1);
+        }
+    }
+    for (std::string_view step :
+         {words::step::basis, words::step::relative_position, words::step::delta_velocity_per_unit_impulse,
+          words::step::contact_velocity, words::step::desired_delta_velocity, words::step::accumulated,
+          words::step::impulse, words::step::velocity_change, words::step::rewind, words::step::penetration_inertia,
+          words::step::move_split, words::step::position_change, words::step::updates}) {
+        CAPTURE(step);
+        const words::Word* w = words::find(step);
+        REQUIRE(w != nullptr);
+        CHECK(w->kind != words::Kind::none);  // stored: the trace has a key of the step's name
+    }
+}
+
+TEST_CASE("docs/trace-format.md lists the words as the word list has them") {
+    // IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*' writes the section from the list.
+    const std::string path = IMPULSE_SOURCE_DIR "/docs/trace-format.md";
+    const std::string committed = file_text(path);
+    const std::string generated = io::with_trace_word_docs(committed, io::trace_word_docs());
+    if (generated != committed && std::getenv("IMPULSE_WRITE_DOCS")) {
+        std::ofstream(path, std::ios::binary) << generated;
+        MESSAGE("wrote the word tables of " << path);
+        return;
+    }
+    REQUIRE(committed.find(io::trace_docs_begin) != std::string::npos);
+    CHECK_MESSAGE(generated == committed,
+                  "docs/trace-format.md's word tables differ from engine/record/words.cpp; regenerate them with "
+                  "IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*'");
+}
+
+namespace {
+
+// A committed trace of format 1 (tests/data/format1, written by the last format-1 build) and the same run today.
+struct Format1Pair {
+    io::json old_document;
+    Trace read;     // the format-1 file read
+    Trace current;  // the same case and settings resolved now
+};
+
+Format1Pair format1_pair(const std::string& file, const std::string& name, const std::string& preset,
+                         const std::vector<std::string>& set = {}) {
+    Format1Pair pair;
+    pair.old_document = io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/tests/data/format1/" + file));
+    pair.read = io::read_trace(pair.old_document);
+    pair.current = resolved_case(name, preset, set);
+    return pair;
+}
+
+}  // namespace
+
+TEST_CASE("a format-1 trace opens: every value where format 2 keeps it, and the version says it was format 1") {
+    // tilted_box with velocity-based resolution: the rewind, the angular limit, the move split and the position
+    // change of format 1's flat keys (linear_move, total_inertia, linear_change ...), and an impulse_contact.
+    const Format1Pair velocity_based = format1_pair("tilted_box.velocity_based.trace.json", "cases/tilted_box", "book",
+                                                    {"position_method=velocity_based"});
+    CHECK(velocity_based.old_document["version"] == 1);
+    CHECK(velocity_based.read.version == 1);
+    CHECK(velocity_based.read.frames == velocity_based.current.frames);
+    // Written again, it is format 2, key for key what today's run writes.
+    CHECK(io::trace_json(velocity_based.read) == io::trace_json(velocity_based.current));
+
+    // The split impulse's push was `amount` in format 1: it is read as push_impulse, in N·s.
+    const Format1Pair split = format1_pair("tilted_box.pgs_split.trace.json", "cases/tilted_box", "pgs_split");
+    CHECK(split.read.frames == split.current.frames);
+    CHECK(io::trace_json(split.read) == io::trace_json(split.current));
+    const io::json upgraded = io::trace_json(split.read);
+    bool pushed = false;
+    for (const io::json& phase : upgraded["frames"][0]["phases"])
+        for (const io::json& it : phase["iterations"])
+            if (it.contains("method") && it["method"] == "split_impulse") {
+                CHECK(it.contains("push_impulse"));
+                CHECK_FALSE(it.contains("amount"));
+                pushed = true;
+            }
+    CHECK(pushed);
+}
+
+TEST_CASE("upgrading a format-1 document moves exactly the renamed keys and sets the version") {
+    io::json document =
+        io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/tests/data/format1/tilted_box.velocity_based.trace.json"));
+    const io::json& old_position = document["frames"][0]["phases"][0]["iterations"][0];
+    const io::json linear_move = old_position["linear_move"];
+    const io::json total = old_position["total_inertia"];
+    const io::json impulse = document["frames"][0]["phases"][1]["iterations"][0]["impulse_contact"];
+    const io::json point_velocity = document["frames"][0]["contacts"][0]["velocity_per_unit_impulse"];
+    REQUIRE(io::upgrade_trace_document(document) == std::optional<int>(1));
+    CHECK(document["version"] == trace_format_version);
+    const io::json& position = document["frames"][0]["phases"][0]["iterations"][0];
+    CHECK(position["move_split"]["linear_move"] == linear_move);
+    CHECK(position["penetration_inertia"] == total);
+    CHECK_FALSE(position.contains("linear_move"));
+    CHECK_FALSE(position.contains("total_inertia"));
+    CHECK(position.contains("amount"));  // velocity-based: a distance, still `amount`
+    CHECK(document["frames"][0]["phases"][1]["iterations"][0]["impulse"] == impulse);
+    CHECK(document["frames"][0]["contacts"][0]["point_velocity_per_unit_impulse"] == point_velocity);
+    // A current document is left alone.
+    CHECK_FALSE(io::upgrade_trace_document(document).has_value());
+    // The note names the file and the two formats in one line.
+    const std::string note = io::format1_note("old.json");
+    CHECK(note.find("old.json") != std::string::npos);
+    CHECK(note.find("format 1") != std::string::npos);
+    CHECK(note.find('\n') == std::string::npos);
+}
+
+TEST_CASE("a format-2 trace that records a split impulse's push as amount is refused with the path") {
+    io::json document = io::trace_json(resolved_case("cases/tilted_box", "pgs_split"));
+    for (io::json& phase : document["frames"][0]["phases"])
+        for (io::json& it : phase["iterations"])
+            if (it.contains("push_impulse")) {
+                it["amount"] = it["push_impulse"];
+                it.erase("push_impulse");
+                break;
+            }
+    try {
+        io::read_trace(document);
+        FAIL("read");
+    } catch (const io::InputError& e) {
+        CHECK(e.where().find("frames[0].phases[") == 0);
+        CHECK(e.problem().find("push_impulse") != std::string::npos);
+    }
+}

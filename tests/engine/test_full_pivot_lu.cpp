@@ -6,7 +6,9 @@
 #include "derivation/impulse.hpp"
 #include "math/full_pivot_lu.hpp"
 #include "preparation/prepared_contact.hpp"
+#if IMPULSE_HAVE_RAPIDCHECK  // property tests need rapidcheck (not in the engine-only build)
 #include "support/random_contacts.hpp"
+#endif
 
 #include <doctest/doctest.h>
 
@@ -139,6 +141,7 @@ TEST_CASE("the 3x3 full-pivot solve matches Eigen's FullPivLU on nearly singular
     for (const Mat3& k : special) CHECK(agrees_with_eigen(k, some_targets(random)));
 }
 
+#if IMPULSE_HAVE_RAPIDCHECK
 TEST_CASE("the 3x3 full-pivot solve matches Eigen's FullPivLU on the delta velocity matrices of random contacts") {
     std::mt19937 random(11);
     rc::check([&random] {
@@ -149,3 +152,4 @@ TEST_CASE("the 3x3 full-pivot solve matches Eigen's FullPivLU on the delta veloc
         RC_ASSERT(agrees_with_eigen(k, some_targets(random)));
     });
 }
+#endif

@@ -114,7 +114,7 @@ TEST_CASE("a tournament changed several contacts at once ranks every contact as 
     // tree and a tree changed one contact at a time must then give up their contacts in the same order
     // (largest first, lowest index on a tie), which checks every match, not only the final one.
     std::mt19937 random(17);
-    const int n = 100;
+    constexpr int n = 100;
     ContactTournament batch, single;
     std::vector<double> start(n);
     std::vector<char> present(n);
@@ -124,7 +124,7 @@ TEST_CASE("a tournament changed several contacts at once ranks every contact as 
     }
     batch.fill(start, present);
     single.fill(start, present);
-    const auto ranking = [n](ContactTournament tree) {
+    const auto ranking = [](ContactTournament tree) {
         std::vector<int> order;
         while (const std::optional<int> top = tree.top()) {
             order.push_back(*top);

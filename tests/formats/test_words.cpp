@@ -167,18 +167,23 @@ Trace resolved_case(const std::string& name, const std::string& preset, const st
 TEST_CASE("the committed trace schema and the word list name the same keys, of the same kinds") {
     const io::json schema = io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/schemas/trace.schema.json"));
     CHECK(schema["properties"]["version"]["const"] == words::format_version);
-    for (const auto& [item, definition] :
+    for (const auto& entry :
          {std::pair{'C', "contact"}, std::pair{'P', "position_iteration"}, std::pair{'V', "velocity_iteration"}}) {
+        const char item = entry.first;  // (clang 14 cannot CAPTURE a structured binding)
+        const char* const definition = entry.second;
         KeyKinds in_schema;
         schema_keys(schema, schema["$defs"][definition], "", in_schema);
         const KeyKinds in_words = word_keys(item);
         CAPTURE(item);
-        for (const auto& [key, kind] : in_schema) {
+        for (const auto& key_kind : in_schema) {
+            const auto& key = key_kind.first;
+            const auto& kind = key_kind.second;
             CAPTURE(key);
             REQUIRE(in_words.count(key) == 1);
             CHECK(static_cast<int>(in_words.at(key)) == static_cast<int>(kind));
         }
-        for (const auto& [key, kind] : in_words) {
+        for (const auto& key_kind : in_words) {
+            const auto& key = key_kind.first;
             CAPTURE(key);
             CHECK(in_schema.count(key) == 1);
         }

@@ -8,7 +8,7 @@
 namespace impulse::io {
 
 // The marked lines around the generated section of docs/trace-format.md.
-inline constexpr std::string_view trace_docs_begin = "<!-- words: generated from engine/record/words.cpp -->";
+inline constexpr std::string_view trace_docs_begin = "<!-- words: generated from engine/record/word_table.hpp -->";
 inline constexpr std::string_view trace_docs_end = "<!-- end of words -->";
 
 // The generated section, markers included.

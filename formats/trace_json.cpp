@@ -6,11 +6,29 @@
 #include "formats/physical_values.hpp"
 #include "formats/schemas.hpp"
 #include "formats/settings_json.hpp"
+#include "record/word_table.hpp"
 #include "resolver/settings_names.hpp"
 
 namespace impulse::io {
 
 namespace {
+
+// --- keys -----------------------------------------------------------------------------------------------
+// Every key of a contact or iteration record is looked up in the word list (record/word_table.hpp) when this file
+// compiles: a key the list does not hold for that item does not build.
+
+consteval std::string_view contact_key(std::string_view word) {  // a prepared contact's
+    return words::key(word, "C");
+}
+consteval std::string_view position_key(std::string_view word) {  // a position iteration's
+    return words::key(word, "P");
+}
+consteval std::string_view velocity_key(std::string_view word) {  // a velocity iteration's
+    return words::key(word, "V");
+}
+consteval std::string_view step5_key(std::string_view word) {  // step 5's, held by contacts and velocity iterations
+    return words::key(word, "CV");
+}
 
 // --- small helpers -------------------------------------------------------------------------------------
 
@@ -51,27 +69,28 @@ constexpr std::string_view stop_names[] = {"resolved", "iteration_limit", "passe
 // --- step 5, shared by prepared contacts and velocity iterations ----------------------------------------
 
 void write_desired(json& out, const DesiredDeltaVelocity& d) {
-    out["separating_velocity"] = d.separating_velocity;
-    out["restitution"] = d.restitution;
-    out["restitution_cutoff"] = d.restitution_cutoff;
-    out["restitution_cutoff_applied"] = d.restitution_cutoff_applied;
-    out["restitution_used"] = d.restitution_used;
-    out["velocity_from_acceleration_applied"] = d.velocity_from_acceleration_applied;
-    out["velocity_from_acceleration"] = d.velocity_from_acceleration;
-    if (d.position_bias) out["position_bias"] = *d.position_bias;  // absent when Baumgarte is off
-    out["desired_delta_velocity"] = d.desired_delta_velocity;
+    out[step5_key("separating_velocity")] = d.separating_velocity;
+    out[step5_key("restitution")] = d.restitution;
+    out[step5_key("restitution_cutoff")] = d.restitution_cutoff;
+    out[step5_key("restitution_cutoff_applied")] = d.restitution_cutoff_applied;
+    out[step5_key("restitution_used")] = d.restitution_used;
+    out[step5_key("velocity_from_acceleration_applied")] = d.velocity_from_acceleration_applied;
+    out[step5_key("velocity_from_acceleration")] = d.velocity_from_acceleration;
+    if (d.position_bias) out[step5_key("position_bias")] = *d.position_bias;  // absent when Baumgarte is off
+    out[step5_key("desired_delta_velocity")] = d.desired_delta_velocity;
 }
 
 DesiredDeltaVelocity read_desired(const json& j) {
-    return {j["separating_velocity"].get<double>(),
-            j["restitution"].get<double>(),
-            j["restitution_cutoff"].get<double>(),
-            j["restitution_cutoff_applied"].get<bool>(),
-            j["restitution_used"].get<double>(),
-            j["velocity_from_acceleration_applied"].get<bool>(),
-            j["velocity_from_acceleration"].get<double>(),
-            j.contains("position_bias") ? std::optional(j["position_bias"].get<double>()) : std::nullopt,
-            j["desired_delta_velocity"].get<double>()};
+    return {j[step5_key("separating_velocity")].get<double>(),
+            j[step5_key("restitution")].get<double>(),
+            j[step5_key("restitution_cutoff")].get<double>(),
+            j[step5_key("restitution_cutoff_applied")].get<bool>(),
+            j[step5_key("restitution_used")].get<double>(),
+            j[step5_key("velocity_from_acceleration_applied")].get<bool>(),
+            j[step5_key("velocity_from_acceleration")].get<double>(),
+            j.contains(step5_key("position_bias")) ? std::optional(j[step5_key("position_bias")].get<double>())
+                                                   : std::nullopt,
+            j[step5_key("desired_delta_velocity")].get<double>()};
 }
 
 // --- why a contact exists ------------------------------------------------------------------------------
@@ -79,15 +98,19 @@ DesiredDeltaVelocity read_desired(const json& j) {
 json origin_json(const ContactOrigin& o) {
     json features = json::array();
     for (const Feature& f : o.features)
-        features.push_back({{"kind", name_of(feature_kind_names, f.kind)}, {"index", f.index}});
-    return {{"test", name_of(collision_test_names, o.test)}, {"features", features}};
+        features.push_back({{contact_key("origin.features[].kind"), name_of(feature_kind_names, f.kind)},
+                            {contact_key("origin.features[].index"), f.index}});
+    return {{contact_key("origin.test"), name_of(collision_test_names, o.test)},
+            {contact_key("origin.features"), features}};
 }
 
 ContactOrigin read_origin(const json& j) {
     ContactOrigin o;
-    o.test = read_enum(collision_test_names, j["test"]);
+    o.test = read_enum(collision_test_names, j[contact_key("origin.test")]);
     for (std::size_t i = 0; i < 2; ++i)
-        o.features[i] = {read_enum(feature_kind_names, j["features"][i]["kind"]), j["features"][i]["index"].get<int>()};
+        o.features[i] = {
+            read_enum(feature_kind_names, j[contact_key("origin.features")][i][contact_key("origin.features[].kind")]),
+            j[contact_key("origin.features")][i][contact_key("origin.features[].index")].get<int>()};
     return o;
 }
 
@@ -95,263 +118,304 @@ ContactOrigin read_origin(const json& j) {
 
 json preparation_json(const ContactPreparation& d) {
     json out = {
-        {"contact", d.contact},
-        {"bodies", json::array({body_index(d.bodies[0]), body_index(d.bodies[1])})},
-        {"swapped", d.swapped},
-        {"inert", d.inert},
-        {"point", vec3_json(d.point)},
-        {"normal", vec3_json(d.normal)},
-        {"penetration", d.penetration},
-        {"restitution", d.restitution},
-        {"friction", d.friction},
-        {"origin", origin_json(d.origin)},
-        {"basis", mat3_json(d.basis.contact_to_world)},
-        {"tangent_seed", name_of(tangent_seed_names, d.basis.seed)},
-        {"relative_position", per_body_vec3(d.relative_position)},
+        {contact_key("contact"), d.contact},
+        {contact_key("bodies"), json::array({body_index(d.bodies[0]), body_index(d.bodies[1])})},
+        {contact_key("swapped"), d.swapped},
+        {contact_key("inert"), d.inert},
+        {contact_key("point"), vec3_json(d.point)},
+        {contact_key("normal"), vec3_json(d.normal)},
+        {contact_key("penetration"), d.penetration},
+        {contact_key("restitution"), d.restitution},
+        {contact_key("friction"), d.friction},
+        {contact_key("origin"), origin_json(d.origin)},
+        {contact_key("basis"), mat3_json(d.basis.contact_to_world)},
+        {contact_key("tangent_seed"), name_of(tangent_seed_names, d.basis.seed)},
+        {contact_key("relative_position"), per_body_vec3(d.relative_position)},
     };
-    const auto& bodies = d.velocity_per_unit_impulse.bodies;
+    const auto& bodies = d.unit_impulse_chain.bodies;
     const auto field = [&bodies](auto member) {
         PerBody<std::decay_t<decltype((*bodies[0]).*member)>> values;
         for (int i = 0; i < 2; ++i)
             if (bodies[i]) values[i] = (*bodies[i]).*member;
         return values;
     };
-    out["torque_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::torque_per_unit_impulse));
-    out["rotation_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::rotation_per_unit_impulse));
-    out["point_velocity_per_unit_impulse"] = per_body_vec3(field(&UnitImpulseResponse::velocity_per_unit_impulse));
-    out["angular_component"] = per_body_number(field(&UnitImpulseResponse::angular_component));
-    out["linear_component"] = per_body_number(field(&UnitImpulseResponse::linear_component));
-    out["delta_velocity_per_unit_impulse"] = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;
-    out["point_velocity"] = per_body_vec3(d.contact_velocity.point_velocity);
-    out["tangential_acceleration_velocity"] = per_body_vec3(d.contact_velocity.tangential_acceleration_velocity);
-    out["contact_velocity"] = vec3_json(d.contact_velocity.contact_velocity);
-    write_desired(out, d.desired_delta_velocity);
+    out[contact_key("torque_per_unit_impulse")] = per_body_vec3(field(&UnitImpulseResponse::torque_per_unit_impulse));
+    out[contact_key("rotation_per_unit_impulse")] =
+        per_body_vec3(field(&UnitImpulseResponse::rotation_per_unit_impulse));
+    out[contact_key("point_velocity_per_unit_impulse")] =
+        per_body_vec3(field(&UnitImpulseResponse::point_velocity_per_unit_impulse));
+    out[contact_key("angular_component")] = per_body_number(field(&UnitImpulseResponse::angular_component));
+    out[contact_key("linear_component")] = per_body_number(field(&UnitImpulseResponse::linear_component));
+    out[contact_key("delta_velocity_per_unit_impulse")] = d.unit_impulse_chain.delta_velocity_per_unit_impulse;
+    out[contact_key("point_velocity")] = per_body_vec3(d.velocity_terms.point_velocity);
+    out[contact_key("tangential_acceleration_velocity")] =
+        per_body_vec3(d.velocity_terms.tangential_acceleration_velocity);
+    out[contact_key("contact_velocity")] = vec3_json(d.velocity_terms.contact_velocity);
+    write_desired(out, d.desired_terms);
     return out;
 }
 
 ContactPreparation read_preparation(const json& j) {
     ContactPreparation d;
-    d.contact = j["contact"].get<int>();
-    d.bodies = {read_body_index(j["bodies"][0]), read_body_index(j["bodies"][1])};
-    d.swapped = j["swapped"].get<bool>();
-    d.inert = j["inert"].get<bool>();
-    d.point = read_vec3(j["point"]);
-    d.normal = read_vec3(j["normal"]);
-    d.penetration = j["penetration"].get<double>();
-    d.restitution = j["restitution"].get<double>();
-    d.friction = j["friction"].get<double>();
-    d.origin = read_origin(j["origin"]);
-    d.basis.contact_to_world = read_mat3(j["basis"]);
+    d.contact = j[contact_key("contact")].get<int>();
+    d.bodies = {read_body_index(j[contact_key("bodies")][0]), read_body_index(j[contact_key("bodies")][1])};
+    d.swapped = j[contact_key("swapped")].get<bool>();
+    d.inert = j[contact_key("inert")].get<bool>();
+    d.point = read_vec3(j[contact_key("point")]);
+    d.normal = read_vec3(j[contact_key("normal")]);
+    d.penetration = j[contact_key("penetration")].get<double>();
+    d.restitution = j[contact_key("restitution")].get<double>();
+    d.friction = j[contact_key("friction")].get<double>();
+    d.origin = read_origin(j[contact_key("origin")]);
+    d.basis.contact_to_world = read_mat3(j[contact_key("basis")]);
     d.basis.normal = d.basis.contact_to_world.col(0);
     d.basis.tangent1 = d.basis.contact_to_world.col(1);
     d.basis.tangent2 = d.basis.contact_to_world.col(2);
-    d.basis.seed = read_enum(tangent_seed_names, j["tangent_seed"]);
-    d.relative_position = read_per_body_vec3(j["relative_position"]);
-    const PerBody<Vec3> torque = read_per_body_vec3(j["torque_per_unit_impulse"]);
-    const PerBody<Vec3> rotation = read_per_body_vec3(j["rotation_per_unit_impulse"]);
-    const PerBody<Vec3> velocity = read_per_body_vec3(j["point_velocity_per_unit_impulse"]);
-    const PerBody<double> angular = read_per_body_number(j["angular_component"]);
-    const PerBody<double> linear = read_per_body_number(j["linear_component"]);
+    d.basis.seed = read_enum(tangent_seed_names, j[contact_key("tangent_seed")]);
+    d.relative_position = read_per_body_vec3(j[contact_key("relative_position")]);
+    const PerBody<Vec3> torque = read_per_body_vec3(j[contact_key("torque_per_unit_impulse")]);
+    const PerBody<Vec3> rotation = read_per_body_vec3(j[contact_key("rotation_per_unit_impulse")]);
+    const PerBody<Vec3> velocity = read_per_body_vec3(j[contact_key("point_velocity_per_unit_impulse")]);
+    const PerBody<double> angular = read_per_body_number(j[contact_key("angular_component")]);
+    const PerBody<double> linear = read_per_body_number(j[contact_key("linear_component")]);
     for (int i = 0; i < 2; ++i)
         if (torque[i])
-            d.velocity_per_unit_impulse.bodies[i] = {*torque[i], *rotation[i], *velocity[i], *angular[i], *linear[i]};
-    d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse = j["delta_velocity_per_unit_impulse"].get<double>();
-    d.contact_velocity.point_velocity = read_per_body_vec3(j["point_velocity"]);
-    d.contact_velocity.tangential_acceleration_velocity = read_per_body_vec3(j["tangential_acceleration_velocity"]);
-    d.contact_velocity.contact_velocity = read_vec3(j["contact_velocity"]);
-    d.desired_delta_velocity = read_desired(j);
+            d.unit_impulse_chain.bodies[i] = {*torque[i], *rotation[i], *velocity[i], *angular[i], *linear[i]};
+    d.unit_impulse_chain.delta_velocity_per_unit_impulse =
+        j[contact_key("delta_velocity_per_unit_impulse")].get<double>();
+    d.velocity_terms.point_velocity = read_per_body_vec3(j[contact_key("point_velocity")]);
+    d.velocity_terms.tangential_acceleration_velocity =
+        read_per_body_vec3(j[contact_key("tangential_acceleration_velocity")]);
+    d.velocity_terms.contact_velocity = read_vec3(j[contact_key("contact_velocity")]);
+    d.desired_terms = read_desired(j);
     return d;
 }
 
 // --- position iterations --------------------------------------------------------------------------------
 
 json rewind_json(const Rewind& r) {
-    return {{"closing_velocity", r.closing_velocity},
-            {"time", r.time},
-            {"time_limit", r.time_limit},
-            {"removed_penetration", r.removed_penetration},
-            {"linear_change", per_body_vec3(r.linear_change)},
-            {"angular_change", per_body_vec3(r.angular_change)}};
+    return {{position_key("rewind.closing_velocity"), r.closing_velocity},
+            {position_key("rewind.time"), r.time},
+            {position_key("rewind.time_limit"), r.time_limit},
+            {position_key("rewind.removed_penetration"), r.removed_penetration},
+            {position_key("rewind.linear_change"), per_body_vec3(r.linear_change)},
+            {position_key("rewind.angular_change"), per_body_vec3(r.angular_change)}};
 }
 
 Rewind read_rewind(const json& j) {
-    return {j["closing_velocity"].get<double>(),    j["time"].get<double>(),
-            j["time_limit"].get<double>(),          j["removed_penetration"].get<double>(),
-            read_per_body_vec3(j["linear_change"]), read_per_body_vec3(j["angular_change"])};
+    return {j[position_key("rewind.closing_velocity")].get<double>(),
+            j[position_key("rewind.time")].get<double>(),
+            j[position_key("rewind.time_limit")].get<double>(),
+            j[position_key("rewind.removed_penetration")].get<double>(),
+            read_per_body_vec3(j[position_key("rewind.linear_change")]),
+            read_per_body_vec3(j[position_key("rewind.angular_change")])};
 }
 
 json angular_limit_json(const AngularLimit& a) {
-    return {{"policy", name_of(angular_limit_policy_names, a.policy)},
-            {"factor", a.factor},
-            {"maximum", per_body_number(a.maximum)},
-            {"applied", per_body_bool(a.applied)},
-            {"linear_move_before", per_body_number(a.before.linear_move)},
-            {"angular_move_before", per_body_number(a.before.angular_move)}};
+    return {{position_key("angular_limit.policy"), name_of(angular_limit_policy_names, a.policy)},
+            {position_key("angular_limit.factor"), a.factor},
+            {position_key("angular_limit.maximum"), per_body_number(a.maximum)},
+            {position_key("angular_limit.applied"), per_body_bool(a.applied)},
+            {position_key("angular_limit.linear_move_before"), per_body_number(a.before.linear_move)},
+            {position_key("angular_limit.angular_move_before"), per_body_number(a.before.angular_move)}};
 }
 
 AngularLimit read_angular_limit(const json& j) {
-    return {read_enum(angular_limit_policy_names, j["policy"]), j["factor"].get<double>(),
-            read_per_body_number(j["maximum"]), read_per_body_bool(j["applied"]),
-            MoveSplit{read_per_body_number(j["linear_move_before"]), read_per_body_number(j["angular_move_before"])}};
+    return {read_enum(angular_limit_policy_names, j[position_key("angular_limit.policy")]),
+            j[position_key("angular_limit.factor")].get<double>(),
+            read_per_body_number(j[position_key("angular_limit.maximum")]),
+            read_per_body_bool(j[position_key("angular_limit.applied")]),
+            MoveSplit{read_per_body_number(j[position_key("angular_limit.linear_move_before")]),
+                      read_per_body_number(j[position_key("angular_limit.angular_move_before")])}};
 }
 
 json position_iteration_json(const PositionIteration& it) {
-    json out = {
-        {"iteration", it.iteration}, {"contact", it.contact}, {"penetration", it.penetration}, {"epsilon", it.epsilon}};
-    if (it.pass) out["pass"] = *it.pass;
+    json out = {{position_key("iteration"), it.iteration},
+                {position_key("contact"), it.contact},
+                {position_key("penetration"), it.penetration},
+                {position_key("epsilon"), it.epsilon}};
+    if (it.pass) out[position_key("pass")] = *it.pass;
     if (const auto& r = it.resolution) {
-        out["method"] = name_of(position_method_names, r->method);
+        out[position_key("method")] = name_of(position_method_names, r->method);
         // The split impulse pushes with an impulse (N·s), the projections by a distance (m): two words.
-        out[r->method == PositionMethod::split_impulse ? "push_impulse" : "amount"] = r->amount;
-        if (r->rewind) out["rewind"] = rewind_json(*r->rewind);
-        out["linear_inertia"] = per_body_number(r->inertia.linear_inertia);
-        out["angular_inertia"] = per_body_number(r->inertia.angular_inertia);
-        out["penetration_inertia"] = r->inertia.total_inertia;
-        out["move_split"] = {{"linear_move", per_body_number(r->moves.linear_move)},
-                             {"angular_move", per_body_number(r->moves.angular_move)}};
-        if (r->angular_limit) out["angular_limit"] = angular_limit_json(*r->angular_limit);
-        out["position_change"] = {{"linear_change", per_body_vec3(r->change.linear_change)},
-                                  {"angular_change", per_body_vec3(r->change.angular_change)}};
+        if (r->method == PositionMethod::split_impulse)
+            out[position_key("push_impulse")] = r->push_impulse;
+        else
+            out[position_key("amount")] = r->amount;
+        if (r->rewind) out[position_key("rewind")] = rewind_json(*r->rewind);
+        out[position_key("linear_inertia")] = per_body_number(r->inertia.linear_inertia);
+        out[position_key("angular_inertia")] = per_body_number(r->inertia.angular_inertia);
+        out[position_key("penetration_inertia")] = r->inertia.penetration_inertia;
+        out[position_key("move_split")] = {
+            {position_key("move_split.linear_move"), per_body_number(r->moves.linear_move)},
+            {position_key("move_split.angular_move"), per_body_number(r->moves.angular_move)}};
+        if (r->angular_limit) out[position_key("angular_limit")] = angular_limit_json(*r->angular_limit);
+        out[position_key("position_change")] = {
+            {position_key("position_change.linear_change"), per_body_vec3(r->change.linear_change)},
+            {position_key("position_change.angular_change"), per_body_vec3(r->change.angular_change)}};
     }
     json updates = json::array();
     for (const PenetrationUpdate& u : it.updates)
-        updates.push_back({{"contact", u.contact},
-                           {"body", u.body},
-                           {"slot", u.slot},
-                           {"delta", u.delta},
-                           {"before", u.before},
-                           {"after", u.after}});
-    out["updates"] = updates;
+        updates.push_back({{position_key("updates[].contact"), u.contact},
+                           {position_key("updates[].body"), u.body},
+                           {position_key("updates[].slot"), u.slot},
+                           {position_key("updates[].delta"), u.delta},
+                           {position_key("updates[].before"), u.before},
+                           {position_key("updates[].after"), u.after}});
+    out[position_key("updates")] = updates;
     return out;
 }
 
 PositionIteration read_position_iteration(const json& j) {
     PositionIteration it;
-    it.iteration = j["iteration"].get<int>();
-    it.contact = j["contact"].get<int>();
-    it.penetration = j["penetration"].get<double>();
-    it.epsilon = j["epsilon"].get<double>();
-    if (j.contains("pass")) it.pass = j["pass"].get<int>();
-    if (j.contains("method")) {
+    it.iteration = j[position_key("iteration")].get<int>();
+    it.contact = j[position_key("contact")].get<int>();
+    it.penetration = j[position_key("penetration")].get<double>();
+    it.epsilon = j[position_key("epsilon")].get<double>();
+    if (j.contains(position_key("pass"))) it.pass = j[position_key("pass")].get<int>();
+    if (j.contains(position_key("method"))) {
         PositionResolution r;
-        r.method = read_enum(position_method_names, j["method"]);
+        r.method = read_enum(position_method_names, j[position_key("method")]);
         r.penetration = it.penetration;
-        r.amount = j[r.method == PositionMethod::split_impulse ? "push_impulse" : "amount"].get<double>();
-        if (j.contains("rewind")) r.rewind = read_rewind(j["rewind"]);
-        r.inertia = {read_per_body_number(j["linear_inertia"]), read_per_body_number(j["angular_inertia"]),
-                     j["penetration_inertia"].get<double>()};
-        const json& moves = j["move_split"];
-        r.moves = {read_per_body_number(moves["linear_move"]), read_per_body_number(moves["angular_move"])};
-        if (j.contains("angular_limit")) r.angular_limit = read_angular_limit(j["angular_limit"]);
-        const json& change = j["position_change"];
-        r.change = {read_per_body_vec3(change["linear_change"]), read_per_body_vec3(change["angular_change"])};
+        if (r.method == PositionMethod::split_impulse)
+            r.push_impulse = j[position_key("push_impulse")].get<double>();
+        else
+            r.amount = j[position_key("amount")].get<double>();
+        if (j.contains(position_key("rewind"))) r.rewind = read_rewind(j[position_key("rewind")]);
+        r.inertia = {read_per_body_number(j[position_key("linear_inertia")]),
+                     read_per_body_number(j[position_key("angular_inertia")]),
+                     j[position_key("penetration_inertia")].get<double>()};
+        const json& moves = j[position_key("move_split")];
+        r.moves = {read_per_body_number(moves[position_key("move_split.linear_move")]),
+                   read_per_body_number(moves[position_key("move_split.angular_move")])};
+        if (j.contains(position_key("angular_limit")))
+            r.angular_limit = read_angular_limit(j[position_key("angular_limit")]);
+        const json& change = j[position_key("position_change")];
+        r.change = {read_per_body_vec3(change[position_key("position_change.linear_change")]),
+                    read_per_body_vec3(change[position_key("position_change.angular_change")])};
         it.resolution = r;
     }
-    for (const json& u : j["updates"])
-        it.updates.push_back({u["contact"].get<int>(), u["body"].get<int>(), u["slot"].get<int>(),
-                              u["delta"].get<double>(), u["before"].get<double>(), u["after"].get<double>()});
+    for (const json& u : j[position_key("updates")])
+        it.updates.push_back(
+            {u[position_key("updates[].contact")].get<int>(), u[position_key("updates[].body")].get<int>(),
+             u[position_key("updates[].slot")].get<int>(), u[position_key("updates[].delta")].get<double>(),
+             u[position_key("updates[].before")].get<double>(), u[position_key("updates[].after")].get<double>()});
     return it;
 }
 
 // --- velocity iterations --------------------------------------------------------------------------------
 
 json friction_solve_json(const FrictionSolve& s) {
-    json out = {{"delta_velocity_matrix", mat3_json(s.delta_velocity_matrix)},
-                {"target_delta_velocity", vec3_json(s.target_delta_velocity)},
-                {"solvable", s.solvable},
-                {"static_impulse", vec3_json(s.static_impulse)},
-                {"tangential_impulse", s.tangential_impulse},
-                {"cone_limit", s.cone_limit}};
+    json out = {{velocity_key("friction_solve.delta_velocity_matrix"), mat3_json(s.delta_velocity_matrix)},
+                {velocity_key("friction_solve.target_delta_velocity"), vec3_json(s.target_delta_velocity)},
+                {velocity_key("friction_solve.solvable"), s.solvable},
+                {velocity_key("friction_solve.static_impulse"), vec3_json(s.static_impulse)},
+                {velocity_key("friction_solve.tangential_impulse"), s.tangential_impulse},
+                {velocity_key("friction_solve.cone_limit"), s.cone_limit}};
     if (s.sliding_direction)
-        out["sliding_direction"] = json::array({s.sliding_direction->x(), s.sliding_direction->y()});
-    if (s.sliding_normal_response) out["sliding_normal_response"] = *s.sliding_normal_response;
+        out[velocity_key("friction_solve.sliding_direction")] =
+            json::array({s.sliding_direction->x(), s.sliding_direction->y()});
+    if (s.sliding_normal_response)
+        out[velocity_key("friction_solve.sliding_normal_response")] = *s.sliding_normal_response;
     return out;
 }
 
 FrictionSolve read_friction_solve(const json& j) {
     FrictionSolve s;
-    s.delta_velocity_matrix = read_mat3(j["delta_velocity_matrix"]);
-    s.target_delta_velocity = read_vec3(j["target_delta_velocity"]);
-    s.solvable = j["solvable"].get<bool>();
-    s.static_impulse = read_vec3(j["static_impulse"]);
-    s.tangential_impulse = j["tangential_impulse"].get<double>();
-    s.cone_limit = j["cone_limit"].get<double>();
-    if (j.contains("sliding_direction"))
-        s.sliding_direction =
-            Eigen::Vector2d(j["sliding_direction"][0].get<double>(), j["sliding_direction"][1].get<double>());
-    if (j.contains("sliding_normal_response")) s.sliding_normal_response = j["sliding_normal_response"].get<double>();
+    s.delta_velocity_matrix = read_mat3(j[velocity_key("friction_solve.delta_velocity_matrix")]);
+    s.target_delta_velocity = read_vec3(j[velocity_key("friction_solve.target_delta_velocity")]);
+    s.solvable = j[velocity_key("friction_solve.solvable")].get<bool>();
+    s.static_impulse = read_vec3(j[velocity_key("friction_solve.static_impulse")]);
+    s.tangential_impulse = j[velocity_key("friction_solve.tangential_impulse")].get<double>();
+    s.cone_limit = j[velocity_key("friction_solve.cone_limit")].get<double>();
+    if (j.contains(velocity_key("friction_solve.sliding_direction")))
+        s.sliding_direction = Eigen::Vector2d(j[velocity_key("friction_solve.sliding_direction")][0].get<double>(),
+                                              j[velocity_key("friction_solve.sliding_direction")][1].get<double>());
+    if (j.contains(velocity_key("friction_solve.sliding_normal_response")))
+        s.sliding_normal_response = j[velocity_key("friction_solve.sliding_normal_response")].get<double>();
     return s;
 }
 
 json velocity_iteration_json(const VelocityIteration& it) {
-    json out = {{"iteration", it.iteration},
-                {"contact", it.contact},
-                {"desired_delta_velocity", it.desired_delta_velocity},
-                {"epsilon", it.epsilon}};
+    json out = {{velocity_key("iteration"), it.iteration},
+                {velocity_key("contact"), it.contact},
+                {velocity_key("desired_delta_velocity"), it.desired_delta_velocity},
+                {velocity_key("epsilon"), it.epsilon}};
     if (const auto& w = it.sweep)
-        out["sweep"] = {{"substep", w->substep}, {"pass", w->pass}, {"stage", name_of(solver_stage_names, w->stage)}};
+        out[velocity_key("sweep")] = {{velocity_key("sweep.substep"), w->substep},
+                                      {velocity_key("sweep.pass"), w->pass},
+                                      {velocity_key("sweep.stage"), name_of(solver_stage_names, w->stage)}};
     if (const auto& a = it.accumulated)
-        out["accumulated"] = {{"before", vec3_json(a->before)},
-                              {"unclamped", vec3_json(a->unclamped)},
-                              {"after", vec3_json(a->after)},
-                              {"clamp", name_of(impulse_clamp_names, a->clamp)}};
+        out[velocity_key("accumulated")] = {
+            {velocity_key("accumulated.before"), vec3_json(a->before)},
+            {velocity_key("accumulated.unclamped"), vec3_json(a->unclamped)},
+            {velocity_key("accumulated.after"), vec3_json(a->after)},
+            {velocity_key("accumulated.clamp"), name_of(impulse_clamp_names, a->clamp)}};
     if (const auto& r = it.resolution) {
-        out["contact_velocity"] = vec3_json(r->contact_velocity);
-        write_desired(out, r->desired_delta_velocity);
-        out["impulse_model"] = name_of(impulse_model_names, r->impulse.model);
-        if (r->impulse.friction) out["friction_solve"] = friction_solve_json(*r->impulse.friction);
-        out["impulse"] = vec3_json(r->impulse.impulse_contact);
-        out["impulse_world"] = vec3_json(r->impulse.impulse_world);
-        out["impulsive_torque"] = per_body_vec3(r->velocity_change.impulsive_torque);
-        out["velocity_change"] = per_body_vec3(r->velocity_change.velocity_change);
-        out["rotation_change"] = per_body_vec3(r->velocity_change.rotation_change);
+        out[velocity_key("contact_velocity")] = vec3_json(r->contact_velocity);
+        write_desired(out, r->desired_terms);
+        out[velocity_key("impulse_model")] = name_of(impulse_model_names, r->impulse_terms.impulse_model);
+        if (r->impulse_terms.friction_solve)
+            out[velocity_key("friction_solve")] = friction_solve_json(*r->impulse_terms.friction_solve);
+        out[velocity_key("impulse")] = vec3_json(r->impulse_terms.impulse);
+        out[velocity_key("impulse_world")] = vec3_json(r->impulse_terms.impulse_world);
+        out[velocity_key("impulsive_torque")] = per_body_vec3(r->velocity_change_terms.impulsive_torque);
+        out[velocity_key("velocity_change")] = per_body_vec3(r->velocity_change_terms.velocity_change);
+        out[velocity_key("rotation_change")] = per_body_vec3(r->velocity_change_terms.rotation_change);
     }
     json updates = json::array();
     for (const VelocityUpdate& u : it.updates)
-        updates.push_back({{"contact", u.contact},
-                           {"body", u.body},
-                           {"slot", u.slot},
-                           {"delta", vec3_json(u.delta)},
-                           {"before", vec3_json(u.before)},
-                           {"after", vec3_json(u.after)},
-                           {"desired_delta_velocity_before", u.desired_delta_velocity_before},
-                           {"desired_delta_velocity_after", u.desired_delta_velocity_after}});
-    out["updates"] = updates;
+        updates.push_back({{velocity_key("updates[].contact"), u.contact},
+                           {velocity_key("updates[].body"), u.body},
+                           {velocity_key("updates[].slot"), u.slot},
+                           {velocity_key("updates[].delta"), vec3_json(u.delta)},
+                           {velocity_key("updates[].before"), vec3_json(u.before)},
+                           {velocity_key("updates[].after"), vec3_json(u.after)},
+                           {velocity_key("updates[].desired_delta_velocity_before"), u.desired_delta_velocity_before},
+                           {velocity_key("updates[].desired_delta_velocity_after"), u.desired_delta_velocity_after}});
+    out[velocity_key("updates")] = updates;
     return out;
 }
 
 VelocityIteration read_velocity_iteration(const json& j) {
     VelocityIteration it;
-    it.iteration = j["iteration"].get<int>();
-    it.contact = j["contact"].get<int>();
-    it.desired_delta_velocity = j["desired_delta_velocity"].get<double>();
-    it.epsilon = j["epsilon"].get<double>();
-    if (j.contains("sweep")) {
-        const json& w = j["sweep"];
-        it.sweep = SweepPlace{w["substep"].get<int>(), w["pass"].get<int>(), read_enum(solver_stage_names, w["stage"])};
+    it.iteration = j[velocity_key("iteration")].get<int>();
+    it.contact = j[velocity_key("contact")].get<int>();
+    it.desired_delta_velocity = j[velocity_key("desired_delta_velocity")].get<double>();
+    it.epsilon = j[velocity_key("epsilon")].get<double>();
+    if (j.contains(velocity_key("sweep"))) {
+        const json& w = j[velocity_key("sweep")];
+        it.sweep = SweepPlace{w[velocity_key("sweep.substep")].get<int>(), w[velocity_key("sweep.pass")].get<int>(),
+                              read_enum(solver_stage_names, w[velocity_key("sweep.stage")])};
     }
-    if (j.contains("accumulated")) {
-        const json& a = j["accumulated"];
-        it.accumulated = AccumulatedImpulse{read_vec3(a["before"]), read_vec3(a["unclamped"]), read_vec3(a["after"]),
-                                            read_enum(impulse_clamp_names, a["clamp"])};
+    if (j.contains(velocity_key("accumulated"))) {
+        const json& a = j[velocity_key("accumulated")];
+        it.accumulated = AccumulatedImpulse{read_vec3(a[velocity_key("accumulated.before")]),
+                                            read_vec3(a[velocity_key("accumulated.unclamped")]),
+                                            read_vec3(a[velocity_key("accumulated.after")]),
+                                            read_enum(impulse_clamp_names, a[velocity_key("accumulated.clamp")])};
     }
-    if (j.contains("impulse_model")) {
+    if (j.contains(velocity_key("impulse_model"))) {
         VelocityResolution r;
-        r.contact_velocity = read_vec3(j["contact_velocity"]);
-        r.desired_delta_velocity = read_desired(j);
-        r.impulse.model = read_enum(impulse_model_names, j["impulse_model"]);
-        if (j.contains("friction_solve")) r.impulse.friction = read_friction_solve(j["friction_solve"]);
-        r.impulse.impulse_contact = read_vec3(j["impulse"]);
-        r.impulse.impulse_world = read_vec3(j["impulse_world"]);
-        r.velocity_change = {read_per_body_vec3(j["impulsive_torque"]), read_per_body_vec3(j["velocity_change"]),
-                             read_per_body_vec3(j["rotation_change"])};
+        r.contact_velocity = read_vec3(j[velocity_key("contact_velocity")]);
+        r.desired_terms = read_desired(j);
+        r.impulse_terms.impulse_model = read_enum(impulse_model_names, j[velocity_key("impulse_model")]);
+        if (j.contains(velocity_key("friction_solve")))
+            r.impulse_terms.friction_solve = read_friction_solve(j[velocity_key("friction_solve")]);
+        r.impulse_terms.impulse = read_vec3(j[velocity_key("impulse")]);
+        r.impulse_terms.impulse_world = read_vec3(j[velocity_key("impulse_world")]);
+        r.velocity_change_terms = {read_per_body_vec3(j[velocity_key("impulsive_torque")]),
+                                   read_per_body_vec3(j[velocity_key("velocity_change")]),
+                                   read_per_body_vec3(j[velocity_key("rotation_change")])};
         it.resolution = r;
     }
-    for (const json& u : j["updates"])
-        it.updates.push_back({u["contact"].get<int>(), u["body"].get<int>(), u["slot"].get<int>(),
-                              read_vec3(u["delta"]), read_vec3(u["before"]), read_vec3(u["after"]),
-                              u["desired_delta_velocity_before"].get<double>(),
-                              u["desired_delta_velocity_after"].get<double>()});
+    for (const json& u : j[velocity_key("updates")])
+        it.updates.push_back(
+            {u[velocity_key("updates[].contact")].get<int>(), u[velocity_key("updates[].body")].get<int>(),
+             u[velocity_key("updates[].slot")].get<int>(), read_vec3(u[velocity_key("updates[].delta")]),
+             read_vec3(u[velocity_key("updates[].before")]), read_vec3(u[velocity_key("updates[].after")]),
+             u[velocity_key("updates[].desired_delta_velocity_before")].get<double>(),
+             u[velocity_key("updates[].desired_delta_velocity_after")].get<double>()});
     return it;
 }
 

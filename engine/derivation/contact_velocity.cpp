@@ -2,10 +2,10 @@
 
 namespace impulse {
 
-ContactVelocity contact_velocity(const Basis& basis, const PerBody<Vec3>& relative_position,
-                                 const PerBody<BodyMotion>& motion, double duration,
-                                 bool tangential_acceleration_velocity) {
-    ContactVelocity v;
+ContactVelocityTerms contact_velocity(const Basis& basis, const PerBody<Vec3>& relative_position,
+                                      const PerBody<BodyMotion>& motion, double duration,
+                                      bool tangential_acceleration_velocity) {
+    ContactVelocityTerms v;
     v.contact_velocity = Vec3::Zero();
     for (int i = 0; i < 2; ++i) {
         if (!relative_position[i]) continue;

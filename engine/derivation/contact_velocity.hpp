@@ -17,7 +17,7 @@ struct BodyMotion {
     bool operator==(const BodyMotion&) const = default;
 };
 
-struct ContactVelocity {
+struct ContactVelocityTerms {
     PerBody<Vec3> point_velocity;  // theta-dot x q_rel + p-dot, world  (9.5)
     // The reference engine's chapter-15 term: the tangential part of (last frame's acceleration x duration),
     // in contact coordinates, normal part zeroed. Sliding caused by this frame's forces is then left for
@@ -25,11 +25,11 @@ struct ContactVelocity {
     PerBody<Vec3> tangential_acceleration_velocity;
     Vec3 contact_velocity;  // (point velocity 0 + term 0) - (point velocity 1 + term 1), contact coordinates
 
-    bool operator==(const ContactVelocity&) const = default;
+    bool operator==(const ContactVelocityTerms&) const = default;
 };
 
-ContactVelocity contact_velocity(const Basis& basis, const PerBody<Vec3>& relative_position,
-                                 const PerBody<BodyMotion>& motion, double duration,
-                                 bool tangential_acceleration_velocity);
+ContactVelocityTerms contact_velocity(const Basis& basis, const PerBody<Vec3>& relative_position,
+                                      const PerBody<BodyMotion>& motion, double duration,
+                                      bool tangential_acceleration_velocity);
 
 }  // namespace impulse

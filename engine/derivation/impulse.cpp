@@ -90,27 +90,27 @@ Impulse calculate_impulse(const Basis& basis, const FactoredDeltaVelocityMatrix*
                           double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
                           SlidingFriction sliding) {
     Impulse g;
-    g.model = ImpulseModel::frictionless;
-    g.impulse_contact = frictionless_impulse(desired_delta_velocity, delta_velocity_per_unit_impulse);
+    g.impulse_model = ImpulseModel::frictionless;
+    g.impulse = frictionless_impulse(desired_delta_velocity, delta_velocity_per_unit_impulse);
     if (friction != 0.0) {
-        g.friction = friction_solve(*k, contact_velocity, desired_delta_velocity, friction, sliding);
-        const FrictionSolve& s = *g.friction;
+        g.friction_solve = friction_solve(*k, contact_velocity, desired_delta_velocity, friction, sliding);
+        const FrictionSolve& s = *g.friction_solve;
         if (!s.sliding_normal_response) {
             if (s.solvable) {
-                g.model = ImpulseModel::static_friction;
-                g.impulse_contact = s.static_impulse;
+                g.impulse_model = ImpulseModel::static_friction;
+                g.impulse = s.static_impulse;
             }
             // Not solvable: no body can translate, only the frictionless normal impulse is defined.
         } else if (*s.sliding_normal_response > 0.0) {
-            g.model = ImpulseModel::sliding_friction;
+            g.impulse_model = ImpulseModel::sliding_friction;
             const double normal = desired_delta_velocity / *s.sliding_normal_response;
-            g.impulse_contact = {normal, friction * normal * s.sliding_direction->x(),
-                                 friction * normal * s.sliding_direction->y()};
+            g.impulse = {normal, friction * normal * s.sliding_direction->x(),
+                         friction * normal * s.sliding_direction->y()};
         }
         // A non-positive sliding response means pushing along the cone would not separate the contact at
         // all (a long lever arm with strong coupling); the frictionless impulse is the only safe answer.
     }
-    g.impulse_world = to_world(basis, g.impulse_contact);
+    g.impulse_world = to_world(basis, g.impulse);
     return g;
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// Step 6, `impulse_contact` and `impulse_world`: the impulse that makes the desired velocity change.
+// Step 6, `impulse` and `impulse_world`: the impulse that makes the desired velocity change.
 // Frictionless (the chapter, 14.3) when the contact's friction is exactly 0, as in the reference engine;
 // otherwise the reference engine's chapter-15 friction impulse: a 3x3 solve in contact coordinates that
 // also stops all sliding, limited by the friction cone.
 
 #include "derivation/basis.hpp"
-#include "derivation/velocity_per_unit_impulse.hpp"
+#include "derivation/delta_velocity_per_unit_impulse.hpp"
 #include "math/full_pivot_lu.hpp"
 #include "math/types.hpp"
 
@@ -48,10 +48,10 @@ struct FrictionSolve {
 };
 
 struct Impulse {
-    ImpulseModel model;
-    std::optional<FrictionSolve> friction;  // present when the contact has friction
-    Vec3 impulse_contact;                   // (g_n, g_t1, g_t2)
-    Vec3 impulse_world;                     // basis . impulse_contact
+    ImpulseModel impulse_model;
+    std::optional<FrictionSolve> friction_solve;  // present when the contact has friction
+    Vec3 impulse;                                 // (g_n, g_t1, g_t2)
+    Vec3 impulse_world;                           // basis . impulse
 
     bool operator==(const Impulse&) const = default;
 };

@@ -6,14 +6,14 @@
 
 namespace impulse {
 
-PenetrationInertia penetration_inertia(const VelocityPerUnitImpulse& chain) {
+PenetrationInertia penetration_inertia(const UnitImpulseChain& chain) {
     PenetrationInertia inertia;
-    inertia.total_inertia = 0.0;
+    inertia.penetration_inertia = 0.0;
     for (int i = 0; i < 2; ++i) {
         if (!chain.bodies[i]) continue;
         inertia.linear_inertia[i] = chain.bodies[i]->linear_component;
         inertia.angular_inertia[i] = chain.bodies[i]->angular_component;
-        inertia.total_inertia += *inertia.linear_inertia[i] + *inertia.angular_inertia[i];
+        inertia.penetration_inertia += *inertia.linear_inertia[i] + *inertia.angular_inertia[i];
     }
     return inertia;
 }
@@ -25,8 +25,8 @@ MoveSplit move_split(double penetration, const PenetrationInertia& inertia) {
         const double signed_penetration = body_sign(i) * penetration;
         // penetration x (share / total), as the reference engine groups it (the chapter multiplies by
         // 1/total; the two differ in the last bit).
-        moves.linear_move[i] = signed_penetration * (*inertia.linear_inertia[i] / inertia.total_inertia);
-        moves.angular_move[i] = signed_penetration * (*inertia.angular_inertia[i] / inertia.total_inertia);
+        moves.linear_move[i] = signed_penetration * (*inertia.linear_inertia[i] / inertia.penetration_inertia);
+        moves.angular_move[i] = signed_penetration * (*inertia.angular_inertia[i] / inertia.penetration_inertia);
     }
     return moves;
 }
@@ -79,7 +79,7 @@ std::optional<double> maximum_angular_move(const AngularLimitSettings& settings,
 }  // namespace
 
 AngularLimit angular_limit(MoveSplit& moves, const AngularLimitSettings& settings, const Vec3& normal,
-                           const PerBody<Vec3>& relative_position, const VelocityPerUnitImpulse& chain,
+                           const PerBody<Vec3>& relative_position, const UnitImpulseChain& chain,
                            OrientationUpdate orientation_update) {
     AngularLimit limit;
     limit.policy = settings.policy;
@@ -101,7 +101,7 @@ AngularLimit angular_limit(MoveSplit& moves, const AngularLimitSettings& setting
     return limit;
 }
 
-PositionChange position_change(const MoveSplit& moves, const Vec3& normal, const VelocityPerUnitImpulse& chain) {
+PositionChange position_change(const MoveSplit& moves, const Vec3& normal, const UnitImpulseChain& chain) {
     const std::array<bool, 2> bodies = present(moves.linear_move);
     return {.linear_change = per_body(bodies, [&](int i) -> Vec3 { return normal * *moves.linear_move[i]; }),
             .angular_change = per_body(bodies, [&](int i) -> Vec3 {

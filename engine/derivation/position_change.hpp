@@ -2,10 +2,10 @@
 // Step 8, interpenetration by nonlinear projection (the chapter's "Implementing Nonlinear Projection"):
 // how much of a penetration each body removes by moving and by turning, and the moves that do it.
 //
-//   linear_inertia, angular_inertia, total_inertia  ->  linear_move, angular_move  ->  angular_limit
+//   linear_inertia, angular_inertia, penetration_inertia  ->  linear_move, angular_move  ->  angular_limit
 //   ->  linear_change (a translation) and angular_change (a rotation vector) per body.
 
-#include "derivation/velocity_per_unit_impulse.hpp"
+#include "derivation/delta_velocity_per_unit_impulse.hpp"
 #include "math/rotation.hpp"
 #include "math/types.hpp"
 
@@ -14,14 +14,14 @@ namespace impulse {
 struct PenetrationInertia {
     PerBody<double> linear_inertia;   // m^-1
     PerBody<double> angular_inertia;  // ((I^-1 (q_rel x n)) x q_rel) . n
-    double total_inertia;             // sum of both over both bodies
+    double penetration_inertia;       // sum of both over both bodies
 
     bool operator==(const PenetrationInertia&) const = default;
 };
 
 // "To resolve penetration we use exactly the same sequence of equations": the inertia along the normal is
 // the per-unit-impulse chain of step 3, read as how readily each body gives way linearly and angularly.
-PenetrationInertia penetration_inertia(const VelocityPerUnitImpulse& chain);
+PenetrationInertia penetration_inertia(const UnitImpulseChain& chain);
 
 struct MoveSplit {
     PerBody<double> linear_move;   // distance the contact point moves along the normal by translation
@@ -66,7 +66,7 @@ struct AngularLimit {
 // 0, e.g. a pivot) takes no linear move: its excess is dropped, and the contact keeps that much penetration
 // for a later iteration. (The reference engine would translate such an "infinitely heavy" body.)
 AngularLimit angular_limit(MoveSplit& moves, const AngularLimitSettings& settings, const Vec3& normal,
-                           const PerBody<Vec3>& relative_position, const VelocityPerUnitImpulse& chain,
+                           const PerBody<Vec3>& relative_position, const UnitImpulseChain& chain,
                            OrientationUpdate orientation_update);
 
 struct PositionChange {
@@ -78,6 +78,6 @@ struct PositionChange {
 
 // The rotation per unit move is the rotation per unit impulse divided by the angular inertia (the
 // chapter's rotationPerMove); its (angular_change x q_rel) . n equals angular_move exactly.
-PositionChange position_change(const MoveSplit& moves, const Vec3& normal, const VelocityPerUnitImpulse& chain);
+PositionChange position_change(const MoveSplit& moves, const Vec3& normal, const UnitImpulseChain& chain);
 
 }  // namespace impulse

@@ -2,7 +2,7 @@
 // Step 7, `velocity_change` and `rotation_change`: the impulse split into each body's linear and angular
 // response. Body 0 receives +g, body 1 receives -g.
 
-#include "derivation/velocity_per_unit_impulse.hpp"
+#include "derivation/delta_velocity_per_unit_impulse.hpp"
 #include "math/types.hpp"
 
 namespace impulse {

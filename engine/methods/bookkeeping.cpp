@@ -71,19 +71,19 @@ void update_contact_velocities_of(std::vector<PreparedContact>& contacts, const 
             *change.velocity_change[m] + change.rotation_change[m]->cross(*d.relative_position[slot]);
         const Vec3 delta = body_sign(slot) * to_contact(d.basis, point_change);
         const Vec3 before = other.contact_velocity;
-        const double desired_before = other.desired_delta_velocity.desired_delta_velocity;
+        const double desired_before = other.desired_terms.desired_delta_velocity;
         other.contact_velocity += delta;
         // The reference engine re-runs step 5 on the partly resolved velocity, so the restitution cut-off is
         // judged again against the current closing speed. The restitution, the velocity from acceleration and
         // the position bias are the prepared ones, read from the bookkeeping's own step 5, which sits beside the
         // velocity in memory (the prepared step 5 is half a kilobyte away: one cache line fewer per update).
-        const DesiredDeltaVelocity& step5 = other.desired_delta_velocity;
-        other.desired_delta_velocity =
+        const DesiredDeltaVelocity& step5 = other.desired_terms;
+        other.desired_terms =
             desired_delta_velocity(other.contact_velocity.x(), step5.restitution, step5.velocity_from_acceleration,
                                    settings.refinements, step5.position_bias);
         if (log)
             log->push_back({d.contact, moved[m], slot, delta, before, other.contact_velocity, desired_before,
-                            other.desired_delta_velocity.desired_delta_velocity});
+                            other.desired_terms.desired_delta_velocity});
     });
 }
 

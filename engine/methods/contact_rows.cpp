@@ -59,7 +59,7 @@ void fill_contact_row(ContactRow& row, int index, const PreparedContact& contact
     row.normal = d.basis.normal;
     row.tangent1 = d.basis.tangent1;
     row.tangent2 = d.basis.tangent2;
-    row.normal_response = d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;  // d (step 3)
+    row.normal_response = d.unit_impulse_chain.delta_velocity_per_unit_impulse;  // d (step 3)
     row.normal_mass = 1.0 / row.normal_response;
     row.friction = friction_rows ? d.friction : 0.0;
     if (row.friction != 0.0) {

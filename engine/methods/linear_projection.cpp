@@ -14,21 +14,21 @@ PositionResolution linear_projection(const PreparedContact& contact, double amou
     r.penetration = contact.penetration;
     r.amount = amount;
     // Nonlinear projection with every angular inertia taken as zero: all of the move is linear.
-    r.inertia.total_inertia = 0.0;
+    r.inertia.penetration_inertia = 0.0;
     for (int i = 0; i < 2; ++i) {
         if (!contact.mass[i]) continue;
         r.inertia.linear_inertia[i] = contact.mass[i]->inverse_mass;
         r.inertia.angular_inertia[i] = 0.0;
-        r.inertia.total_inertia += contact.mass[i]->inverse_mass;
+        r.inertia.penetration_inertia += contact.mass[i]->inverse_mass;
     }
-    if (r.inertia.total_inertia > 0.0) {
+    if (r.inertia.penetration_inertia > 0.0) {
         r.moves = move_split(amount, r.inertia);
     } else {
         // Neither body can translate: linear projection has nothing to move.
         for (int i = 0; i < 2; ++i)
             if (contact.mass[i]) r.moves.linear_move[i] = r.moves.angular_move[i] = 0.0;
     }
-    r.change = position_change(r.moves, d.normal, d.velocity_per_unit_impulse);
+    r.change = position_change(r.moves, d.normal, d.unit_impulse_chain);
     return r;
 }
 

@@ -15,11 +15,11 @@ PositionResolution nonlinear_projection(const PreparedContact& contact, double a
     r.method = PositionMethod::nonlinear_projection;
     r.penetration = contact.penetration;
     r.amount = amount;
-    r.inertia = penetration_inertia(d.velocity_per_unit_impulse);
+    r.inertia = penetration_inertia(d.unit_impulse_chain);
     r.moves = move_split(amount, r.inertia);
     r.angular_limit =
-        angular_limit(r.moves, limit, d.normal, d.relative_position, d.velocity_per_unit_impulse, orientation_update);
-    r.change = position_change(r.moves, d.normal, d.velocity_per_unit_impulse);
+        angular_limit(r.moves, limit, d.normal, d.relative_position, d.unit_impulse_chain, orientation_update);
+    r.change = position_change(r.moves, d.normal, d.unit_impulse_chain);
     return r;
 }
 

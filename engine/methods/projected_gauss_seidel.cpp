@@ -29,7 +29,7 @@
 // {0, pass, stage}, accumulated {before, unclamped, after, clamp}, and a resolution whose contact_velocity is
 // the velocity read from the bodies, whose desired_delta_velocity is step 5 at preparation with
 // separating_velocity = the current v_n and desired_delta_velocity = target - v_n (the value compared with the
-// epsilon), and whose impulse_contact / impulse_world is the increment applied (model frictionless,
+// epsilon), and whose impulse / impulse_world is the increment applied (model frictionless,
 // static_friction, or sliding_friction when the cone clamped; no friction_solve: that is the book's 3x3
 // solve, not this one). The updates list is filled as worst-first fills it (the linearised bookkeeping of
 // every contact sharing a body), but with desired delta v read in this method's terms, target - v_n.
@@ -68,12 +68,11 @@ public:
             fill_contact_row(row, i, c, bodies_.data());
             if (frame.settings.refinements.tangential_acceleration_velocity)
                 for (int b = 0; b < 2; ++b)
-                    if (const auto& term = d.contact_velocity.tangential_acceleration_velocity[b]) {
+                    if (const auto& term = d.velocity_terms.tangential_acceleration_velocity[b]) {
                         row.slip_offset[0] += body_sign(b) * term->y();
                         row.slip_offset[1] += body_sign(b) * term->z();
                     }
-            targets_.push_back(d.desired_delta_velocity.separating_velocity +
-                               d.desired_delta_velocity.desired_delta_velocity);
+            targets_.push_back(d.desired_terms.separating_velocity + d.desired_terms.desired_delta_velocity);
             keys_.push_back(contact_key(d));
             active_.push_back(i);
         }
@@ -149,13 +148,13 @@ private:
         const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(i)].derivation;
         VelocityResolution resolution;
         resolution.contact_velocity = velocity;
-        resolution.desired_delta_velocity = d.desired_delta_velocity;
-        resolution.desired_delta_velocity.separating_velocity = velocity.x();
-        resolution.desired_delta_velocity.desired_delta_velocity = targets_[r] - velocity.x();
-        resolution.impulse.model = model_of(d.friction, v.clamp());
-        resolution.impulse.impulse_contact = increment;
-        resolution.impulse.impulse_world = impulse;
-        resolution.velocity_change = change;
+        resolution.desired_terms = d.desired_terms;
+        resolution.desired_terms.separating_velocity = velocity.x();
+        resolution.desired_terms.desired_delta_velocity = targets_[r] - velocity.x();
+        resolution.impulse_terms.impulse_model = model_of(d.friction, v.clamp());
+        resolution.impulse_terms.impulse = increment;
+        resolution.impulse_terms.impulse_world = impulse;
+        resolution.velocity_change_terms = change;
         VelocityIteration iteration{.iteration = iterations_,
                                     .contact = i,
                                     .desired_delta_velocity = targets_[r] - velocity.x(),

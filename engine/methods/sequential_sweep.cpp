@@ -54,7 +54,7 @@ PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
                                      .resolution = resolve_velocity(contact, settings.sliding_friction),
                                      .updates = {}};
             const std::array<int, 2> changed = contact.derivation.bodies;
-            const VelocityChange& change = record.resolution->velocity_change;
+            const VelocityChange& change = record.resolution->velocity_change_terms;
             apply_velocity_change(bodies, changed, change);
             by_body.sharing(changed, sharing);
             update_contact_velocities(contacts, sharing, changed, change, settings,

@@ -70,7 +70,7 @@ public:
             c.prepared_penetration = d.penetration;
             c.solve = target_at(d.penetration, true);
             c.relax = target_at(d.penetration, false);
-            c.relative_velocity = d.contact_velocity.contact_velocity.x();
+            c.relative_velocity = d.velocity_terms.contact_velocity.x();
             c.bounces = d.restitution != 0.0 && c.relative_velocity < -cutoff;
             soft_.push_back(c);
             active_.push_back(i);
@@ -240,23 +240,23 @@ private:
         const bool sliding = v.sliding;
         VelocityResolution resolution;
         resolution.contact_velocity = vector_of(aim.contact_velocity);
-        resolution.desired_delta_velocity = {.separating_velocity = aim.contact_velocity.n,
-                                             .restitution = d.restitution,
-                                             .restitution_cutoff = settings_.refinements.restitution_cutoff,
-                                             .restitution_cutoff_applied = d.restitution != 0.0 && !soft_[r].bounces,
-                                             .restitution_used = bouncing ? d.restitution : 0.0,
-                                             .velocity_from_acceleration_applied = false,
-                                             .velocity_from_acceleration = 0.0,
-                                             .position_bias = aim.position_bias,
-                                             .desired_delta_velocity = aim.desired_delta_velocity};
+        resolution.desired_terms = {.separating_velocity = aim.contact_velocity.n,
+                                    .restitution = d.restitution,
+                                    .restitution_cutoff = settings_.refinements.restitution_cutoff,
+                                    .restitution_cutoff_applied = d.restitution != 0.0 && !soft_[r].bounces,
+                                    .restitution_used = bouncing ? d.restitution : 0.0,
+                                    .velocity_from_acceleration_applied = false,
+                                    .velocity_from_acceleration = 0.0,
+                                    .position_bias = aim.position_bias,
+                                    .desired_delta_velocity = aim.desired_delta_velocity};
         const bool tangential = d.friction != 0.0 && !bouncing;
-        resolution.impulse = {.model = !tangential ? ImpulseModel::frictionless
-                                       : sliding   ? ImpulseModel::sliding_friction
-                                                   : ImpulseModel::static_friction,
-                              .friction = std::nullopt,
-                              .impulse_contact = increment,
-                              .impulse_world = impulse};
-        resolution.velocity_change = change;
+        resolution.impulse_terms = {.impulse_model = !tangential ? ImpulseModel::frictionless
+                                                     : sliding   ? ImpulseModel::sliding_friction
+                                                                 : ImpulseModel::static_friction,
+                                    .friction_solve = std::nullopt,
+                                    .impulse = increment,
+                                    .impulse_world = impulse};
+        resolution.velocity_change_terms = change;
         const VelocityIteration iteration{.iteration = visits_,
                                           .contact = row.contact,
                                           .desired_delta_velocity = aim.desired_delta_velocity,

@@ -11,11 +11,11 @@ VelocityResolution resolve_velocity(const PreparedContact& contact, SlidingFrict
     const ContactPreparation& d = contact.derivation;
     VelocityResolution r;
     r.contact_velocity = contact.contact_velocity;
-    r.desired_delta_velocity = contact.desired_delta_velocity;
-    r.impulse = calculate_impulse(d.basis, d.friction != 0.0 ? &delta_velocity_matrix_of(contact) : nullptr,
-                                  contact.contact_velocity, contact.desired_delta_velocity.desired_delta_velocity,
-                                  d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, d.friction, sliding);
-    r.velocity_change = velocity_change(r.impulse.impulse_world, d.relative_position, contact.mass);
+    r.desired_terms = contact.desired_terms;
+    r.impulse_terms = calculate_impulse(d.basis, d.friction != 0.0 ? &delta_velocity_matrix_of(contact) : nullptr,
+                                        contact.contact_velocity, contact.desired_terms.desired_delta_velocity,
+                                        d.unit_impulse_chain.delta_velocity_per_unit_impulse, d.friction, sliding);
+    r.velocity_change_terms = velocity_change(r.impulse_terms.impulse_world, d.relative_position, contact.mass);
     return r;
 }
 

@@ -24,10 +24,10 @@
 // the trace and land exactly on bodies_after.
 //
 // Recorded per visit, in the position phase's vocabulary (a PositionIteration, pass = sweep index, epsilon =
-// the slop): method split_impulse; penetration = the contact's bookkeeping penetration when visited; amount =
-// the push impulse applied this visit (N s, not metres); linear_inertia and angular_inertia = step 3's linear
-// and angular components (how readily each body's pseudo velocity gives way along n per unit push), and
-// total_inertia = d; linear_move and angular_move = how far this visit moved each body's contact point along n
+// the slop): method split_impulse; penetration = the contact's bookkeeping penetration when visited; push_impulse =
+// the push impulse applied this visit (N s: a projection's amount is in metres); linear_inertia and angular_inertia =
+// step 3's linear and angular components (how readily each body's pseudo velocity gives way along n per unit push), and
+// penetration_inertia = d; linear_move and angular_move = how far this visit moved each body's contact point along n
 // by translation and by rotation, (linear_change) . n and (angular_change x q_rel) . n, body 1's negative as
 // in the book; no angular limit; linear_change and angular_change = the moves applied. The penetration
 // updates are the book's linearised bookkeeping (methods/bookkeeping.cpp) of every contact sharing a body,
@@ -99,8 +99,8 @@ PhaseOutcome push_apart(FrameContext& frame) {
                 PositionResolution resolution;
                 resolution.method = PositionMethod::split_impulse;
                 resolution.penetration = contact.penetration;
-                resolution.amount = push;
-                resolution.inertia = penetration_inertia(d.velocity_per_unit_impulse);
+                resolution.push_impulse = push;
+                resolution.inertia = penetration_inertia(d.unit_impulse_chain);
                 for (int b = 0; b < 2; ++b) {
                     if (row.body[b] < 0) continue;
                     resolution.moves.linear_move[b] = moves.linear_change[b]->dot(d.normal);

@@ -60,9 +60,9 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     // Steps 1-5.
     const Basis contact_basis = basis(normal);
     const PerBody<Vec3> q_rel = relative_position(contact.point, {centre(0), centre(1)});
-    const VelocityPerUnitImpulse chain = velocity_per_unit_impulse(normal, q_rel, body_mass);
-    const ContactVelocity velocity = contact_velocity(contact_basis, q_rel, motion, settings.duration,
-                                                      settings.refinements.tangential_acceleration_velocity);
+    const UnitImpulseChain chain = delta_velocity_per_unit_impulse(normal, q_rel, body_mass);
+    const ContactVelocityTerms velocity = contact_velocity(contact_basis, q_rel, motion, settings.duration,
+                                                           settings.refinements.tangential_acceleration_velocity);
     const std::optional<double> bias =
         settings.baumgarte
             ? std::optional(position_bias(contact.penetration, settings.position_bias, settings.duration))
@@ -75,7 +75,7 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     // would first clear its half kilobyte of optional per-body values, then overwrite them.
     return PreparedContact{.penetration = contact.penetration,
                            .contact_velocity = velocity.contact_velocity,
-                           .desired_delta_velocity = desired,  // the bookkeeping starts from steps 4 and 5
+                           .desired_terms = desired,  // the bookkeeping starts from steps 4 and 5
                            .derivation = {.contact = index,
                                           .swapped = swapped,
                                           .bodies = ids,
@@ -88,9 +88,9 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
                                           .inert = chain.delta_velocity_per_unit_impulse <= 0.0,
                                           .basis = contact_basis,
                                           .relative_position = q_rel,
-                                          .velocity_per_unit_impulse = chain,
-                                          .contact_velocity = velocity,
-                                          .desired_delta_velocity = desired},
+                                          .unit_impulse_chain = chain,
+                                          .velocity_terms = velocity,
+                                          .desired_terms = desired},
                            .mass = body_mass,
                            .delta_velocity_matrix = {}};
 }

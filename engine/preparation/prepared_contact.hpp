@@ -9,7 +9,7 @@
 #include "derivation/contact_velocity.hpp"
 #include "derivation/desired_delta_velocity.hpp"
 #include "derivation/impulse.hpp"
-#include "derivation/velocity_per_unit_impulse.hpp"
+#include "derivation/delta_velocity_per_unit_impulse.hpp"
 #include "settings/settings.hpp"
 
 #include <array>
@@ -28,13 +28,13 @@ struct ContactPreparation {
     double penetration;
     double restitution;
     double friction;
-    ContactOrigin origin;             // the test and features that made it (features swapped with the bodies)
-    bool inert;                       // both bodies immovable: no impulse or move can change this contact
-    Basis basis;                      // step 1
-    PerBody<Vec3> relative_position;  // step 2
-    VelocityPerUnitImpulse velocity_per_unit_impulse;  // step 3
-    ContactVelocity contact_velocity;                  // step 4
-    DesiredDeltaVelocity desired_delta_velocity;       // step 5
+    ContactOrigin origin;                 // the test and features that made it (features swapped with the bodies)
+    bool inert;                           // both bodies immovable: no impulse or move can change this contact
+    Basis basis;                          // step 1
+    PerBody<Vec3> relative_position;      // step 2
+    UnitImpulseChain unit_impulse_chain;  // step 3
+    ContactVelocityTerms velocity_terms;  // step 4
+    DesiredDeltaVelocity desired_terms;   // step 5
 
     bool operator==(const ContactPreparation&) const = default;
 };
@@ -55,7 +55,7 @@ struct PreparedContact {
     // First, next to the derivation's bodies, basis and relative positions, which every update reads too.
     double penetration;
     Vec3 contact_velocity;
-    DesiredDeltaVelocity desired_delta_velocity;
+    DesiredDeltaVelocity desired_terms;
     ContactPreparation derivation;
     PerBody<MassProperties> mass;  // the bodies' inverse mass and world inverse inertia when prepared
     // K and its factors for the book's friction impulse (derivation/impulse.hpp): computed by the first impulse on
@@ -68,7 +68,7 @@ struct PreparedContact {
 // The Δv a velocity method compares with its epsilon and resolves: the bookkeeping's (with the Baumgarte term
 // of step 5 when it is on).
 inline double desired_of(const PreparedContact& c) {
-    return c.desired_delta_velocity.desired_delta_velocity;
+    return c.desired_terms.desired_delta_velocity;
 }
 
 // The contact's K and its factors, computed on first use and then kept in the contact.

@@ -56,12 +56,12 @@ struct PositionIteration {
 };
 
 struct VelocityResolution {
-    Vec3 contact_velocity;                        // step 4 as the bookkeeping has it now
-    DesiredDeltaVelocity desired_delta_velocity;  // step 5 re-evaluated on that velocity; its position_bias is
-                                                  // Baumgarte's (or soft step's soft push): the separating speed
-                                                  // added to push the bodies apart (m/s)
-    Impulse impulse;                              // step 6 (for an accumulating solver: the clamped increment)
-    VelocityChange velocity_change;               // step 7
+    Vec3 contact_velocity;                 // step 4 as the bookkeeping has it now
+    DesiredDeltaVelocity desired_terms;    // step 5 re-evaluated on that velocity; its position_bias is
+                                           // Baumgarte's (or soft step's soft push): the separating speed
+                                           // added to push the bodies apart (m/s)
+    Impulse impulse_terms;                 // step 6 (for an accumulating solver: the clamped increment)
+    VelocityChange velocity_change_terms;  // step 7
 
     bool operator==(const VelocityResolution&) const = default;
 };

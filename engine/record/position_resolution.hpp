@@ -25,8 +25,10 @@ struct Rewind {
 struct PositionResolution {
     PositionMethod method;
     double penetration;            // the contact's penetration when it was chosen
-    double amount;                 // the penetration the projection removes (relaxation: a fraction of it;
-                                   // velocity-based: what the rewind left)
+    double amount = 0.0;           // m: the penetration a projection removes (relaxation: a fraction of it;
+                                   // velocity-based: what the rewind left); 0 for the split impulse
+    double push_impulse = 0.0;     // N·s: the split impulse's push this visit (it moves by an impulse, not a
+                                   // distance: its own word); 0 for the projections
     std::optional<Rewind> rewind;  // velocity-based only
     PenetrationInertia inertia;    // linear projection counts angular inertia as 0: it never turns a body
     MoveSplit moves;

@@ -98,7 +98,7 @@ const Word* find(std::string_view quantity);
 const Word* find(std::string_view quantity, char item);
 
 // Whether `item` ('C', 'P', 'V', 'F') holds `word`.
-inline bool held_by(const Word& word, char item) {
+constexpr bool held_by(const Word& word, char item) {
     return word.items.find(item) != std::string_view::npos;
 }
 

@@ -128,7 +128,7 @@ private:
 };
 
 template <typename Member>
-auto unit_response_field(const VelocityPerUnitImpulse& chain, Member member) {
+auto unit_response_field(const UnitImpulseChain& chain, Member member) {
     PerBody<std::decay_t<decltype(std::declval<UnitImpulseResponse>().*member)>> values;
     for (int i = 0; i < 2; ++i)
         if (chain.bodies[i]) values[i] = (*chain.bodies[i]).*member;
@@ -225,7 +225,7 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
     relative.world_vectors("relative_position", d.relative_position);
     tables.push_back(relative.done());
 
-    const VelocityPerUnitImpulse& chain = d.velocity_per_unit_impulse;
+    const UnitImpulseChain& chain = d.unit_impulse_chain;
     Table unit(std::string(words::step::delta_velocity_per_unit_impulse),
                "delta_velocity_per_unit_impulse — linear and angular parts", basis);
     unit.world_vectors("torque_per_unit_impulse",
@@ -233,23 +233,23 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
         .world_vectors("rotation_per_unit_impulse",
                        unit_response_field(chain, &UnitImpulseResponse::rotation_per_unit_impulse))
         .world_vectors("point_velocity_per_unit_impulse",
-                       unit_response_field(chain, &UnitImpulseResponse::velocity_per_unit_impulse))
+                       unit_response_field(chain, &UnitImpulseResponse::point_velocity_per_unit_impulse))
         .per_body("angular_component", unit_response_field(chain, &UnitImpulseResponse::angular_component))
         .per_body("linear_component", unit_response_field(chain, &UnitImpulseResponse::linear_component))
         .row("delta_velocity_per_unit_impulse", chain.delta_velocity_per_unit_impulse);
     tables.push_back(unit.done());
 
     Table velocity(std::string(words::step::contact_velocity), "contact_velocity — how the contact points move", basis);
-    velocity.world_vectors("point_velocity", d.contact_velocity.point_velocity)
-        .per_body("tangential_acceleration_velocity", d.contact_velocity.tangential_acceleration_velocity)
-        .contact_vector("contact_velocity", d.contact_velocity.contact_velocity,
+    velocity.world_vectors("point_velocity", d.velocity_terms.point_velocity)
+        .per_body("tangential_acceleration_velocity", d.velocity_terms.tangential_acceleration_velocity)
+        .contact_vector("contact_velocity", d.velocity_terms.contact_velocity,
                         // With the refinement on, last frame's sideways acceleration is in it too.
-                        d.contact_velocity.tangential_acceleration_velocity[0]
+                        d.velocity_terms.tangential_acceleration_velocity[0]
                             ? "Cᵀ (v₀ − v₁) + tangential_acceleration_velocity₀ − …₁"
                             : "");
     tables.push_back(velocity.done());
 
-    tables.push_back(desired_table(d.desired_delta_velocity));
+    tables.push_back(desired_table(d.desired_terms));
     return tables;
 }
 
@@ -279,11 +279,13 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
                           "penetration_inertia — how readily each body gives way (" + method + ")");
             // The split impulse pushes with an impulse (N·s), not a distance: its own word.
             inertia.row("penetration", r->penetration)
-                .row(split ? "push_impulse" : "amount", r->amount, std::nullopt, split ? "" : amount_formula(*r));
+                .row(split ? "push_impulse" : "amount", split ? r->push_impulse : r->amount, std::nullopt,
+                     split ? "" : amount_formula(*r));
             inertia.per_body("linear_inertia", r->inertia.linear_inertia)
                 .per_body("angular_inertia", r->inertia.angular_inertia,
                           linear_only ? "0: linear projection never turns" : "")
-                .row("penetration_inertia", r->inertia.total_inertia, std::nullopt, linear_only ? "Σ linear" : "");
+                .row("penetration_inertia", r->inertia.penetration_inertia, std::nullopt,
+                     linear_only ? "Σ linear" : "");
             tables.push_back(inertia.done());
 
             Table moves(std::string(words::step::move_split),
@@ -389,7 +391,7 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         tables.push_back(velocity.done());
         const bool accumulating = it.accumulated.has_value();
         const bool warm_start = it.sweep && it.sweep->stage == SolverStage::warm_start;
-        tables.push_back(desired_table(r->desired_delta_velocity, accumulating, warm_start));
+        tables.push_back(desired_table(r->desired_terms, accumulating, warm_start));
         if (const auto& a = it.accumulated) {
             Table total(std::string(words::step::accumulated),
                         "accumulated — the running total, kept within its limits", basis);
@@ -403,12 +405,12 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
             tables.push_back(total.done());
         }
 
-        const Impulse& g = r->impulse;
+        const Impulse& g = r->impulse_terms;
         Table impulse(std::string(words::step::impulse), "impulse — in contact and world coordinates", basis);
         impulse.row(
-            "impulse_model", std::string(name_of(impulse_model_names, g.model)), std::nullopt,
+            "impulse_model", std::string(name_of(impulse_model_names, g.impulse_model)), std::nullopt,
             accumulating ? "μ = 0: frictionless; sliding when the clamp held friction to its cone; else static" : "");
-        if (const auto& s = g.friction) {
+        if (const auto& s = g.friction_solve) {
             impulse.row("friction_solve.delta_velocity_matrix", s->delta_velocity_matrix)
                 .contact_vector("friction_solve.target_delta_velocity", s->target_delta_velocity)
                 .contact_vector("friction_solve.static_impulse", s->static_impulse)
@@ -420,21 +422,22 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
             if (s->sliding_normal_response)
                 impulse.row("friction_solve.sliding_normal_response", *s->sliding_normal_response);
         }
-        impulse.contact_vector("impulse", g.impulse_contact,
-                               accumulating                            ? "accumulated.after − accumulated.before"
-                               : g.model == ImpulseModel::frictionless ? std::string_view{}
-                               : g.model == ImpulseModel::static_friction
+        impulse.contact_vector("impulse", g.impulse,
+                               accumulating ? "accumulated.after − accumulated.before"
+                               : g.impulse_model == ImpulseModel::frictionless ? std::string_view{}
+                               : g.impulse_model == ImpulseModel::static_friction
                                    ? "friction_solve.static_impulse (inside the cone)"
                                    : "(g_n, μ g_n ŷ, μ g_n ẑ), g_n = Δv / sliding_normal_response");
         // (14.3) is the frictionless g = Δv / d; the friction solve is chapter 15's, a sweep's increment its own.
-        if (accumulating || g.model != ImpulseModel::frictionless) impulse.equation(accumulating ? "" : "ch. 15");
+        if (accumulating || g.impulse_model != ImpulseModel::frictionless)
+            impulse.equation(accumulating ? "" : "ch. 15");
         impulse.world_vector("impulse_world", g.impulse_world);
         tables.push_back(impulse.done());
 
         Table change(std::string(words::step::velocity_change), "velocity_change — the impulse applied", basis);
-        change.world_vectors("impulsive_torque", r->velocity_change.impulsive_torque)
-            .world_vectors("velocity_change", r->velocity_change.velocity_change)
-            .world_vectors("rotation_change", r->velocity_change.rotation_change);
+        change.world_vectors("impulsive_torque", r->velocity_change_terms.impulsive_torque)
+            .world_vectors("velocity_change", r->velocity_change_terms.velocity_change)
+            .world_vectors("rotation_change", r->velocity_change_terms.rotation_change);
         tables.push_back(change.done());
     }
     std::vector<Row> rows;

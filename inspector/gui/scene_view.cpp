@@ -358,7 +358,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
             explain::Row impulse_row;
             impulse_row.key = "impulse_world";
             if (it.resolution && v.largest_impulse > 0 && !mask.hides_row(*v.cursor, impulse_row)) {
-                const Vec3 g = project.view * it.resolution->impulse.impulse_world;
+                const Vec3 g = project.view * it.resolution->impulse_terms.impulse_world;
                 const float k = impulse_pixels / static_cast<float>(v.largest_impulse);
                 arrow(draw, p, ImVec2(p.x + static_cast<float>(g.x()) * k, p.y - static_cast<float>(g.y()) * k),
                       IM_COL32(255, 80, 220, 255), 3.0f);

@@ -132,7 +132,7 @@ void draw_contacts(inspect::Session& session, UiState& state) {
             cell("penetration", row.penetration,
                  std::max(std::abs(row.prepared->penetration), std::abs(row.penetration)));
             ImGui::TableSetColumnIndex(3);
-            const double desired = row.prepared->desired_delta_velocity.desired_delta_velocity;
+            const double desired = row.prepared->desired_terms.desired_delta_velocity;
             cell("desired_delta_velocity", row.desired_delta_velocity,
                  std::max(std::abs(desired), std::abs(row.desired_delta_velocity)));
             ImGui::TableSetColumnIndex(4);

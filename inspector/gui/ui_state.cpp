@@ -47,7 +47,7 @@ void refresh_views(const inspect::Session& session, UiState& state) {
         v.largest_impulse = 0.0;
         for (const VelocityIteration& it : frame.velocity.iterations)
             if (it.resolution)
-                v.largest_impulse = std::max(v.largest_impulse, it.resolution->impulse.impulse_world.norm());
+                v.largest_impulse = std::max(v.largest_impulse, it.resolution->impulse_terms.impulse_world.norm());
     }
 }
 

@@ -50,8 +50,8 @@ bool apply_iteration(const FrameRecord& frame, Stage stage, std::size_t i, Orien
     for (int b = 0; b < 2; ++b) {
         if (p->bodies[b] == world_body) continue;
         BodyState& body = bodies[static_cast<std::size_t>(p->bodies[b])];
-        body.velocity += *it.resolution->velocity_change.velocity_change[b];
-        body.angular_velocity += *it.resolution->velocity_change.rotation_change[b];
+        body.velocity += *it.resolution->velocity_change_terms.velocity_change[b];
+        body.angular_velocity += *it.resolution->velocity_change_terms.rotation_change[b];
         if (moved) moved->push_back(p->bodies[b]);
     }
     return true;
@@ -76,8 +76,8 @@ std::vector<ContactRow> contact_rows(const Trace& trace, const Cursor& cursor) {
     std::vector<ContactRow> rows;
     rows.reserve(frame.contacts.size());
     for (const ContactPreparation& p : frame.contacts)
-        rows.push_back({p.contact, &p, p.penetration, p.desired_delta_velocity.desired_delta_velocity,
-                        ContactStatus::waiting, Vec3::Zero()});
+        rows.push_back({p.contact, &p, p.penetration, p.desired_terms.desired_delta_velocity, ContactStatus::waiting,
+                        Vec3::Zero()});
 
     for_each_iteration_before(frame, cursor, [&](Stage stage, std::size_t i) {
         if (stage == Stage::position) {
@@ -90,7 +90,7 @@ std::vector<ContactRow> contact_rows(const Trace& trace, const Cursor& cursor) {
                 if (const int r = row_of(frame, u.contact); r >= 0)
                     rows[static_cast<std::size_t>(r)].desired_delta_velocity = u.desired_delta_velocity_after;
             if (const int r = row_of(frame, it.contact); r >= 0 && it.resolution)
-                rows[static_cast<std::size_t>(r)].impulse_so_far += it.resolution->impulse.impulse_world;
+                rows[static_cast<std::size_t>(r)].impulse_so_far += it.resolution->impulse_terms.impulse_world;
         }
     });
 

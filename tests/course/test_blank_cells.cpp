@@ -19,7 +19,7 @@
 #include "derivation/position_change.hpp"
 #include "derivation/relative_position.hpp"
 #include "derivation/velocity_change.hpp"
-#include "derivation/velocity_per_unit_impulse.hpp"
+#include "derivation/delta_velocity_per_unit_impulse.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 #include "formats/trace_json.hpp"
@@ -271,14 +271,14 @@ private:
             for (std::size_t i = 0; i < 2; ++i)
                 if (q[i]) put(at(at(c, "relative_position"), i), json_of(*q[i]));
         } else if (step == "delta_velocity_per_unit_impulse") {
-            const VelocityPerUnitImpulse chain =
-                velocity_per_unit_impulse(vec(k(at(c, "normal"))), relative_positions(c, bodies), masses(bodies));
+            const UnitImpulseChain chain =
+                delta_velocity_per_unit_impulse(vec(k(at(c, "normal"))), relative_positions(c, bodies), masses(bodies));
             for (std::size_t i = 0; i < 2; ++i) {
                 if (!chain.bodies[i]) continue;
                 const UnitImpulseResponse& r = *chain.bodies[i];
                 put(at(at(c, "torque_per_unit_impulse"), i), json_of(r.torque_per_unit_impulse));
                 put(at(at(c, "rotation_per_unit_impulse"), i), json_of(r.rotation_per_unit_impulse));
-                put(at(at(c, "point_velocity_per_unit_impulse"), i), json_of(r.velocity_per_unit_impulse));
+                put(at(at(c, "point_velocity_per_unit_impulse"), i), json_of(r.point_velocity_per_unit_impulse));
                 put(at(at(c, "angular_component"), i), r.angular_component);
                 put(at(at(c, "linear_component"), i), r.linear_component);
             }
@@ -291,9 +291,9 @@ private:
                 motion[i] = BodyMotion{vec(k(at(body, "velocity"))), vec(k(at(body, "angular_velocity"))),
                                        acceleration(bodies[i])};
             }
-            const ContactVelocity v = contact_velocity(basis_of(k(at(c, "basis"))), relative_positions(c, bodies),
-                                                       motion, number("settings.duration"),
-                                                       k("settings.tangential_acceleration_velocity").get<bool>());
+            const ContactVelocityTerms v = contact_velocity(basis_of(k(at(c, "basis"))), relative_positions(c, bodies),
+                                                            motion, number("settings.duration"),
+                                                            k("settings.tangential_acceleration_velocity").get<bool>());
             for (std::size_t i = 0; i < 2; ++i) {
                 if (v.point_velocity[i]) put(at(at(c, "point_velocity"), i), json_of(*v.point_velocity[i]));
                 if (v.tangential_acceleration_velocity[i])
@@ -333,7 +333,7 @@ private:
         const io::json& bodies = k(at(c, "bodies"));
         const Vec3 normal = vec(k(at(c, "normal")));
         const auto chain = [&] {
-            return velocity_per_unit_impulse(normal, relative_positions(c, bodies), masses(bodies));
+            return delta_velocity_per_unit_impulse(normal, relative_positions(c, bodies), masses(bodies));
         };
         const auto per_body = [&](const std::string& key, const std::string& object = {}) {
             PerBody<double> values;
@@ -353,12 +353,12 @@ private:
             PenetrationInertia inertia;
             if (method == "linear_projection") {
                 // Linear projection never turns a body: its angular inertia counts as 0.
-                inertia.total_inertia = 0.0;
+                inertia.penetration_inertia = 0.0;
                 for (std::size_t i = 0; i < 2; ++i) {
                     if (bodies[i].is_null()) continue;
                     inertia.linear_inertia[i] = mass(bodies[i]).inverse_mass;
                     inertia.angular_inertia[i] = 0.0;
-                    inertia.total_inertia += *inertia.linear_inertia[i];
+                    inertia.penetration_inertia += *inertia.linear_inertia[i];
                 }
             } else {
                 inertia = penetration_inertia(chain());
@@ -368,7 +368,7 @@ private:
                 put(at(at(p, "linear_inertia"), i), *inertia.linear_inertia[i]);
                 put(at(at(p, "angular_inertia"), i), *inertia.angular_inertia[i]);
             }
-            put(at(p, "penetration_inertia"), inertia.total_inertia);
+            put(at(p, "penetration_inertia"), inertia.penetration_inertia);
         } else if (step == "rewind") {
             // The bodies go back along their paths by the same time t = penetration / closing speed, at most the
             // frame (the chapter's velocity-based resolution).
@@ -401,7 +401,7 @@ private:
             PenetrationInertia inertia{per_body("linear_inertia"), per_body("angular_inertia"),
                                        number(at(p, "penetration_inertia"))};
             MoveSplit moves;
-            if (inertia.total_inertia > 0.0) {
+            if (inertia.penetration_inertia > 0.0) {
                 moves = move_split(number(at(p, "amount")), inertia);
             } else {
                 for (std::size_t i = 0; i < 2; ++i)
@@ -479,9 +479,9 @@ private:
                 basis_of(k(at(c, "basis"))), relative_positions(c, bodies), masses(bodies),
                 vec(k(at(v, "contact_velocity"))), number(at(v, "desired_delta_velocity")),
                 number(at(c, "delta_velocity_per_unit_impulse")), number(at(c, "friction")), sliding_friction());
-            put(at(v, "impulse_model"), name(impulse_model_names, g.model));
-            if (g.friction) {
-                const FrictionSolve& s = *g.friction;
+            put(at(v, "impulse_model"), name(impulse_model_names, g.impulse_model));
+            if (g.friction_solve) {
+                const FrictionSolve& s = *g.friction_solve;
                 const std::string f = at(v, "friction_solve");
                 put(at(f, "delta_velocity_matrix"), json_of(s.delta_velocity_matrix));
                 put(at(f, "target_delta_velocity"), json_of(s.target_delta_velocity));
@@ -494,7 +494,7 @@ private:
                         io::json::array({s.sliding_direction->x(), s.sliding_direction->y()}));
                 if (s.sliding_normal_response) put(at(f, "sliding_normal_response"), *s.sliding_normal_response);
             }
-            put(at(v, "impulse"), json_of(g.impulse_contact));
+            put(at(v, "impulse"), json_of(g.impulse));
             put(at(v, "impulse_world"), json_of(g.impulse_world));
         } else if (step == "velocity_change") {
             const VelocityChange change =

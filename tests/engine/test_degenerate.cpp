@@ -23,9 +23,9 @@ bool finite(const RigidBody& b) {
 }
 
 bool finite(const ContactPreparation& d) {
-    return d.basis.contact_to_world.allFinite() && d.contact_velocity.contact_velocity.allFinite() &&
-           std::isfinite(d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse) &&
-           std::isfinite(d.desired_delta_velocity.desired_delta_velocity);
+    return d.basis.contact_to_world.allFinite() && d.velocity_terms.contact_velocity.allFinite() &&
+           std::isfinite(d.unit_impulse_chain.delta_velocity_per_unit_impulse) &&
+           std::isfinite(d.desired_terms.desired_delta_velocity);
 }
 
 // Resolves the contacts once under `preset_name` with a recorder on, with friction (the full 3x3 solve) and
@@ -58,7 +58,7 @@ TEST_CASE("a contact between two immovable bodies is recorded as inert and leave
         REQUIRE(trace.frames[0].contacts.size() == 1);
         const ContactPreparation& d = trace.frames[0].contacts[0];
         CHECK(d.inert);
-        CHECK(d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse == 0.0);  // d = 0
+        CHECK(d.unit_impulse_chain.delta_velocity_per_unit_impulse == 0.0);  // d = 0
         CHECK(finite(d));
         CHECK(trace.frames[0].velocity.iterations.empty());
         CHECK(trace.frames[0].position.iterations.empty());
@@ -93,7 +93,7 @@ TEST_CASE("a contact at a movable body's centre is resolved with no turn and fin
         REQUIRE(trace.frames.size() == 1);
         const ContactPreparation& d = trace.frames[0].contacts.at(0);
         CHECK_FALSE(d.inert);
-        CHECK(d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse == 1.0);
+        CHECK(d.unit_impulse_chain.delta_velocity_per_unit_impulse == 1.0);
         CHECK(finite(d));
         CHECK(finite(bodies[0]));
         CHECK(bodies[0].angular_velocity.norm() < 1e-12);

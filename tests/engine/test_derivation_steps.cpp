@@ -32,21 +32,21 @@ TEST_CASE("a 2 kg sphere meeting the ground at 5 m/s with c = 0.5 gets a 15 N s 
     CHECK_CLOSE(*d.relative_position[0], Vec3(0, -0.5, 0));
     CHECK_FALSE(d.relative_position[1].has_value());
 
-    const UnitImpulseResponse& r = *d.velocity_per_unit_impulse.bodies[0];
+    const UnitImpulseResponse& r = *d.unit_impulse_chain.bodies[0];
     CHECK_CLOSE(r.torque_per_unit_impulse, Vec3::Zero());
     CHECK_CLOSE(r.angular_component, 0.0);
     CHECK_CLOSE(r.linear_component, 0.5);
-    CHECK_CLOSE(d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, 0.5);
+    CHECK_CLOSE(d.unit_impulse_chain.delta_velocity_per_unit_impulse, 0.5);
 
-    CHECK_CLOSE(d.contact_velocity.contact_velocity, Vec3(-5, 0, 0));
-    CHECK_FALSE(d.desired_delta_velocity.restitution_cutoff_applied);
-    CHECK_CLOSE(d.desired_delta_velocity.restitution_used, 0.5);
-    CHECK_CLOSE(d.desired_delta_velocity.desired_delta_velocity, 7.5);
+    CHECK_CLOSE(d.velocity_terms.contact_velocity, Vec3(-5, 0, 0));
+    CHECK_FALSE(d.desired_terms.restitution_cutoff_applied);
+    CHECK_CLOSE(d.desired_terms.restitution_used, 0.5);
+    CHECK_CLOSE(d.desired_terms.desired_delta_velocity, 7.5);
 
     const Impulse g = calculate_impulse(d.basis, d.relative_position, p.mass, p.contact_velocity, 7.5,
-                                        d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, c.friction);
-    CHECK(g.model == ImpulseModel::frictionless);
-    CHECK_CLOSE(g.impulse_contact, Vec3(15, 0, 0));
+                                        d.unit_impulse_chain.delta_velocity_per_unit_impulse, c.friction);
+    CHECK(g.impulse_model == ImpulseModel::frictionless);
+    CHECK_CLOSE(g.impulse, Vec3(15, 0, 0));
     CHECK_CLOSE(g.impulse_world, Vec3(0, 15, 0));
 
     const VelocityChange change = velocity_change(g.impulse_world, d.relative_position, p.mass);
@@ -94,19 +94,19 @@ TEST_CASE("an off-centre box contact gets an angular term of 0.8 beside the line
     const Contact c = contact(0, world_body, {1, 0, 0}, {0, 1, 0});
     const PreparedContact p = prepared(c, bodies);
     const ContactPreparation& d = p.derivation;
-    const UnitImpulseResponse& r = *d.velocity_per_unit_impulse.bodies[0];
+    const UnitImpulseResponse& r = *d.unit_impulse_chain.bodies[0];
     CHECK_CLOSE(*d.relative_position[0], Vec3(1, -0.5, 0));
     CHECK_CLOSE(r.torque_per_unit_impulse, Vec3(0, 0, 1));
     CHECK_CLOSE(r.rotation_per_unit_impulse, Vec3(0, 0, 0.8));
-    CHECK_CLOSE(r.velocity_per_unit_impulse, Vec3(0.4, 0.8, 0));
+    CHECK_CLOSE(r.point_velocity_per_unit_impulse, Vec3(0.4, 0.8, 0));
     CHECK_CLOSE(r.angular_component, 0.8);
     CHECK_CLOSE(r.linear_component, 1.0 / 3.0);
-    CHECK_CLOSE(d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, 17.0 / 15.0);
-    CHECK_CLOSE(d.desired_delta_velocity.desired_delta_velocity, 2.0);
+    CHECK_CLOSE(d.unit_impulse_chain.delta_velocity_per_unit_impulse, 17.0 / 15.0);
+    CHECK_CLOSE(d.desired_terms.desired_delta_velocity, 2.0);
 
     const Impulse g = calculate_impulse(d.basis, d.relative_position, p.mass, p.contact_velocity, 2.0,
-                                        d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, 0.0);
-    CHECK_CLOSE(g.impulse_contact, Vec3(30.0 / 17.0, 0, 0));
+                                        d.unit_impulse_chain.delta_velocity_per_unit_impulse, 0.0);
+    CHECK_CLOSE(g.impulse, Vec3(30.0 / 17.0, 0, 0));
     const VelocityChange change = velocity_change(g.impulse_world, d.relative_position, p.mass);
     CHECK_CLOSE(*change.impulsive_torque[0], Vec3(0, 0, 30.0 / 17.0));
     CHECK_CLOSE(*change.velocity_change[0], Vec3(0, 10.0 / 17.0, 0));
@@ -126,7 +126,7 @@ TEST_CASE("the off-centre box's penetration splits 5:12 between moving and turni
     const PreparedContact p = prepared(contact(0, world_body, {1, 0, 0}, {0, 1, 0}, 0.1), bodies);
     const PositionResolution r =
         nonlinear_projection(p, 0.1, {AngularLimitPolicy::lever_arm, 0.2}, OrientationUpdate::first_order);
-    CHECK_CLOSE(r.inertia.total_inertia, 17.0 / 15.0);
+    CHECK_CLOSE(r.inertia.penetration_inertia, 17.0 / 15.0);
     CHECK_CLOSE(*r.moves.linear_move[0], 0.5 / 17.0);
     CHECK_CLOSE(*r.moves.angular_move[0], 1.2 / 17.0);
     CHECK_CLOSE(*r.angular_limit->maximum[0], 0.2);
@@ -167,13 +167,13 @@ TEST_CASE("two spheres meeting obliquely exchange 2.31 N s along the normal and 
     CHECK_CLOSE(d.basis.tangent2, Vec3(-0.6, 0.8, 0));
     CHECK_CLOSE(*d.relative_position[0], Vec3(-0.4, -0.3, 0));
     CHECK_CLOSE(*d.relative_position[1], Vec3(0.4, 0.3, 0));
-    CHECK_CLOSE(d.velocity_per_unit_impulse.bodies[1]->linear_component, 1.0 / 3.0);
-    CHECK_CLOSE(d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, 4.0 / 3.0);
-    CHECK_CLOSE(d.contact_velocity.contact_velocity, Vec3(-2.2, 0, 0.4));
-    CHECK_CLOSE(d.desired_delta_velocity.desired_delta_velocity, 3.08);
+    CHECK_CLOSE(d.unit_impulse_chain.bodies[1]->linear_component, 1.0 / 3.0);
+    CHECK_CLOSE(d.unit_impulse_chain.delta_velocity_per_unit_impulse, 4.0 / 3.0);
+    CHECK_CLOSE(d.velocity_terms.contact_velocity, Vec3(-2.2, 0, 0.4));
+    CHECK_CLOSE(d.desired_terms.desired_delta_velocity, 3.08);
 
     const Impulse g = calculate_impulse(d.basis, d.relative_position, p.mass, p.contact_velocity, 3.08, 4.0 / 3.0, 0.0);
-    CHECK_CLOSE(g.impulse_contact, Vec3(2.31, 0, 0));
+    CHECK_CLOSE(g.impulse, Vec3(2.31, 0, 0));
     const VelocityChange change = velocity_change(g.impulse_world, d.relative_position, p.mass);
     CHECK_CLOSE(*change.velocity_change[0], Vec3(1.848, 1.386, 0));
     CHECK_CLOSE(*change.velocity_change[1], Vec3(-0.616, -0.462, 0));
@@ -222,10 +222,10 @@ TEST_CASE("last frame's sideways acceleration is added to the sliding velocity o
     motion[0] = BodyMotion{Vec3::Zero(), Vec3::Zero(), {2, -9.81, 0}};
     PerBody<Vec3> q_rel;
     q_rel[0] = Vec3(0, -0.5, 0);
-    const ContactVelocity v = contact_velocity(basis({0, 1, 0}), q_rel, motion, 0.1, true);
+    const ContactVelocityTerms v = contact_velocity(basis({0, 1, 0}), q_rel, motion, 0.1, true);
     CHECK_CLOSE(*v.tangential_acceleration_velocity[0], Vec3(0, 0, 0.2));
     CHECK_CLOSE(v.contact_velocity, Vec3(0, 0, 0.2));
-    const ContactVelocity without = contact_velocity(basis({0, 1, 0}), q_rel, motion, 0.1, false);
+    const ContactVelocityTerms without = contact_velocity(basis({0, 1, 0}), q_rel, motion, 0.1, false);
     CHECK_FALSE(without.tangential_acceleration_velocity[0].has_value());
     CHECK_CLOSE(without.contact_velocity, Vec3::Zero());
 }

@@ -25,7 +25,7 @@ struct LandingSphere {
     Impulse impulse(double friction) const {
         const ContactPreparation& d = p.derivation;
         return calculate_impulse(d.basis, d.relative_position, p.mass, p.contact_velocity, 2.0,
-                                 d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, friction);
+                                 d.unit_impulse_chain.delta_velocity_per_unit_impulse, friction);
     }
 };
 
@@ -36,13 +36,13 @@ TEST_CASE("inside the friction cone the contact stops sliding: the sphere rolls"
     // moves at (1 - 0.2857, 0, 0) and spins at I^-1 (r x g) = (0, 0, -1.42857): its contact point is at rest.
     LandingSphere s;
     const Impulse g = s.impulse(1.0);
-    REQUIRE(g.friction.has_value());
-    CHECK(g.model == ImpulseModel::static_friction);
-    CHECK_CLOSE(g.friction->delta_velocity_matrix, Vec3(1, 3.5, 3.5).asDiagonal().toDenseMatrix());
-    CHECK_CLOSE(g.friction->target_delta_velocity, Vec3(2, 0, -1));
-    CHECK_CLOSE(g.friction->static_impulse, Vec3(2, 0, -1 / 3.5));
-    CHECK_CLOSE(g.friction->tangential_impulse, 1 / 3.5);
-    CHECK_CLOSE(g.friction->cone_limit, 2.0);
+    REQUIRE(g.friction_solve.has_value());
+    CHECK(g.impulse_model == ImpulseModel::static_friction);
+    CHECK_CLOSE(g.friction_solve->delta_velocity_matrix, Vec3(1, 3.5, 3.5).asDiagonal().toDenseMatrix());
+    CHECK_CLOSE(g.friction_solve->target_delta_velocity, Vec3(2, 0, -1));
+    CHECK_CLOSE(g.friction_solve->static_impulse, Vec3(2, 0, -1 / 3.5));
+    CHECK_CLOSE(g.friction_solve->tangential_impulse, 1 / 3.5);
+    CHECK_CLOSE(g.friction_solve->cone_limit, 2.0);
     CHECK_CLOSE(g.impulse_world, Vec3(-1 / 3.5, 2, 0));
 
     const VelocityChange change = velocity_change(g.impulse_world, s.p.derivation.relative_position, s.p.mass);
@@ -56,13 +56,14 @@ TEST_CASE("inside the friction cone the contact stops sliding: the sphere rolls"
 TEST_CASE("outside the friction cone the tangential impulse is cut back onto the cone") {
     // mu = 0.1: 0.2857 > 0.1 * 2, so the contact slides. The kept direction is the static one, (0, -1) in
     // (t1, t2); the normal response K00 + mu (K01 * 0 + K02 * -1) = 1, so g_n = 2 / 1 = 2 and the tangential
-    // impulse is mu g_n = 0.2 along it: impulse_contact (2, 0, -0.2), world (-0.2, 2, 0).
+    // impulse is mu g_n = 0.2 along it: impulse (2, 0, -0.2), world (-0.2, 2, 0).
     LandingSphere s;
     const Impulse g = s.impulse(0.1);
-    CHECK(g.model == ImpulseModel::sliding_friction);
-    CHECK_CLOSE(Vec3(0, g.friction->sliding_direction->x(), g.friction->sliding_direction->y()), Vec3(0, 0, -1));
-    CHECK_CLOSE(*g.friction->sliding_normal_response, 1.0);
-    CHECK_CLOSE(g.impulse_contact, Vec3(2, 0, -0.2));
+    CHECK(g.impulse_model == ImpulseModel::sliding_friction);
+    CHECK_CLOSE(Vec3(0, g.friction_solve->sliding_direction->x(), g.friction_solve->sliding_direction->y()),
+                Vec3(0, 0, -1));
+    CHECK_CLOSE(*g.friction_solve->sliding_normal_response, 1.0);
+    CHECK_CLOSE(g.impulse, Vec3(2, 0, -0.2));
     CHECK_CLOSE(g.impulse_world, Vec3(-0.2, 2, 0));
 
     const VelocityChange change = velocity_change(g.impulse_world, s.p.derivation.relative_position, s.p.mass);
@@ -77,8 +78,7 @@ TEST_CASE("outside the friction cone the tangential impulse is cut back onto the
 TEST_CASE("a contact with friction exactly zero uses the frictionless impulse") {
     LandingSphere s;
     const Impulse g = s.impulse(0.0);
-    CHECK(g.model == ImpulseModel::frictionless);
-    CHECK_FALSE(g.friction.has_value());
-    CHECK_CLOSE(g.impulse_contact,
-                Vec3(2.0 / s.p.derivation.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, 0, 0));
+    CHECK(g.impulse_model == ImpulseModel::frictionless);
+    CHECK_FALSE(g.friction_solve.has_value());
+    CHECK_CLOSE(g.impulse, Vec3(2.0 / s.p.derivation.unit_impulse_chain.delta_velocity_per_unit_impulse, 0, 0));
 }

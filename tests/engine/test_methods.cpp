@@ -189,7 +189,7 @@ TEST_CASE("a box sliding fast on mu 0.3 gets its friction total clamped to the c
     resolve_contacts(bodies, std::span(&contact, 1), settings_of("pgs"), recorder, 0, &memory);
     const VelocityIteration& last = trace.frames.at(0).velocity.iterations.back();
     CHECK((last.accumulated->clamp == ImpulseClamp::friction || last.accumulated->clamp == ImpulseClamp::both));
-    CHECK(last.resolution->impulse.model == ImpulseModel::sliding_friction);
+    CHECK(last.resolution->impulse_terms.impulse_model == ImpulseModel::sliding_friction);
     const Vec3 total = last.accumulated->after;
     CHECK(total.x() > 0.0);
     CHECK(std::hypot(total.y(), total.z()) == doctest::Approx(0.3 * total.x()).epsilon(1e-12));

@@ -25,8 +25,8 @@ Outcome apply_impulse(const RandomContact& r) {
     Outcome o{r.bodies, r.bodies, prepared(r.contact, r.bodies), {}};
     const ContactPreparation& d = o.prepared.derivation;
     o.impulse = calculate_impulse(d.basis, d.relative_position, o.prepared.mass, o.prepared.contact_velocity,
-                                  o.prepared.desired_delta_velocity.desired_delta_velocity,
-                                  d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse, r.contact.friction);
+                                  o.prepared.desired_terms.desired_delta_velocity,
+                                  d.unit_impulse_chain.delta_velocity_per_unit_impulse, r.contact.friction);
     const VelocityChange change = velocity_change(o.impulse.impulse_world, d.relative_position, o.prepared.mass);
     for (int i = 0; i < 2; ++i) {
         if (d.bodies[i] == world_body) continue;
@@ -115,11 +115,11 @@ TEST_CASE("with friction the slip stops inside the cone and the impulse lies on 
         const Vec3 after = to_contact(d.basis, relative_point_velocity(o.after, r.contact));
         const double closing = -o.prepared.contact_velocity.x();
         // Either way the normal velocity reaches its target: -c times the closing speed.
-        if (o.impulse.model != ImpulseModel::frictionless)
+        if (o.impulse.impulse_model != ImpulseModel::frictionless)
             RC_ASSERT(std::abs(after.x() - r.contact.restitution * closing) <= 1e-9 * (1.0 + closing));
-        const Vec3& g = o.impulse.impulse_contact;
+        const Vec3& g = o.impulse.impulse;
         const double scale = 1.0 + o.prepared.contact_velocity.norm();
-        switch (o.impulse.model) {
+        switch (o.impulse.impulse_model) {
             case ImpulseModel::static_friction:
                 ++stuck;
                 RC_ASSERT(std::hypot(after.y(), after.z()) <= 1e-9 * scale);
@@ -131,8 +131,8 @@ TEST_CASE("with friction the slip stops inside the cone and the impulse lies on 
                 break;
             case ImpulseModel::frictionless:
                 // Only where sliding along the cone could not separate the contact at all.
-                RC_ASSERT(o.impulse.friction->sliding_normal_response.has_value());
-                RC_ASSERT(*o.impulse.friction->sliding_normal_response <= 0.0);
+                RC_ASSERT(o.impulse.friction_solve->sliding_normal_response.has_value());
+                RC_ASSERT(*o.impulse.friction_solve->sliding_normal_response <= 0.0);
                 break;
         }
     });
@@ -164,7 +164,7 @@ TEST_CASE("the angular limit keeps the total move of each body that can translat
     check_property("angular limit keeps the total", [] {
         const RandomContact r = any_contact();
         const PreparedContact p = prepared(r.contact, r.bodies);
-        const PenetrationInertia inertia = penetration_inertia(p.derivation.velocity_per_unit_impulse);
+        const PenetrationInertia inertia = penetration_inertia(p.derivation.unit_impulse_chain);
         MoveSplit moves = move_split(r.contact.penetration, inertia);
         const MoveSplit unlimited = moves;
         const auto policy =
@@ -172,7 +172,7 @@ TEST_CASE("the angular limit keeps the total move of each body that can translat
         const double factor = policy == AngularLimitPolicy::angle ? *in_range(1.0, 90.0) : *in_range(0.0, 0.5);
         const AngularLimit limit =
             angular_limit(moves, {policy, factor}, r.contact.normal, p.derivation.relative_position,
-                          p.derivation.velocity_per_unit_impulse, OrientationUpdate::first_order);
+                          p.derivation.unit_impulse_chain, OrientationUpdate::first_order);
         for (int i = 0; i < 2; ++i) {
             if (!moves.linear_move[i]) continue;
             const double total_before = *unlimited.linear_move[i] + *unlimited.angular_move[i];

@@ -143,8 +143,8 @@ TEST_CASE("an impulse updates the contact velocity and desired delta v of contac
     CHECK(other.contact == 1);
     // Independent check: the second contact point's normal velocity on the bodies after the first impulse.
     RigidBody after = bodies[0];
-    after.velocity += *first.resolution->velocity_change.velocity_change[0];
-    after.angular_velocity += *first.resolution->velocity_change.rotation_change[0];
+    after.velocity += *first.resolution->velocity_change_terms.velocity_change[0];
+    after.angular_velocity += *first.resolution->velocity_change_terms.rotation_change[0];
     CHECK_CLOSE(other.after.x(), point_velocity(after, contacts[1].point).y());
     CHECK_CLOSE(other.desired_delta_velocity_after, -other.after.x());  // c = 0
 }

@@ -94,9 +94,8 @@ TEST_CASE("an isolated frictionless sphere hitting the ground at 2 m/s with rest
     CHECK(summary.velocity.iterations_used == 4 * 3 + 1);
     const VelocityIteration& last = trace.frames.at(0).velocity.iterations.back();
     CHECK(last.sweep->stage == SolverStage::restitution);
-    CHECK(last.resolution->impulse.model == ImpulseModel::frictionless);
-    CHECK_CLOSE(last.resolution->contact_velocity.x() + last.resolution->desired_delta_velocity.desired_delta_velocity,
-                1.0);
+    CHECK(last.resolution->impulse_terms.impulse_model == ImpulseModel::frictionless);
+    CHECK_CLOSE(last.resolution->contact_velocity.x() + last.resolution->desired_terms.desired_delta_velocity, 1.0);
 }
 
 TEST_CASE("a separated contact pushes nothing and only stops a closing faster than its gap allows") {

@@ -31,8 +31,8 @@ Figure resolve_figure() {
 
 // The share of the separating response that comes from turning: angular / (linear + angular) along n.
 double rotation_share(const ContactPreparation& d) {
-    const UnitImpulseResponse& r = *d.velocity_per_unit_impulse.bodies[0];
-    return r.angular_component / d.velocity_per_unit_impulse.delta_velocity_per_unit_impulse;
+    const UnitImpulseResponse& r = *d.unit_impulse_chain.bodies[0];
+    return r.angular_component / d.unit_impulse_chain.delta_velocity_per_unit_impulse;
 }
 
 }  // namespace

@@ -247,7 +247,7 @@ TEST_CASE("docs/trace-format.md lists the words as the word list has them") {
     }
     REQUIRE(committed.find(io::trace_docs_begin) != std::string::npos);
     CHECK_MESSAGE(generated == committed,
-                  "docs/trace-format.md's word tables differ from engine/record/words.cpp; regenerate them with "
+                  "docs/trace-format.md's word tables differ from engine/record/word_table.hpp; regenerate them with "
                   "IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*'");
 }
 

@@ -98,8 +98,7 @@ TEST_CASE("contact rows in the preparation and at the first phase's iteration 0 
                 CHECK(rows[i].contact == frame.contacts[i].contact);
                 CHECK(rows[i].prepared == &frame.contacts[i]);
                 CHECK(rows[i].penetration == frame.contacts[i].penetration);
-                CHECK(rows[i].desired_delta_velocity ==
-                      frame.contacts[i].desired_delta_velocity.desired_delta_velocity);
+                CHECK(rows[i].desired_delta_velocity == frame.contacts[i].desired_terms.desired_delta_velocity);
                 CHECK(rows[i].impulse_so_far == Vec3::Zero());
             }
         }
@@ -166,8 +165,9 @@ TEST_CASE("the impulse so far sums the impulses of the velocity iterations befor
     REQUIRE(its[0].contact == 0);
     REQUIRE(its[2].contact == 0);
     REQUIRE(its[4].contact == 0);
-    const Vec3 expected = its[0].resolution->impulse.impulse_world + its[2].resolution->impulse.impulse_world +
-                          its[4].resolution->impulse.impulse_world;
+    const Vec3 expected = its[0].resolution->impulse_terms.impulse_world +
+                          its[2].resolution->impulse_terms.impulse_world +
+                          its[4].resolution->impulse_terms.impulse_world;
     CHECK(row_for(contact_rows(trace, {0, Stage::velocity, 5, 0}), 0).impulse_so_far == expected);
     // Contact 2 was never chosen.
     CHECK(row_for(contact_rows(trace, {0, Stage::velocity, 6, 0}), 2).impulse_so_far == Vec3::Zero());

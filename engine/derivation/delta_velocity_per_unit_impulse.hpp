@@ -15,20 +15,20 @@ struct MassProperties {
 };
 
 struct UnitImpulseResponse {
-    Vec3 torque_per_unit_impulse;    // u = q_rel x n  (14.2)
-    Vec3 rotation_per_unit_impulse;  // I^-1 u  (14.1): change of angular velocity
-    Vec3 velocity_per_unit_impulse;  // (I^-1 u) x q_rel  (9.5): velocity of the contact point from that rotation
-    double angular_component;        // velocity_per_unit_impulse . n
-    double linear_component;         // m^-1
+    Vec3 torque_per_unit_impulse;          // u = q_rel x n  (14.2)
+    Vec3 rotation_per_unit_impulse;        // I^-1 u  (14.1): change of angular velocity
+    Vec3 point_velocity_per_unit_impulse;  // (I^-1 u) x q_rel  (9.5): velocity of the contact point from that rotation
+    double angular_component;              // point_velocity_per_unit_impulse . n
+    double linear_component;               // m^-1
 
     bool operator==(const UnitImpulseResponse&) const = default;
 };
 
-struct VelocityPerUnitImpulse {
+struct UnitImpulseChain {
     PerBody<UnitImpulseResponse> bodies;
     double delta_velocity_per_unit_impulse;  // d = sum over bodies of (linear + angular component)
 
-    bool operator==(const VelocityPerUnitImpulse&) const = default;
+    bool operator==(const UnitImpulseChain&) const = default;
 };
 
 // The chain for one body. Body 1 receives -n, which negates u, I^-1 u and the point velocity; its point
@@ -37,7 +37,7 @@ struct VelocityPerUnitImpulse {
 UnitImpulseResponse unit_impulse_response(const Vec3& normal, const Vec3& relative_position,
                                           const MassProperties& mass);
 
-VelocityPerUnitImpulse velocity_per_unit_impulse(const Vec3& normal, const PerBody<Vec3>& relative_position,
+UnitImpulseChain delta_velocity_per_unit_impulse(const Vec3& normal, const PerBody<Vec3>& relative_position,
                                                  const PerBody<MassProperties>& mass);
 
 }  // namespace impulse

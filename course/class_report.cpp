@@ -6,7 +6,6 @@
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -97,26 +96,6 @@ std::vector<std::string> summary_cells(const ClassRow& row) {
             first_words(*row.report)};
 }
 
-std::string aligned_rows(const std::vector<std::vector<std::string>>& rows) {
-    std::vector<std::size_t> widths;
-    for (const auto& row : rows)
-        for (std::size_t i = 0; i < row.size(); ++i) {
-            if (widths.size() <= i) widths.push_back(0);
-            widths[i] = std::max(widths[i], explain::display_width(row[i]));
-        }
-    std::string text;
-    for (const auto& row : rows) {
-        std::string line;
-        for (std::size_t i = 0; i < row.size(); ++i) {
-            line += row[i];
-            if (i + 1 < row.size()) line += std::string(widths[i] - explain::display_width(row[i]) + 2, ' ');
-        }
-        while (!line.empty() && line.back() == ' ') line.pop_back();
-        text += line + '\n';
-    }
-    return text;
-}
-
 }  // namespace
 
 std::string summary_text(const std::vector<ClassRow>& rows, const ClassSubject& subject, std::size_t per_file) {
@@ -133,7 +112,7 @@ std::string summary_text(const std::vector<ClassRow>& rows, const ClassSubject& 
         else
             ++(row.report->all_match() ? perfect : imperfect);
     }
-    text += aligned_rows(table);
+    text += explain::aligned_columns(table);
     // What each file got wrong, as its worksheet names it.
     for (const ClassRow& row : rows) {
         if (!row.report || row.report->findings.empty()) continue;

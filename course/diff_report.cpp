@@ -47,27 +47,6 @@ std::string tolerance_text(const Tolerance& t) {
            "·|expected|";
 }
 
-// Columns padded to their widest cell (in terminal columns), the last one left ragged.
-std::string aligned(const std::vector<std::vector<std::string>>& rows, std::string_view indent) {
-    std::vector<std::size_t> widths;
-    for (const auto& row : rows)
-        for (std::size_t i = 0; i < row.size(); ++i) {
-            if (widths.size() <= i) widths.push_back(0);
-            widths[i] = std::max(widths[i], explain::display_width(row[i]));
-        }
-    std::string text;
-    for (const auto& row : rows) {
-        std::string line(indent);
-        for (std::size_t i = 0; i < row.size(); ++i) {
-            line += row[i];
-            if (i + 1 < row.size()) line += std::string(widths[i] - explain::display_width(row[i]) + 2, ' ');
-        }
-        while (!line.empty() && line.back() == ' ') line.pop_back();
-        text += line + '\n';
-    }
-    return text;
-}
-
 }  // namespace
 
 std::string shown_value(const io::json& value, const Tolerance& tolerance) {
@@ -109,7 +88,7 @@ std::string findings_table(const std::vector<Finding>& findings, std::size_t lim
         places.push_back(f.place);
     }
     // One line per row, under a line naming the place (the worksheet's step) whenever it changes.
-    const std::string table = aligned(rows, "");
+    const std::string table = explain::aligned_columns(rows);
     std::string text;
     std::size_t row = 0, start = 0;
     for (std::size_t end = table.find('\n'); end != std::string::npos; start = end + 1, end = table.find('\n', start)) {

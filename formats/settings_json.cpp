@@ -61,18 +61,18 @@ void apply_fields(Scene& scene, const json& object, std::string_view path) {
     }
     if (has("position_epsilon")) s.position_epsilon = object["position_epsilon"].get<double>();
     if (has("velocity_epsilon")) s.velocity_epsilon = object["velocity_epsilon"].get<double>();
-    if (has("iterations_per_contact")) s.iterations.per_contact = object["iterations_per_contact"].get<int>();
+    if (has("iterations_per_contact")) s.iterations_per_contact = object["iterations_per_contact"].get<int>();
     const auto fixed_limit = [&object](const char* key) -> std::optional<int> {
         const json& v = object[key];
         return v.is_null() ? std::nullopt : std::optional<int>(v.get<int>());
     };
-    if (has("position_iterations")) s.iterations.position = fixed_limit("position_iterations");
-    if (has("velocity_iterations")) s.iterations.velocity = fixed_limit("velocity_iterations");
-    if (has("restitution_cutoff")) s.refinements.restitution_cutoff = object["restitution_cutoff"].get<double>();
+    if (has("position_iterations")) s.position_iterations = fixed_limit("position_iterations");
+    if (has("velocity_iterations")) s.velocity_iterations = fixed_limit("velocity_iterations");
+    if (has("restitution_cutoff")) s.restitution_cutoff = object["restitution_cutoff"].get<double>();
     if (has("velocity_from_acceleration"))
-        s.refinements.velocity_from_acceleration = object["velocity_from_acceleration"].get<bool>();
+        s.velocity_from_acceleration = object["velocity_from_acceleration"].get<bool>();
     if (has("tangential_acceleration_velocity"))
-        s.refinements.tangential_acceleration_velocity = object["tangential_acceleration_velocity"].get<bool>();
+        s.tangential_acceleration_velocity = object["tangential_acceleration_velocity"].get<bool>();
     if (has("orientation_update"))
         s.orientation_update = read_enum(orientation_update_names, object["orientation_update"]);
     if (has("duration")) s.duration = object["duration"].get<double>();
@@ -116,12 +116,12 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
         {"relaxation", {{"fraction", s.relaxation.fraction}, {"passes", s.relaxation.passes}}},
         {"position_epsilon", s.position_epsilon},
         {"velocity_epsilon", s.velocity_epsilon},
-        {"iterations_per_contact", s.iterations.per_contact},
-        {"position_iterations", fixed_limit(s.iterations.position)},
-        {"velocity_iterations", fixed_limit(s.iterations.velocity)},
-        {"restitution_cutoff", s.refinements.restitution_cutoff},
-        {"velocity_from_acceleration", s.refinements.velocity_from_acceleration},
-        {"tangential_acceleration_velocity", s.refinements.tangential_acceleration_velocity},
+        {"iterations_per_contact", s.iterations_per_contact},
+        {"position_iterations", fixed_limit(s.position_iterations)},
+        {"velocity_iterations", fixed_limit(s.velocity_iterations)},
+        {"restitution_cutoff", s.restitution_cutoff},
+        {"velocity_from_acceleration", s.velocity_from_acceleration},
+        {"tangential_acceleration_velocity", s.tangential_acceleration_velocity},
         {"orientation_update", name_of(orientation_update_names, s.orientation_update)},
         {"duration", s.duration},
         {"frames", world.frames},

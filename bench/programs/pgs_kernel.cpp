@@ -17,6 +17,7 @@
 // / (active contacts x sweeps run), the production sweeps counted from a recorded run. Both must end with the same
 // velocities to rounding; the largest difference is printed.
 
+#include "command_line.hpp"
 #include "formats/input_error.hpp"
 #include "formats/scene_file.hpp"
 #include "formats/settings_json.hpp"
@@ -27,8 +28,6 @@
 #include "body/integrate.hpp"
 #include "world/world.hpp"
 
-#include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -36,6 +35,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -253,11 +253,7 @@ int main(int argc, char** argv) {
     app.add_option("--sweeps", sweeps, "sweeps (N)")->check(CLI::Range(1, 1000));
     app.add_option("--repeats", repeats, "Runs; the median is printed")->check(CLI::Range(1, 1000));
     app.add_option("--min-seconds", min_seconds, "Least time per run")->check(CLI::Range(0.0, 10.0));
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
-        return app.exit(e);
-    }
+    if (const std::optional<int> exit = bench::parse_command_line(app, argc, argv)) return *exit;
     Scene scene;
     try {
         scene = load(scene_path);

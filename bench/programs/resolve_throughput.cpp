@@ -13,21 +13,18 @@
 // The CSV (RFC 4180) is written atomically when the run is done; --csv - puts it on standard output and the table
 // on standard error.
 
+#include "command_line.hpp"
 #include "explain/csv.hpp"
-#include "formats/atomic_file.hpp"
-#include "formats/input_error.hpp"
 #include "record/trace_recorder.hpp"
 #include "preparation/prepared_contact.hpp"
 #include "resolver/resolver.hpp"
-
-#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <iostream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -96,30 +93,16 @@ int main(int argc, char** argv) {
     double friction = 0.5;
     int repeats = 15;
     double min_seconds = 0.2;
-    std::string csv;
     app.add_option("--boxes", boxes, "Box counts (4 contacts each)")->delimiter(',')->check(CLI::PositiveNumber);
     app.add_option("--friction", friction, "Friction of every contact (0 = frictionless impulses)")
         ->check(CLI::NonNegativeNumber);
     app.add_option("--repeats", repeats, "Runs per figure; the median is reported")->check(CLI::Range(1, 1000));
     app.add_option("--min-seconds", min_seconds, "Least time per run")->check(CLI::Range(0.0, 60.0));
-    app.add_option("--csv", csv, "Also write the figures as CSV");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "impulse-bench-resolve: " << e.what() << " (see impulse-bench-resolve --help)\n";
-        return 2;
-    }
+    const bench::CsvOutput csv(app);
+    if (const std::optional<int> exit = bench::parse_command_line(app, argc, argv)) return *exit;
     // The CSV is checked before the run and written whole after it; on standard output, the table moves to stderr.
-    const bool csv_to_stdout = csv == "-";
-    try {
-        if (!csv.empty() && !csv_to_stdout) io::check_writable(csv, "--csv");
-    } catch (const io::InputError& e) {
-        std::cerr << "impulse-bench-resolve: " << e.what() << '\n';
-        return 2;
-    }
-    std::FILE* table = csv_to_stdout ? stderr : stdout;
+    if (!csv.check()) return 2;
+    std::FILE* table = csv.table();
 
     const ResolverSettings settings = *preset("book");
     std::fprintf(table, "%6s %9s %11s %13s %13s %8s %18s\n", "boxes", "contacts", "iterations", "off ns/contact",
@@ -161,15 +144,5 @@ int main(int argc, char** argv) {
                                   std::to_string(iterations), cell(friction), cell(off / contacts * 1e9),
                                   cell(on / contacts * 1e9), cell(on / off), cell(prepare / contacts * 1e9)});
     }
-    if (csv_to_stdout) {
-        std::cout << rows << std::flush;
-    } else if (!csv.empty()) {
-        try {
-            io::write_file_atomically(csv, rows, "--csv");
-        } catch (const io::InputError& e) {
-            std::cerr << "impulse-bench-resolve: " << e.what() << '\n';
-            return 2;
-        }
-    }
-    return 0;
+    return csv.write(rows) ? 0 : 2;
 }

@@ -9,20 +9,19 @@
 // reported time per frame is the median over repeats of each repeat's mean. Drift comes from the first repeat
 // (every repeat is identical: runs are deterministic).
 
+#include "command_line.hpp"
 #include "model/input_files.hpp"
 #include "explain/csv.hpp"
-#include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 #include "formats/scene_file.hpp"
 #include "formats/settings_json.hpp"
 #include "world/world.hpp"
 
-#include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 using namespace impulse;
@@ -76,30 +75,16 @@ int main(int argc, char** argv) {
     std::vector<std::string> scenes, settings;
     std::optional<int> frames;
     int repeats = 3;
-    std::string csv;
     app.add_option("SCENE", scenes, "Scene files (- for standard input)")->required();
     app.add_option("--frames", frames, "Frames per run (default: each scene's settings.frames)")
         ->check(CLI::Range(1, 1000000));
     app.add_option("--repeats", repeats, "Runs per scene; the median time is reported")->check(CLI::Range(1, 100));
     app.add_option("--set", settings, "Change one setting in every scene, e.g. --set iterations_per_contact=100");
-    app.add_option("--csv", csv, "Also write the figures as CSV");
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        std::cerr << "impulse-bench-world: " << e.what() << " (see impulse-bench-world --help)\n";
-        return 2;
-    }
+    const bench::CsvOutput csv(app);
+    if (const std::optional<int> exit = bench::parse_command_line(app, argc, argv)) return *exit;
     // The CSV is checked before the runs and written whole after them; on standard output, the table moves to stderr.
-    const bool csv_to_stdout = csv == "-";
-    try {
-        if (!csv.empty() && !csv_to_stdout) io::check_writable(csv, "--csv");
-    } catch (const io::InputError& e) {
-        std::cerr << "impulse-bench-world: " << e.what() << '\n';
-        return 2;
-    }
-    std::FILE* table = csv_to_stdout ? stderr : stdout;
+    if (!csv.check()) return 2;
+    std::FILE* table = csv.table();
 
     std::string rows = explain::csv_row({"scene", "bodies", "frames", "contacts_per_frame", "pairs_per_frame",
                                          "ms_per_frame", "integrate_ms", "broad_phase_ms", "pair_tests_ms",
@@ -138,15 +123,5 @@ int main(int argc, char** argv) {
                                   cell(median.stage_ms.resolve), std::to_string(first.limited_frames),
                                   cell(first.drift_end_mm), cell(first.drift_most_mm)});
     }
-    if (csv_to_stdout) {
-        std::cout << rows << std::flush;
-    } else if (!csv.empty()) {
-        try {
-            io::write_file_atomically(csv, rows, "--csv");
-        } catch (const io::InputError& e) {
-            std::cerr << "impulse-bench-world: " << e.what() << '\n';
-            return 2;
-        }
-    }
-    return 0;
+    return csv.write(rows) ? 0 : 2;
 }

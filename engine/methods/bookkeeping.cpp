@@ -63,6 +63,7 @@ template <typename Indices>
 void update_contact_velocities_of(std::vector<PreparedContact>& contacts, const Indices& candidates,
                                   const std::array<int, 2>& moved, const VelocityChange& change,
                                   const ResolverSettings& settings, std::vector<VelocityUpdate>* log) {
+    const VelocityRefinements refinements = velocity_refinements(settings);
     for_each_contact_sharing(contacts, candidates, moved, [&](PreparedContact& other, int slot, int m) {
         const ContactPreparation& d = other.derivation;
         // The velocity change of this contact's point on the changed body (9.5), in its contact
@@ -80,7 +81,7 @@ void update_contact_velocities_of(std::vector<PreparedContact>& contacts, const 
         const DesiredDeltaVelocity& step5 = other.desired_terms;
         other.desired_terms =
             desired_delta_velocity(other.contact_velocity.x(), step5.restitution, step5.velocity_from_acceleration,
-                                   settings.refinements, step5.position_bias);
+                                   refinements, step5.position_bias);
         if (log)
             log->push_back({d.contact, moved[m], slot, delta, before, other.contact_velocity, desired_before,
                             other.desired_terms.desired_delta_velocity});

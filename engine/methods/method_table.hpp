@@ -69,7 +69,7 @@ inline constexpr std::array<MethodRow<VelocityMethod>, 4> velocity_methods{{
     {VelocityMethod::worst_first, "worst_first", MethodScope::velocity_phase, worst_first_velocities,
      method_reads::worst_first,
      "the book: resolve the contact with the largest desired delta v, update the others, repeat",
-     "iterations_per_contact", [](ResolverSettings& s, int n) { s.iterations.per_contact = n; }},
+     "iterations_per_contact", [](ResolverSettings& s, int n) { s.iterations_per_contact = n; }},
     {VelocityMethod::sequential_sweep, "sequential_sweep", MethodScope::velocity_phase, sequential_sweep_velocities,
      method_reads::sequential_sweep, "the book's impulse on every contact in index order, `sweeps` times", "sweeps",
      [](ResolverSettings& s, int n) { s.sweeps = n; }},

@@ -21,8 +21,8 @@
 // only the first is warm started: the memory keeps the first one's total.
 //
 // The sweeps stop early when no visit of a whole sweep changed its own contact's velocity by more than the
-// velocity epsilon, |K (lambda_after - lambda_before)| (a norm: no basis decides it); settings.iterations does
-// not apply.
+// velocity epsilon, |K (lambda_after - lambda_before)| (a norm: no basis decides it); iterations_per_contact
+// and velocity_iterations do not apply.
 //
 // Recorded per visit (and per warm start, stage warm_start), only when the recorder keeps iterations (the loop
 // is compiled twice from one template, the same arithmetic both ways): a VelocityIteration with sweep
@@ -66,7 +66,7 @@ public:
             if (d.inert) continue;  // nothing can move it: no visits
             ContactRow& row = rows_.emplace_back();
             fill_contact_row(row, i, c, bodies_.data());
-            if (frame.settings.refinements.tangential_acceleration_velocity)
+            if (frame.settings.tangential_acceleration_velocity)
                 for (int b = 0; b < 2; ++b)
                     if (const auto& term = d.velocity_terms.tangential_acceleration_velocity[b]) {
                         row.slip_offset[0] += body_sign(b) * term->y();

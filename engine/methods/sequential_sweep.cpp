@@ -12,7 +12,8 @@
 // too large (projected Gauss-Seidel can: methods/projected_gauss_seidel.cpp).
 //
 // Recorded: one VelocityIteration per visit with sweep = {0, pass, solve}, the book's derivation values and
-// the bookkeeping updates; the iteration limit is sweeps x contacts (settings.iterations does not apply).
+// the bookkeeping updates; the iteration limit is sweeps x contacts (iterations_per_contact and
+// velocity_iterations do not apply).
 
 #include "methods/solver_common.hpp"
 #include "methods/bookkeeping.hpp"

@@ -56,7 +56,7 @@ public:
         }
         moved_.assign(frame.bodies.size(), Vec3::Zero());
         turned_.assign(frame.bodies.size(), Mat3::Identity());
-        const double cutoff = settings_.refinements.restitution_cutoff;
+        const double cutoff = settings_.restitution_cutoff;
         rows_.reserve(frame.contacts.size());
         soft_.reserve(frame.contacts.size());
         active_.reserve(frame.contacts.size());
@@ -242,7 +242,7 @@ private:
         resolution.contact_velocity = vector_of(aim.contact_velocity);
         resolution.desired_terms = {.separating_velocity = aim.contact_velocity.n,
                                     .restitution = d.restitution,
-                                    .restitution_cutoff = settings_.refinements.restitution_cutoff,
+                                    .restitution_cutoff = settings_.restitution_cutoff,
                                     .restitution_cutoff_applied = d.restitution != 0.0 && !soft_[r].bounces,
                                     .restitution_used = bouncing ? d.restitution : 0.0,
                                     .velocity_from_acceleration_applied = false,

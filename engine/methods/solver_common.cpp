@@ -39,7 +39,7 @@ Vec3 current_contact_velocity(const PreparedContact& contact, std::span<const Ri
         motion[i] = BodyMotion{body.velocity, body.angular_velocity, body.last_frame_acceleration};
     }
     return contact_velocity(d.basis, d.relative_position, motion, settings.duration,
-                            settings.refinements.tangential_acceleration_velocity)
+                            settings.tangential_acceleration_velocity)
         .contact_velocity;
 }
 

@@ -61,15 +61,15 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
     const Basis contact_basis = basis(normal);
     const PerBody<Vec3> q_rel = relative_position(contact.point, {centre(0), centre(1)});
     const UnitImpulseChain chain = delta_velocity_per_unit_impulse(normal, q_rel, body_mass);
-    const ContactVelocityTerms velocity = contact_velocity(contact_basis, q_rel, motion, settings.duration,
-                                                           settings.refinements.tangential_acceleration_velocity);
+    const ContactVelocityTerms velocity =
+        contact_velocity(contact_basis, q_rel, motion, settings.duration, settings.tangential_acceleration_velocity);
     const std::optional<double> bias =
         settings.baumgarte
             ? std::optional(position_bias(contact.penetration, settings.position_bias, settings.duration))
             : std::nullopt;
     const DesiredDeltaVelocity desired =
         desired_delta_velocity(velocity.contact_velocity.x(), contact.restitution, normal, motion, settings.duration,
-                               settings.refinements, bias);
+                               velocity_refinements(settings), bias);
 
     // Built in one piece, every member from its value: a PreparedContact declared first and filled in after
     // would first clear its half kilobyte of optional per-body values, then overwrite them.

@@ -6,11 +6,11 @@
 namespace impulse {
 
 int position_iteration_limit(const ResolverSettings& settings, int contact_count) {
-    return settings.iterations.position.value_or(settings.iterations.per_contact * contact_count);
+    return settings.position_iterations.value_or(settings.iterations_per_contact * contact_count);
 }
 
 int velocity_iteration_limit(const ResolverSettings& settings, int contact_count) {
-    return settings.iterations.velocity.value_or(settings.iterations.per_contact * contact_count);
+    return settings.velocity_iterations.value_or(settings.iterations_per_contact * contact_count);
 }
 
 namespace {
@@ -34,7 +34,9 @@ std::optional<ResolverSettings> preset(std::string_view name) {
         s.preset = "chapter";
         s.phase_order = PhaseOrder::velocities_first;
         s.angular_limit = {AngularLimitPolicy::fixed, default_angular_limit_factor(AngularLimitPolicy::fixed)};
-        s.refinements = {0.0, false, false};
+        s.restitution_cutoff = 0.0;
+        s.velocity_from_acceleration = false;
+        s.tangential_acceleration_velocity = false;
         return s;
     }
     s.preset = std::string(name);

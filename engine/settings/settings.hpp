@@ -72,14 +72,6 @@ struct RelaxationSettings {
     bool operator==(const RelaxationSettings&) const = default;
 };
 
-struct IterationLimits {
-    int per_contact = 4;          // limit = per_contact x number of contacts, when no fixed limit is set
-    std::optional<int> position;  // a fixed limit for the position phase
-    std::optional<int> velocity;  // a fixed limit for the velocity phase
-
-    bool operator==(const IterationLimits&) const = default;
-};
-
 struct ResolverSettings {
     std::string preset = "book";
     PhaseOrder phase_order = PhaseOrder::positions_first;
@@ -91,7 +83,11 @@ struct ResolverSettings {
     RelaxationSettings relaxation{};
     double position_epsilon = 0.01;  // m: penetrations at or below this are left alone
     double velocity_epsilon = 0.01;  // m/s: desired velocity changes at or below this are left alone
-    IterationLimits iterations{};
+    // A phase's iteration limit: iterations_per_contact x number of contacts, unless the phase's fixed limit is
+    // set (methods/method_table.hpp lists the methods that read them).
+    int iterations_per_contact = 4;
+    std::optional<int> position_iterations;  // a fixed limit for the position phase
+    std::optional<int> velocity_iterations;  // a fixed limit for the velocity phase
     int sweeps = 10;         // sequential_sweep, projected_gauss_seidel, soft_step (per sub-step), split_impulse
     bool warm_start = true;  // projected_gauss_seidel and soft_step: start from last frame's impulses
     // Baumgarte stabilisation: step 5 gains the term position_bias = factor max(penetration - slop, 0) / h
@@ -99,12 +95,24 @@ struct ResolverSettings {
     bool baumgarte = false;
     PositionBiasSettings position_bias{};
     SoftStepSettings soft_step{};
-    VelocityRefinements refinements{};
+    // The reference engine's chapter-15 refinements of steps 4 and 5 (velocity_refinements() below gives them to
+    // step 5). Contacts closing slower than restitution_cutoff (m/s) bounce with restitution 0, so resting
+    // contacts do not jitter; 0 switches the cut-off off. Reference engine: 0.25.
+    double restitution_cutoff = 0.25;
+    // Remove from the bounce the velocity that last frame's acceleration built up along the normal.
+    bool velocity_from_acceleration = true;
+    // Add the tangential part of last frame's acceleration to the contact velocity (step 4).
+    bool tangential_acceleration_velocity = true;
     OrientationUpdate orientation_update = OrientationUpdate::first_order;
     double duration = 1.0 / 60.0;  // s: the frame the contacts come from (for the acceleration terms)
 
     bool operator==(const ResolverSettings&) const = default;
 };
+
+// The refinements as step 5 takes them.
+inline VelocityRefinements velocity_refinements(const ResolverSettings& s) {
+    return {s.restitution_cutoff, s.velocity_from_acceleration, s.tangential_acceleration_velocity};
+}
 
 int position_iteration_limit(const ResolverSettings& settings, int contact_count);
 int velocity_iteration_limit(const ResolverSettings& settings, int contact_count);

@@ -1,11 +1,13 @@
 #pragma once
-// Step tables as aligned text for a terminal: columns quantity | value | formula | eq. | meaning, with
-// multi-line values (matrices) kept in their column.
+// Tables as aligned text for a terminal: the step tables (columns quantity | value | formula | eq. | meaning,
+// multi-line values (matrices) kept in their column), and plain rows of cells (the coursework reports).
 
 #include "explain/derivation_table.hpp"
 
 #include <ostream>
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace impulse::explain {
 
@@ -13,5 +15,9 @@ namespace impulse::explain {
 std::size_t display_width(std::string_view text);
 
 void write_table(std::ostream& out, const StepTable& table, std::string_view indent = "  ");
+
+// One line per row: every column but the last padded to its widest cell (in terminal columns) plus two spaces,
+// the last left ragged, trailing spaces dropped. Rows may have fewer cells than others.
+std::string aligned_columns(const std::vector<std::vector<std::string>>& rows);
 
 }  // namespace impulse::explain

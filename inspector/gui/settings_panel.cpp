@@ -61,7 +61,7 @@ void method_setting(inspect::Session& session, UiState& state, inspect::ActionHo
     if (key == "position_epsilon") number_field(session, state, host, "position ε (m)", name, s.position_epsilon);
     if (key == "velocity_epsilon") number_field(session, state, host, "velocity ε (m/s)", name, s.velocity_epsilon);
     if (key == "iterations_per_contact")
-        integer_field(session, state, host, "iterations/contact", name, s.iterations.per_contact);
+        integer_field(session, state, host, "iterations/contact", name, s.iterations_per_contact);
     if (key == "worst_first_search")
         enum_combo(session, state, host, "worst-first search", name, worst_first_search_names, s.worst_first_search);
     if (key == "sliding_friction")
@@ -134,8 +134,8 @@ void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHos
         if (key.starts_with("position_bias.") && !s.baumgarte && !position_biased) continue;
         method_setting(session, state, host, key, s);
     }
-    number_field(session, state, host, "restitution cut-off", "restitution_cutoff", s.refinements.restitution_cutoff);
-    bool from_acceleration = s.refinements.velocity_from_acceleration;
+    number_field(session, state, host, "restitution cut-off", "restitution_cutoff", s.restitution_cutoff);
+    bool from_acceleration = s.velocity_from_acceleration;
     if (ImGui::Checkbox("velocity from acceleration", &from_acceleration))
         set(session, state, host, "velocity_from_acceleration", from_acceleration ? "true" : "false");
     enum_combo(session, state, host, "orientation update", "orientation_update", orientation_update_names,

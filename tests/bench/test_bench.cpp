@@ -128,7 +128,7 @@ TEST_CASE(
     ResolverSettings book = *preset("book"), sweep = *preset("sweep"), pgs = *preset("pgs"),
                      split = *preset("pgs_split"), soft = *preset("soft_step");
     for (ResolverSettings* s : {&book, &sweep, &pgs, &split, &soft}) bench::set_iteration_count(*s, 7);
-    CHECK(book.iterations.per_contact == 7);
+    CHECK(book.iterations_per_contact == 7);
     CHECK(bench::iteration_setting(book) == "iterations_per_contact");
     CHECK(sweep.sweeps == 7);
     CHECK(pgs.sweeps == 7);
@@ -139,7 +139,9 @@ TEST_CASE(
     CHECK(bench::iteration_setting(soft) == "soft_step.substeps");
     // Nothing else changes: the other knobs keep their preset values.
     CHECK(book.sweeps == preset("book")->sweeps);
-    CHECK(pgs.iterations == preset("pgs")->iterations);
+    CHECK(pgs.iterations_per_contact == preset("pgs")->iterations_per_contact);
+    CHECK(pgs.position_iterations == preset("pgs")->position_iterations);
+    CHECK(pgs.velocity_iterations == preset("pgs")->velocity_iterations);
 }
 
 TEST_CASE("a sphere dropped with the book preset bounces with a restitution error near zero") {

@@ -129,7 +129,7 @@ TEST_CASE("relaxation removes half the penetration per pass and leaves the rest 
     ResolverSettings s = plain_settings();
     s.position_method = PositionMethod::relaxation;
     s.relaxation = {0.5, 4};
-    s.iterations.per_contact = 10;
+    s.iterations_per_contact = 10;
     Trace trace;
     TraceRecorder recorder(trace);
     resolve_contacts(bodies, std::vector{contact(0, world_body, {0, -0.32, 0}, {0, 1, 0}, 0.32)}, s, recorder);
@@ -153,7 +153,7 @@ TEST_CASE("relaxation shares the penetration among contacts that fight over one 
         ResolverSettings s = plain_settings();
         s.position_method = method;
         s.relaxation = {0.5, 8};
-        s.iterations.per_contact = 8;
+        s.iterations_per_contact = 8;
         const std::vector<Contact> contacts{contact(0, world_body, {-0.5, 0, 0}, {1, 0, 0}, 0.3),
                                             contact(0, world_body, {0.5, 0, 0}, {-1, 0, 0}, 0.2)};
         resolve_contacts(bodies, contacts, s);

@@ -28,7 +28,10 @@ constexpr double h = 1.0 / 60.0;
 
 ResolverSettings settings_of(std::string_view name) {
     ResolverSettings s = *preset(name);
-    s.refinements = {0.0, false, false};  // -c v_s exactly, no chapter-15 terms
+    // -c v_s exactly, no chapter-15 terms
+    s.restitution_cutoff = 0.0;
+    s.velocity_from_acceleration = false;
+    s.tangential_acceleration_velocity = false;
     return s;
 }
 

@@ -59,9 +59,9 @@ TEST_CASE("the book preset is the reference engine's configuration") {
     CHECK(s.velocity_epsilon == 0.01);
     CHECK(position_iteration_limit(s, 7) == 28);
     CHECK(velocity_iteration_limit(s, 7) == 28);
-    CHECK(s.refinements.restitution_cutoff == 0.25);
-    CHECK(s.refinements.velocity_from_acceleration);
-    CHECK(s.refinements.tangential_acceleration_velocity);
+    CHECK(s.restitution_cutoff == 0.25);
+    CHECK(s.velocity_from_acceleration);
+    CHECK(s.tangential_acceleration_velocity);
     CHECK(s.orientation_update == OrientationUpdate::first_order);
     CHECK_FALSE(preset("nonsense").has_value());
 }
@@ -88,7 +88,7 @@ TEST_CASE("a penetration equal to the epsilon is left alone: only values strictl
 
 TEST_CASE("the iteration limit stops a phase with work left, and the trace says so") {
     ResolverSettings s = plain_settings();
-    s.iterations.position = 1;
+    s.position_iterations = 1;
     const Run r = run(three_spheres(), three_ground_contacts(0.05, 0.2, 0.1), s);
     CHECK(r.trace.frames[0].position.outcome.iterations_used == 1);
     CHECK(r.trace.frames[0].position.outcome.iteration_limit == 1);
@@ -116,7 +116,7 @@ TEST_CASE("moving a body updates the penetration of every contact on it by the l
                                         contact(0, world_body, {1, -0.03, 0}, {0, 1, 0}, 0.03),
                                         contact(1, world_body, {5, -0.01, 0}, {0, 1, 0}, 0.01)};
     ResolverSettings s = plain_settings();
-    s.iterations.position = 1;
+    s.position_iterations = 1;
     const Run r = run(bodies, contacts, s);
     const PositionIteration& it = r.trace.frames[0].position.iterations[0];
     REQUIRE(it.contact == 0);

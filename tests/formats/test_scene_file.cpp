@@ -71,7 +71,7 @@ TEST_CASE("a case written out in full reads back to the same bodies, contacts an
     const Scene again = io::read_scene(io::scene_json(c, true));
     CHECK(again == c);
     CHECK(again.settings.angular_limit.factor == 45.0);
-    CHECK(again.settings.iterations.position == 7);
+    CHECK(again.settings.position_iterations == 7);
 }
 
 TEST_CASE("a scene needs only shapes and positions: every other value is a documented default") {

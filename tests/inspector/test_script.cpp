@@ -243,7 +243,7 @@ TEST_CASE("a changed setting keeps a prepared contact's place by its contact num
     Session s = opened("cases/three_objects");
     s.move_to({0, Stage::preparation, 2, 3});  // contact 2's contact_velocity
     s.set("restitution_cutoff=0.5", "set");
-    CHECK(s.settings().refinements.restitution_cutoff == 0.5);
+    CHECK(s.settings().restitution_cutoff == 0.5);
     CHECK(s.cursor() == Cursor{0, Stage::preparation, 2, 3});
     CHECK(contact_at(s.trace(), *s.cursor()) == 2);
 }

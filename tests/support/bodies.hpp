@@ -45,7 +45,9 @@ inline Contact contact(int body0, int body1, const Vec3& point, const Vec3& norm
 // The chapter's own derivation, without the reference engine's chapter-15 refinements.
 inline ResolverSettings plain_settings() {
     ResolverSettings s = *preset("book");
-    s.refinements = {0.0, false, false};
+    s.restitution_cutoff = 0.0;
+    s.velocity_from_acceleration = false;
+    s.tangential_acceleration_velocity = false;
     return s;
 }
 

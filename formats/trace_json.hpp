@@ -5,6 +5,7 @@
 // for one value.
 
 #include "formats/json_values.hpp"
+#include "formats/trace_format1.hpp"
 #include "record/trace.hpp"
 
 #include <optional>
@@ -22,14 +23,6 @@ json trace_json(const Trace& trace);
 json item_json(const ContactPreparation& contact);
 json item_json(const PositionIteration& iteration);
 json item_json(const VelocityIteration& iteration);
-
-// Format 1 (the keys before the word list renamed them: docs/trace-format.md) read as the current format:
-// moves each renamed key of every item to its word's path and sets the version. Returns the version the
-// document was written in when it was upgraded, nothing for a current document (or one that is not a trace).
-std::optional<int> upgrade_trace_document(json& document);
-
-// The line a command prints when it read a format-1 file.
-std::string format1_note(std::string_view file);
 
 // Checks the schema, then reads (a format-1 document upgraded first: the trace's `version` says so); throws
 // InputError with the JSON path of the first problem.

@@ -99,6 +99,20 @@ Described describe_outside(const OutsideKey& key) {
     return {std::string(key.key), std::string(key.unit), std::string(key.formula), "", std::string(key.meaning)};
 }
 
+std::string step_key_of(const std::vector<PathToken>& path, std::size_t from) {
+    // Nested keys joined by '.', "[]" after updates and features; other indices (a body, a component) dropped.
+    std::string key;
+    for (std::size_t i = from; i < path.size(); ++i) {
+        if (const auto* k = std::get_if<std::string>(&path[i])) {
+            if (!key.empty()) key += '.';
+            key += *k;
+        } else if (key == "updates" || key.ends_with(".features")) {
+            key += "[]";
+        }
+    }
+    return key;
+}
+
 Described describe_path(const io::json& document, const std::vector<PathToken>& path) {
     const auto key_is = [&path](std::size_t i, std::string_view key) {
         const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
@@ -122,18 +136,7 @@ Described describe_path(const io::json& document, const std::vector<PathToken>& 
         rest = 6;
     }
     if (item && rest < path.size()) {
-        // The key pattern: nested keys joined by '.', "[]" after updates and features; other indices (a body,
-        // a component) dropped.
-        std::string key;
-        for (std::size_t i = rest; i < path.size(); ++i) {
-            if (const auto* k = std::get_if<std::string>(&path[i])) {
-                if (!key.empty()) key += '.';
-                key += *k;
-            } else if (key == "updates" || key.ends_with(".features")) {
-                key += "[]";
-            }
-        }
-        if (const StepKey* k = find_step_key(*item, key)) return describe_key(*k);
+        if (const StepKey* k = find_step_key(*item, step_key_of(path, rest))) return describe_key(*k);
     }
     // Elsewhere: the last key that is a vocabulary name.
     for (auto it = path.rbegin(); it != path.rend(); ++it)

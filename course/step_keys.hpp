@@ -8,12 +8,12 @@
 // checks over the shipped cases run with every method.
 
 #include "course/json_path.hpp"
-#include "course/json_path.hpp"
 #include "record/words.hpp"
 
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace impulse::coursework {
 
@@ -44,6 +44,10 @@ std::span<const StepKey> step_keys();
 // The entry for `key` (in the form of StepKey::key: nested keys joined by '.', "[]" after an array of
 // objects) of an item of `item`'s kind, or null.
 const StepKey* find_step_key(ItemKind item, std::string_view key);
+
+// The key, in that form, of the value at `path` inside an item whose own path ends before `from`
+// ("updates", 2, "after", 0 -> "updates[].after"; a body's or a component's index is dropped).
+std::string step_key_of(const std::vector<PathToken>& path, std::size_t from);
 
 // Values outside the item an iteration or contact needs, given as inputs: the bodies' state before the
 // frame's resolution and their mass properties, and for an iteration the chosen contact as prepared.

@@ -151,15 +151,7 @@ Wording word_path(const Trace& trace, const io::json& document, const std::vecto
     const ItemKind kind = c->stage == Stage::preparation ? ItemKind::contact
                           : c->stage == Stage::position  ? ItemKind::position_iteration
                                                          : ItemKind::velocity_iteration;
-    std::string key;
-    for (std::size_t i = rest; i < path.size(); ++i) {
-        if (const auto* k = std::get_if<std::string>(&path[i])) {
-            if (!key.empty()) key += '.';
-            key += *k;
-        } else if (key == "updates" || key.ends_with(".features")) {
-            key += "[]";
-        }
-    }
+    const std::string key = step_key_of(path, rest);
     const std::vector<std::string> order = step_order(trace, *c);
     const StepKey* step_key = find_step_key(kind, key);
     const auto at = step_key ? std::find(order.begin(), order.end(), std::string(step_key->step)) : order.end();

@@ -76,13 +76,6 @@ double median_seconds(const std::function<void()>& call, int repeats, double min
     return samples[static_cast<std::size_t>(repeats / 2)];
 }
 
-// A number as a CSV cell: as many digits as a stream prints by default.
-std::string cell(double value) {
-    std::ostringstream text;
-    text << value;
-    return text.str();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -141,8 +134,9 @@ int main(int argc, char** argv) {
         std::fprintf(table, "%6d %9zu %11d %13.0f %13.0f %8.2f %18.1f\n", count, scene.contacts.size(), iterations,
                      off / contacts * 1e9, on / contacts * 1e9, on / off, prepare / contacts * 1e9);
         rows += explain::csv_row({std::to_string(count), std::to_string(scene.contacts.size()),
-                                  std::to_string(iterations), cell(friction), cell(off / contacts * 1e9),
-                                  cell(on / contacts * 1e9), cell(on / off), cell(prepare / contacts * 1e9)});
+                                  std::to_string(iterations), bench::csv_cell(friction),
+                                  bench::csv_cell(off / contacts * 1e9), bench::csv_cell(on / contacts * 1e9),
+                                  bench::csv_cell(on / off), bench::csv_cell(prepare / contacts * 1e9)});
     }
     return csv.write(rows) ? 0 : 2;
 }

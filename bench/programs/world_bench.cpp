@@ -60,13 +60,6 @@ Figures simulate(const Scene& scene, int frames) {
     return f;
 }
 
-// A number as a CSV cell: as many digits as a stream prints by default.
-std::string cell(double value) {
-    std::ostringstream text;
-    text << value;
-    return text.str();
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -117,11 +110,12 @@ int main(int argc, char** argv) {
                      name.c_str(), scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms,
                      median.stage_ms.integrate, median.stage_ms.broad_phase, median.stage_ms.narrow_phase,
                      median.stage_ms.resolve, first.limited_frames, first.drift_end_mm, first.drift_most_mm);
-        rows += explain::csv_row({name, std::to_string(scene.bodies.size()), std::to_string(n), cell(first.contacts),
-                                  cell(first.pairs), cell(median.frame_ms), cell(median.stage_ms.integrate),
-                                  cell(median.stage_ms.broad_phase), cell(median.stage_ms.narrow_phase),
-                                  cell(median.stage_ms.resolve), std::to_string(first.limited_frames),
-                                  cell(first.drift_end_mm), cell(first.drift_most_mm)});
+        rows += explain::csv_row(
+            {name, std::to_string(scene.bodies.size()), std::to_string(n), bench::csv_cell(first.contacts),
+             bench::csv_cell(first.pairs), bench::csv_cell(median.frame_ms), bench::csv_cell(median.stage_ms.integrate),
+             bench::csv_cell(median.stage_ms.broad_phase), bench::csv_cell(median.stage_ms.narrow_phase),
+             bench::csv_cell(median.stage_ms.resolve), std::to_string(first.limited_frames),
+             bench::csv_cell(first.drift_end_mm), bench::csv_cell(first.drift_most_mm)});
     }
     return csv.write(rows) ? 0 : 2;
 }

@@ -10,13 +10,11 @@
 namespace impulse {
 
 struct VelocityRefinements {
-    // Contacts closing slower than this (m/s) bounce with restitution 0, so resting contacts do not
-    // jitter; 0 switches the cut-off off. Reference engine: 0.25.
-    double restitution_cutoff = 0.25;
-    // Remove from the bounce the velocity that last frame's acceleration built up along the normal.
-    bool velocity_from_acceleration = true;
-    // Add the tangential part of last frame's acceleration to the contact velocity (step 4).
-    bool tangential_acceleration_velocity = true;
+    // The reference engine's chapter-15 refinements as step 5 takes them; their defaults are the settings'
+    // (ResolverSettings, whose velocity_refinements() builds this).
+    double restitution_cutoff;        // m/s: closing slower bounces with restitution 0; 0 switches the cut-off off
+    bool velocity_from_acceleration;  // remove last frame's acceleration's velocity from the bounce
+    bool tangential_acceleration_velocity;  // add its tangential part to the contact velocity (step 4)
 
     bool operator==(const VelocityRefinements&) const = default;
 };

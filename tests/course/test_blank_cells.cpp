@@ -311,7 +311,7 @@ private:
     DesiredDeltaVelocity desired(const std::string& out, const std::string& settings_item, double separating,
                                  double restitution, const Vec3& normal, const io::json& bodies,
                                  const std::string& refinements_item) {
-        VelocityRefinements refinements;
+        VelocityRefinements refinements{};
         refinements.restitution_cutoff = number(at(refinements_item, "restitution_cutoff"));
         refinements.velocity_from_acceleration = k(at(settings_item, "velocity_from_acceleration_applied")).get<bool>();
         const DesiredDeltaVelocity d = desired_delta_velocity(separating, restitution, normal, accelerations(bodies),

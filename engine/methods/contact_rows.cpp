@@ -22,32 +22,6 @@ void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>
     }
 }
 
-void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse, double& x, double& y,
-                     double limit) {
-    const double wx = k[0] * x + k[1] * y, wy = k[1] * x + k[2] * y;  // w = K_tt free
-    const double inverse_limit = 1.0 / limit;
-    // (K + nu 1)^-1 at nu = 0 is K^-1; after that, its adjugate [[k22 + nu, -k12], [-k12, k11 + nu]] / det.
-    double m00 = k_inverse[0], m01 = k_inverse[1], m11 = k_inverse[2];
-    double nu = 0.0;
-    for (int step = 0; step < 16; ++step) {
-        const double size_squared = x * x + y * y;
-        const double size = std::sqrt(size_squared);
-        if (size <= limit * (1.0 + 1e-13)) break;
-        // Newton on phi = 1/|lambda| - 1/limit, dphi/dnu = lambda . (K + nu 1)^-1 lambda / |lambda|^3:
-        // nu += |lambda|^2 (|lambda| / limit - 1) / (lambda . (K + nu 1)^-1 lambda).
-        const double curvature = x * (m00 * x + m01 * y) + y * (m01 * x + m11 * y);
-        nu += size_squared * (size * inverse_limit - 1.0) / curvature;
-        const double a = k[0] + nu, b = k[1], c = k[2] + nu;
-        const double inverse_det = 1.0 / (a * c - b * b);
-        m00 = c * inverse_det, m01 = -b * inverse_det, m11 = a * inverse_det;
-        x = m00 * wx + m01 * wy;
-        y = m01 * wx + m11 * wy;
-    }
-    const double scale = limit / std::sqrt(x * x + y * y);  // exactly on the circle
-    x *= scale;
-    y *= scale;
-}
-
 void fill_contact_row(ContactRow& row, int index, const PreparedContact& contact, const SolverBody* bodies,
                       bool friction_rows) {
     const ContactPreparation& d = contact.derivation;

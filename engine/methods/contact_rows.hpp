@@ -181,8 +181,31 @@ IMPULSE_ROW_FUNCTION double normal_row(double total, double normal_velocity, dou
 // The point of the disc |lambda_t| <= limit nearest (x, y) in K_tt's metric, for (x, y) outside it (see the
 // header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt (x, y), Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
 // `k` is K_tt as (11, 12, 22), `k_inverse` its inverse. Returns the point in (x, y).
-void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse, double& x, double& y,
-                     double limit);
+IMPULSE_ROW_FUNCTION void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse,
+                                          double& x, double& y, double limit) {
+    const double wx = k[0] * x + k[1] * y, wy = k[1] * x + k[2] * y;  // w = K_tt free
+    const double inverse_limit = 1.0 / limit;
+    // (K + nu 1)^-1 at nu = 0 is K^-1; after that, its adjugate [[k22 + nu, -k12], [-k12, k11 + nu]] / det.
+    double m00 = k_inverse[0], m01 = k_inverse[1], m11 = k_inverse[2];
+    double nu = 0.0;
+    for (int step = 0; step < 16; ++step) {
+        const double size_squared = x * x + y * y;
+        const double size = std::sqrt(size_squared);
+        if (size <= limit * (1.0 + 1e-13)) break;
+        // Newton on phi = 1/|lambda| - 1/limit, dphi/dnu = lambda . (K + nu 1)^-1 lambda / |lambda|^3:
+        // nu += |lambda|^2 (|lambda| / limit - 1) / (lambda . (K + nu 1)^-1 lambda).
+        const double curvature = x * (m00 * x + m01 * y) + y * (m01 * x + m11 * y);
+        nu += size_squared * (size * inverse_limit - 1.0) / curvature;
+        const double a = k[0] + nu, b = k[1], c = k[2] + nu;
+        const double inverse_det = 1.0 / (a * c - b * b);
+        m00 = c * inverse_det, m01 = -b * inverse_det, m11 = a * inverse_det;
+        x = m00 * wx + m01 * wy;
+        y = m01 * wx + m11 * wy;
+    }
+    const double scale = limit / std::sqrt(x * x + y * y);  // exactly on the circle
+    x *= scale;
+    y *= scale;
+}
 
 // One visit's three rows, as plain numbers: the total before, unclamped and after, and the clamps that acted.
 struct RowVisit {
@@ -220,10 +243,7 @@ IMPULSE_ROW_FUNCTION bool friction_rows(const ContactRow& row, double s1, double
     if (limit <= 0.0) {
         x = y = 0.0;
     } else if (row.tangent_invertible) {
-        double px = x, py = y;  // (a copy whose address the out-of-line projection may take)
-        project_on_cone(row.tangent_response, row.tangent_mass, px, py, limit);
-        x = px;
-        y = py;
+        project_on_cone(row.tangent_response, row.tangent_mass, x, y, limit);
     } else {
         const double scale = limit / std::sqrt(x * x + y * y);
         x *= scale;

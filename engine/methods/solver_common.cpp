@@ -43,13 +43,4 @@ Vec3 current_contact_velocity(const PreparedContact& contact, std::span<const Ri
         .contact_velocity;
 }
 
-ContactKey contact_key(const ContactPreparation& contact) {
-    ContactKey key{contact.bodies, contact.origin};
-    if (contact.swapped) {
-        std::swap(key.bodies[0], key.bodies[1]);
-        std::swap(key.origin.features[0], key.origin.features[1]);
-    }
-    return key;
-}
-
 }  // namespace impulse

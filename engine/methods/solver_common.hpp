@@ -12,6 +12,7 @@
 
 #include <array>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace impulse {
@@ -31,6 +32,13 @@ Vec3 current_contact_velocity(const PreparedContact& contact, std::span<const Ri
                               const ResolverSettings& settings);
 
 // The key the contact had as detected (before preparation put the world second), for ContactMemory.
-ContactKey contact_key(const ContactPreparation& contact);
+inline ContactKey contact_key(const ContactPreparation& contact) {
+    ContactKey key{contact.bodies, contact.origin};
+    if (contact.swapped) {
+        std::swap(key.bodies[0], key.bodies[1]);
+        std::swap(key.origin.features[0], key.origin.features[1]);
+    }
+    return key;
+}
 
 }  // namespace impulse

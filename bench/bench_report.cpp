@@ -77,14 +77,8 @@ std::string format(const char* pattern, double value) {
     return text;
 }
 
-// Up to 9 significant digits; NaN as "NaN".
-std::string number(double value) {
-    if (std::isnan(value)) return "NaN";
-    return format("%.9g", value);
-}
-
 std::string optional_number(const std::optional<double>& value) {
-    return value ? number(*value) : "";
+    return value ? explain::csv_number(*value) : "";
 }
 
 nlohmann::ordered_json json_number(double value) {
@@ -163,28 +157,28 @@ std::string results_csv(const BenchRun& run) {
             r.scene,
             std::string(metric_name(spec.metric)),
             std::string(metric_unit(spec.metric)),
-            spec.verdict ? number(spec.target) : "",
+            spec.verdict ? explain::csv_number(spec.target) : "",
             r.method,
             std::to_string(r.n),
             r.iteration_setting,
             std::to_string(r.frames),
-            number(r.frames * r.duration),
-            number(r.contacts_per_frame),
-            number(r.time_per_step * 1e3),
+            explain::csv_number(r.frames * r.duration),
+            explain::csv_number(r.contacts_per_frame),
+            explain::csv_number(r.time_per_step * 1e3),
             std::to_string(r.timed_frames),
-            number(a.error),
+            explain::csv_number(a.error),
             a.meets_target ? "true" : "false",
             a.holds ? "true" : "false",
             explain::csv_field(a.failure),
             optional_number(a.failure_time),
-            number(a.end_penetration),
-            number(a.top_drift_end),
-            number(a.top_drift_most),
-            number(a.any_drift_most),
+            explain::csv_number(a.end_penetration),
+            explain::csv_number(a.top_drift_end),
+            explain::csv_number(a.top_drift_most),
+            explain::csv_number(a.any_drift_most),
             optional_number(a.collapse_time),
-            number(a.end_kinetic_energy),
-            number(a.jitter),
-            number(a.energy_gain),
+            explain::csv_number(a.end_kinetic_energy),
+            explain::csv_number(a.jitter),
+            explain::csv_number(a.energy_gain),
             optional_number(a.restitution_error),
             optional_number(a.momentum_error),
             a.nan_time ? "true" : "false",

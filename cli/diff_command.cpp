@@ -11,6 +11,7 @@
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
+#include "formats/trace_format1.hpp"
 #include "formats/trace_json.hpp"
 #include "course/lesson.hpp"
 #include "model/session.hpp"

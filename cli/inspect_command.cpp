@@ -1,5 +1,6 @@
 // `impulse-lab inspect FILE`: open a case, scene or trace in the inspector, in a window or headless.
 
+#include "formats/trace_format1.hpp"
 #include "formats/trace_json.hpp"
 #include "cli/commands.hpp"
 #include "model/input_files.hpp"

@@ -8,6 +8,7 @@
 #include "cli/outputs.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
+#include "formats/trace_format1.hpp"
 #include "formats/trace_json.hpp"
 #include "course/lesson.hpp"
 

@@ -9,7 +9,6 @@
 
 namespace impulse::io {
 
-// What the schema cannot say: every index in a frame must name a body of the scene or a contact of the frame.
 void check_references(const json& frame, const std::string& path, std::size_t bodies) {
     const std::size_t contacts = frame["contact_count"].get<std::size_t>();
     const auto in_range = [](const json& index, std::size_t count, const std::string& where, const char* what) {
@@ -59,8 +58,6 @@ void check_references(const json& frame, const std::string& path, std::size_t bo
         throw InputError(json_path_child(path, "phases"), "needs one position phase and one velocity phase");
 }
 
-// What the schema cannot say about a frame's values: the states and records describe real bodies and contacts,
-// so the replay and the scene view can trust them (a trace we write passes with room to spare).
 void check_frame_values(const FrameRecord& f, const std::string& path) {
     const auto check_states = [&path](const std::vector<BodyState>& states, const char* key) {
         for (std::size_t i = 0; i < states.size(); ++i)

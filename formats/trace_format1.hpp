@@ -1,5 +1,5 @@
 #pragma once
-// Trace format 1 (the keys before the word list renamed them: docs/trace-format.md) read as the current format.
+// Reading the traces written before the word list renamed their keys (docs/trace-format.md).
 
 #include "formats/json_values.hpp"
 

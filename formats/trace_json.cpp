@@ -1,6 +1,7 @@
 #include "formats/trace_json.hpp"
 
 #include "formats/trace_checks.hpp"
+#include "formats/trace_format1.hpp"
 
 #include "formats/scene_file.hpp"
 #include "formats/input_error.hpp"

@@ -5,7 +5,6 @@
 // for one value.
 
 #include "formats/json_values.hpp"
-#include "formats/trace_format1.hpp"
 #include "record/trace.hpp"
 
 #include <optional>

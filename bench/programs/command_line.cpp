@@ -4,15 +4,8 @@
 #include "formats/input_error.hpp"
 
 #include <iostream>
-#include <sstream>
 
 namespace impulse::bench {
-
-std::string csv_cell(double value) {
-    std::ostringstream text;
-    text << value;
-    return text.str();
-}
 
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv) {
     try {

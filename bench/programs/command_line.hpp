@@ -15,9 +15,6 @@ namespace impulse::bench {
 // one-line error ("impulse-bench-world: --repeats: ... (see impulse-bench-world --help)"); nothing to run on.
 std::optional<int> parse_command_line(CLI::App& app, int argc, char** argv);
 
-// A number as a CSV cell: as many digits as a stream prints by default.
-std::string csv_cell(double value);
-
 class CsvOutput {
 public:
     // Adds --csv to `app`, whose name prefixes the errors.

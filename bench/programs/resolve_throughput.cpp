@@ -134,9 +134,9 @@ int main(int argc, char** argv) {
         std::fprintf(table, "%6d %9zu %11d %13.0f %13.0f %8.2f %18.1f\n", count, scene.contacts.size(), iterations,
                      off / contacts * 1e9, on / contacts * 1e9, on / off, prepare / contacts * 1e9);
         rows += explain::csv_row({std::to_string(count), std::to_string(scene.contacts.size()),
-                                  std::to_string(iterations), bench::csv_cell(friction),
-                                  bench::csv_cell(off / contacts * 1e9), bench::csv_cell(on / contacts * 1e9),
-                                  bench::csv_cell(on / off), bench::csv_cell(prepare / contacts * 1e9)});
+                                  std::to_string(iterations), explain::csv_number(friction),
+                                  explain::csv_number(off / contacts * 1e9), explain::csv_number(on / contacts * 1e9),
+                                  explain::csv_number(on / off), explain::csv_number(prepare / contacts * 1e9)});
     }
     return csv.write(rows) ? 0 : 2;
 }

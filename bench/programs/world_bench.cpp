@@ -110,12 +110,13 @@ int main(int argc, char** argv) {
                      name.c_str(), scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms,
                      median.stage_ms.integrate, median.stage_ms.broad_phase, median.stage_ms.narrow_phase,
                      median.stage_ms.resolve, first.limited_frames, first.drift_end_mm, first.drift_most_mm);
-        rows += explain::csv_row(
-            {name, std::to_string(scene.bodies.size()), std::to_string(n), bench::csv_cell(first.contacts),
-             bench::csv_cell(first.pairs), bench::csv_cell(median.frame_ms), bench::csv_cell(median.stage_ms.integrate),
-             bench::csv_cell(median.stage_ms.broad_phase), bench::csv_cell(median.stage_ms.narrow_phase),
-             bench::csv_cell(median.stage_ms.resolve), std::to_string(first.limited_frames),
-             bench::csv_cell(first.drift_end_mm), bench::csv_cell(first.drift_most_mm)});
+        rows += explain::csv_row({name, std::to_string(scene.bodies.size()), std::to_string(n),
+                                  explain::csv_number(first.contacts), explain::csv_number(first.pairs),
+                                  explain::csv_number(median.frame_ms), explain::csv_number(median.stage_ms.integrate),
+                                  explain::csv_number(median.stage_ms.broad_phase),
+                                  explain::csv_number(median.stage_ms.narrow_phase),
+                                  explain::csv_number(median.stage_ms.resolve), std::to_string(first.limited_frames),
+                                  explain::csv_number(first.drift_end_mm), explain::csv_number(first.drift_most_mm)});
     }
     return csv.write(rows) ? 0 : 2;
 }

@@ -3,8 +3,6 @@
 #include "derivation/contact_velocity.hpp"
 #include "derivation/impulse.hpp"
 
-#include <utility>
-
 namespace impulse {
 
 VelocityResolution resolve_velocity(const PreparedContact& contact, SlidingFriction sliding) {

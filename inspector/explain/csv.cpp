@@ -3,6 +3,9 @@
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 
+#include <cmath>
+#include <cstdio>
+
 namespace impulse::explain {
 
 std::string csv_field(std::string_view text) {
@@ -13,6 +16,13 @@ std::string csv_field(std::string_view text) {
         quoted += c;
     }
     return quoted + '"';
+}
+
+std::string csv_number(double value) {
+    if (std::isnan(value)) return "NaN";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    return text;
 }
 
 std::string csv_row(const std::vector<std::string>& fields) {

@@ -11,6 +11,8 @@ namespace impulse::explain {
 
 // The field as written into a row: quoted only when it must be.
 std::string csv_field(std::string_view text);
+// A number as a cell: up to 9 significant digits (printf's %.9g), NaN as "NaN".
+std::string csv_number(double value);
 // The fields joined into one line, ending in '\n'.
 std::string csv_row(const std::vector<std::string>& fields);
 

@@ -6,6 +6,7 @@
 #include "formats/json_text.hpp"
 #include "formats/scene_file.hpp"
 #include "formats/trace_docs.hpp"
+#include "formats/trace_format1.hpp"
 #include "formats/trace_json.hpp"
 #include "record/trace_recorder.hpp"
 #include "record/words.hpp"

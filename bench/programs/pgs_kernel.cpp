@@ -179,7 +179,7 @@ void lean_setup(const std::vector<RigidBody>& rigid, const std::vector<PreparedC
         }
         c.normal_mass = row.normal_mass;
         c.normal_response = row.normal_response;
-        c.target = d.desired_terms.separating_velocity + d.desired_terms.desired_delta_velocity;
+        c.target = prepared_normal_velocity(d);
         c.friction = row.friction;
         for (int k = 0; k < 2; ++k) c.k_tn[k] = row.normal_to_tangent[static_cast<std::size_t>(k)];
         for (int k = 0; k < 3; ++k) {

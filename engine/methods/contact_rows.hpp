@@ -140,6 +140,12 @@ struct NormalTarget {
     double impulse_scale = 0.0;  // share of the total given back per visit (soft contact: > 0)
 };
 
+// The normal velocity a rigid row asks for all frame: step 5's desired delta v on top of the separating velocity
+// it was judged on, v_s + desired delta v (the bounce, and Baumgarte's term when it is on).
+inline double prepared_normal_velocity(const ContactPreparation& d) {
+    return d.desired_terms.separating_velocity + d.desired_terms.desired_delta_velocity;
+}
+
 // Body `slot`'s point velocity at the row's anchor, v + w x r (9.5), world, added to `out` with `sign`.
 IMPULSE_ROW_FUNCTION void add_point_velocity(const SolverBody& b, const Vec3& r, double sign, double* out) {
     const Vec3& v = b.velocity;

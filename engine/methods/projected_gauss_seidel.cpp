@@ -72,7 +72,7 @@ public:
                         row.slip_offset[0] += body_sign(b) * term->y();
                         row.slip_offset[1] += body_sign(b) * term->z();
                     }
-            targets_.push_back(d.desired_terms.separating_velocity + d.desired_terms.desired_delta_velocity);
+            targets_.push_back(prepared_normal_velocity(d));
             keys_.push_back(contact_key(d));
             active_.push_back(i);
         }

@@ -30,6 +30,11 @@ void box_and_sphere(const Box& box, const Placement& pa, int a, const Sphere& s,
                     std::vector<Contact>& out);
 void box_and_box(const Box& ba, const Placement& pa, int a, const Box& bb, const Placement& pb, int b,
                  std::vector<Contact>& out);
+// The same contacts from the separating-axis test as it is defined, every axis's exact overlap: what box_and_box's
+// screened test (it computes an exact overlap only where an estimate could decide otherwise) must agree with to
+// the bit, kept as the readable statement of the test and as the reference tests/engine compares against.
+void box_and_box_every_axis(const Box& ba, const Placement& pa, int a, const Box& bb, const Placement& pb, int b,
+                            std::vector<Contact>& out);
 
 // Any two shapes; for a box and a sphere the box is made body 0 whichever order they come in.
 void collide(const Shape& sa, const Placement& pa, int a, const Shape& sb, const Placement& pb, int b,

@@ -149,9 +149,9 @@ int lean_sweeps(std::vector<LeanBody>& bodies, std::vector<LeanContact>& contact
 }
 
 // The lean kernel's data, from the production rows (the same numbers), warm-start totals applied.
-void lean_setup(const std::vector<RigidBody>& rigid, const std::vector<PreparedContact>& prepared,
+void lean_setup(const std::vector<RigidBody>& rigid, std::span<const RowPreparation> prepared,
                 const ContactMemory& memory, std::vector<LeanBody>& bodies, std::vector<LeanContact>& contacts) {
-    const std::vector<SolverBody> solver = solver_bodies(rigid, mass_properties(rigid));
+    const std::pmr::vector<SolverBody> solver = solver_bodies(rigid, mass_properties(rigid));
     bodies.clear();
     for (const SolverBody& s : solver) {
         LeanBody b{};
@@ -162,14 +162,13 @@ void lean_setup(const std::vector<RigidBody>& rigid, const std::vector<PreparedC
         bodies.push_back(b);
     }
     std::vector<ContactRow> rows;
-    for (int i = 0; i < static_cast<int>(prepared.size()); ++i)
-        if (!prepared[static_cast<std::size_t>(i)].derivation.inert)
-            fill_contact_row(rows.emplace_back(), i, prepared[static_cast<std::size_t>(i)], solver.data());
-    RememberedTotals remembered(memory);
+    for (const RowPreparation& c : prepared)
+        if (!fill_contact_row(rows.emplace_back(), c, solver.data())) rows.pop_back();
+    RememberedTotals remembered(memory, std::pmr::new_delete_resource());
     contacts.clear();
     for (std::size_t r = 0; r < rows.size(); ++r) {
         const ContactRow& row = rows[r];
-        const ContactPreparation& d = prepared[static_cast<std::size_t>(row.contact)].derivation;
+        const RowPreparation& d = prepared[static_cast<std::size_t>(row.contact)];
         LeanContact c{};
         c.body0 = row.body[0];
         c.body1 = row.body[1];
@@ -179,7 +178,7 @@ void lean_setup(const std::vector<RigidBody>& rigid, const std::vector<PreparedC
         }
         c.normal_mass = row.normal_mass;
         c.normal_response = row.normal_response;
-        c.target = prepared_normal_velocity(d);
+        c.target = prepared_normal_velocity(*d.velocity);
         c.friction = row.friction;
         for (int k = 0; k < 2; ++k) c.k_tn[k] = row.normal_to_tangent[static_cast<std::size_t>(k)];
         for (int k = 0; k < 3; ++k) {
@@ -277,6 +276,9 @@ int main(int argc, char** argv) {
     const std::vector<Contact> contacts = detect_contacts(scene, bodies).contacts;
     const std::vector<MassProperties> mass = mass_properties(bodies);
     const std::vector<PreparedContact> prepared = prepare_contacts(contacts, bodies, mass, settings);
+    // What the resolver hands projected Gauss-Seidel when nothing records: the rows' values alone.
+    std::pmr::vector<RowPreparation> rows;
+    prepare_rows(contacts, bodies, settings, true, rows);
     int active = 0;
     for (const PreparedContact& c : prepared) active += !c.derivation.inert;
 
@@ -290,7 +292,7 @@ int main(int argc, char** argv) {
         kept = memory;
     };
     const auto production = [&](Recorder& recorder) {
-        FrameContext context{out, work, mass, settings, recorder, &kept, {}};
+        FrameContext context{out, work, rows, mass, settings, recorder, &kept, {}};
         return method_row(VelocityMethod::projected_gauss_seidel).solve(context);
     };
     Trace trace;
@@ -306,7 +308,7 @@ int main(int argc, char** argv) {
 
     std::vector<LeanBody> lean_bodies, lean_start;
     std::vector<LeanContact> lean_contacts, lean_contacts_start;
-    lean_setup(bodies, prepared, memory, lean_start, lean_contacts_start);
+    lean_setup(bodies, rows, memory, lean_start, lean_contacts_start);
     int lean_sweeps_run = 0;
 
     // Interleaved: each repeat times the preparation, the production phase and the lean kernel in turn, so a
@@ -315,15 +317,20 @@ int main(int argc, char** argv) {
     for (int r = 0; r < repeats; ++r) {
         prepare_samples.push_back(run_seconds([] {},
                                               [&] {
-                                                  const std::vector<PreparedContact> again = prepare_contacts(
-                                                      contacts, bodies, mass_properties(bodies), settings);
-                                                  if (again.size() != prepared.size()) std::abort();
+                                                  // What the resolver prepares when nothing records:
+                                                  // the bodies' mass, then the rows' values.
+                                                  const std::vector<MassProperties> again_mass =
+                                                      mass_properties(bodies);
+                                                  std::pmr::vector<RowPreparation> again;
+                                                  prepare_rows(contacts, bodies, settings, true, again);
+                                                  if (again.size() != rows.size() || again_mass.size() != bodies.size())
+                                                      std::abort();
                                               },
                                               min_seconds));
         production_samples.push_back(run_seconds(
             setup,
             [&] {
-                FrameContext context{out, work, mass, settings, nobody, &kept, {}};
+                FrameContext context{out, work, rows, mass, settings, nobody, &kept, {}};
                 timed_production(context);
             },
             min_seconds));
@@ -350,7 +357,7 @@ int main(int argc, char** argv) {
     const double lean_ns = lean_s * 1e9 / (double(active) * lean_sweeps_run);
     std::printf("scene %s, frame %d: %zu contacts (%d active), %zu bodies\n", scene_path.c_str(), frame,
                 prepared.size(), active, bodies.size());
-    std::printf("prepare (steps 1-5)         %8.3f ms  (%.1f ns per contact)\n", prepare_s * 1e3,
+    std::printf("prepare rows (steps 1-5)    %8.3f ms  (%.1f ns per contact)\n", prepare_s * 1e3,
                 prepare_s * 1e9 / double(prepared.size()));
     std::printf("production velocity phase   %8.3f ms  %d sweeps  %6.1f ns per contact-iteration\n", production_s * 1e3,
                 production_sweeps, production_ns);

@@ -47,6 +47,14 @@ std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key) const {
     }
 }
 
+std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key, std::ptrdiff_t hint) const {
+    if (hint >= 0 && static_cast<std::size_t>(hint) < entries_.size()) {
+        const auto at = static_cast<std::size_t>(hint);
+        if (keeps_key_[at] && same_key(entries_[at].first, key)) return hint;
+    }
+    return slot_of(key);
+}
+
 std::optional<Vec3> ContactMemory::recall(const ContactKey& key) const {
     const std::ptrdiff_t slot = slot_of(key);
     if (slot < 0) return std::nullopt;
@@ -58,19 +66,24 @@ void ContactMemory::remember(std::vector<std::pair<ContactKey, Vec3>> impulses) 
     std::size_t size = 16;
     while (size < 2 * entries_.size()) size *= 2;
     index_.assign(size, -1);
+    keeps_key_.assign(entries_.size(), 0);
     const std::size_t mask = size - 1;
     for (std::size_t e = 0; e < entries_.size(); ++e) {
         const ContactKey& key = entries_[e].first;
         std::size_t at = ContactKeyHash{}(key)&mask;
         while (index_[at] >= 0 && !same_key(entries_[static_cast<std::size_t>(index_[at])].first, key))
             at = (at + 1) & mask;
-        if (index_[at] < 0) index_[at] = static_cast<std::int32_t>(e);  // else the first with this key keeps it
+        if (index_[at] < 0) {  // else the first with this key keeps it
+            index_[at] = static_cast<std::int32_t>(e);
+            keeps_key_[e] = 1;
+        }
     }
 }
 
 void ContactMemory::clear() {
     entries_.clear();
     index_.clear();
+    keeps_key_.clear();
 }
 
 }  // namespace impulse

@@ -38,6 +38,10 @@ public:
     // The same as an index into what was remembered (below size()), or -1: a solver that must warm start each
     // remembered impulse once can mark the ones it took.
     std::ptrdiff_t slot_of(const ContactKey& key) const;
+    // The same, trying `hint` first: a solver that looks its contacts up in the order it remembered them (the
+    // detection's order, which changes little from frame to frame) passes the slot after the last one it found,
+    // and most lookups read the next entry instead of a scattered index slot and entry.
+    std::ptrdiff_t slot_of(const ContactKey& key, std::ptrdiff_t hint) const;
     const Vec3& impulse_at(std::ptrdiff_t slot) const { return entries_[static_cast<std::size_t>(slot)].second; }
 
     // Replaces what was remembered with this frame's totals. When two contacts share a key (explicit contacts
@@ -52,6 +56,7 @@ private:
     // empty): a frame's remembering writes 4 bytes per slot and allocates nothing once the index has grown.
     std::vector<std::pair<ContactKey, Vec3>> entries_;
     std::vector<std::int32_t> index_;
+    std::vector<char> keeps_key_;  // per entry: the first with its key, the one slot_of finds
 };
 
 }  // namespace impulse

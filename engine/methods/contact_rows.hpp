@@ -59,8 +59,10 @@
 #include "memory/contact_memory.hpp"
 #include "record/iteration_records.hpp"
 #include "preparation/prepared_contact.hpp"
+#include "preparation/row_preparation.hpp"
 
 #include <cmath>
+#include <memory_resource>
 #include <span>
 #include <type_traits>
 #include <vector>
@@ -96,8 +98,10 @@ struct SolverBody {
     Mat3 inverse_inertia = Mat3::Zero();   // I^-1, world axes, as prepared
 };
 
-// The solver's bodies for a frame: velocities from `bodies`, mass as the contacts were prepared with.
-std::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass);
+// The solver's bodies for a frame: velocities from `bodies`, mass as the contacts were prepared with (in `memory`:
+// the frame's scratch, FrameContext::scratch).
+std::pmr::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass,
+                                           std::pmr::memory_resource* memory = std::pmr::new_delete_resource());
 
 // Copies the solver's velocities back to the bodies.
 void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>& bodies);
@@ -112,14 +116,14 @@ IMPULSE_ROW_FUNCTION Vec3 times(const Mat3& m, const Vec3& v) {
 struct ContactRow {
     int contact = 0;                  // index in the prepared list
     std::array<int, 2> body{0, -1};   // solver bodies; -1 = the world (body 1 only)
+    bool tangent_invertible = false;  // K_tt is invertible (here, beside the ints: a row is read whole every visit)
     Vec3 normal;                      // contact x, world
     Vec3 tangent1;                    // contact y
     Vec3 tangent2;                    // contact z
     std::array<Vec3, 2> anchor;       // r_i: contact point minus body centre (step 2); zero for the world
-    double normal_mass = 0.0;         // 1 / d: impulse per unit change of normal velocity (step 3)
-    double normal_response = 0.0;     // d = K_nn: normal velocity per unit normal impulse
+    double normal_mass = 0.0;         // 1 / K_nn: impulse per unit change of normal velocity (step 3's 1 / d)
+    double normal_response = 0.0;     // K_nn (d up to rounding): normal velocity per unit normal impulse
     double friction = 0.0;            // mu
-    bool tangent_invertible = false;  // K_tt is invertible
     std::array<double, 2> normal_to_tangent{0.0, 0.0};      // K_tn: slip velocity per unit normal impulse
     std::array<double, 3> tangent_response{0.0, 0.0, 0.0};  // K_tt (11, 12, 22): slip per unit friction impulse
     std::array<double, 3> tangent_mass{0.0, 0.0, 0.0};      // K_tt^-1 (11, 12, 22) (its diagonal's inverse if singular)
@@ -129,8 +133,9 @@ struct ContactRow {
 
 // Fills `row` with the rows of a prepared contact, with its bodies' mass from `bodies` (K as
 // derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes) only the
-// normal row is filled. (In place: a row is 300 bytes, and a frame builds one per contact.)
-void fill_contact_row(ContactRow& row, int index, const PreparedContact& contact, const SolverBody* bodies,
+// normal row is filled. Returns whether an impulse can move the contact at all (K_nn > 0); a contact that cannot
+// is never visited. (In place: a row is 300 bytes, and a frame builds one per contact.)
+bool fill_contact_row(ContactRow& row, const RowPreparation& contact, const SolverBody* bodies,
                       bool friction_rows = true);
 
 // What the normal row aims for in one visit.
@@ -142,8 +147,8 @@ struct NormalTarget {
 
 // The normal velocity a rigid row asks for all frame: step 5's desired delta v on top of the separating velocity
 // it was judged on, v_s + desired delta v (the bounce, and Baumgarte's term when it is on).
-inline double prepared_normal_velocity(const ContactPreparation& d) {
-    return d.desired_terms.separating_velocity + d.desired_terms.desired_delta_velocity;
+inline double prepared_normal_velocity(const RowVelocity& v) {
+    return v.separating_velocity + v.desired_delta_velocity;
 }
 
 // Body `slot`'s point velocity at the row's anchor, v + w x r (9.5), world, added to `out` with `sign`.
@@ -370,7 +375,8 @@ IMPULSE_ROW_FUNCTION double velocity_change_squared(const ContactRow& row, const
 // memory kept the first one's total.
 class RememberedTotals {
 public:
-    explicit RememberedTotals(const ContactMemory& memory) : memory_(memory), taken_(memory.size(), 0) {}
+    RememberedTotals(const ContactMemory& memory, std::pmr::memory_resource* scratch)
+        : memory_(memory), taken_(memory.size(), 0, scratch) {}
 
     // The remembered total of the row whose contact has `key` (contact_key), re-projected on this frame's basis
     // and put within the row's limits, or nothing.
@@ -378,7 +384,8 @@ public:
 
 private:
     const ContactMemory& memory_;
-    std::vector<char> taken_;
+    std::pmr::vector<char> taken_;
+    std::ptrdiff_t next_ = 0;  // the slot after the last one found: where the next row's contact most likely is
 };
 
 // Stores every row's total, in world coordinates, under its contact's key (keys[r] for rows[r]), as this

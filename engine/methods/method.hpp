@@ -11,9 +11,11 @@
 #include "memory/contact_memory.hpp"
 #include "record/recorder.hpp"
 #include "preparation/prepared_contact.hpp"
+#include "preparation/row_preparation.hpp"
 #include "settings/settings.hpp"
 #include "body/integrate.hpp"
 
+#include <memory_resource>
 #include <span>
 #include <vector>
 
@@ -29,12 +31,17 @@ struct Forces {
 // One frame as a method sees it.
 struct FrameContext {
     std::vector<RigidBody>& bodies;          // changed in place
-    std::vector<PreparedContact>& contacts;  // steps 1-5 and the bookkeeping the book's loops update
+    std::vector<PreparedContact>& contacts;  // steps 1-5 and the bookkeeping the book's loops update; empty when
+                                             // only the rows were prepared (methods/method_table.hpp, ContactsRead)
+    std::span<const RowPreparation> rows;    // per contact as prepared, what the accumulating methods' rows read
+                                             // (empty when neither method reads rows)
     std::span<const MassProperties> mass;    // per body, as the contacts were prepared with
     const ResolverSettings& settings;
     Recorder& recorder;
     ContactMemory* memory;  // warm-starting methods' impulses from last frame, replaced at the end (may be null)
     Forces forces;
+    // Where a method takes its buffers for the frame (memory/frame_arena.hpp; the heap when no world keeps one).
+    std::pmr::memory_resource* scratch = std::pmr::new_delete_resource();
 };
 
 using MethodFunction = PhaseOutcome (*)(FrameContext& frame);

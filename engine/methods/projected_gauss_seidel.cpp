@@ -55,26 +55,28 @@ ImpulseModel model_of(double friction, ImpulseClamp clamp) {
 class ProjectedGaussSeidel {
 public:
     explicit ProjectedGaussSeidel(FrameContext& frame)
-        : frame_(frame), bodies_(solver_bodies(frame.bodies, frame.mass)) {
-        rows_.reserve(frame.contacts.size());
-        targets_.reserve(frame.contacts.size());
-        active_.reserve(frame.contacts.size());
-        keys_.reserve(frame.contacts.size());
-        for (int i = 0; i < static_cast<int>(frame.contacts.size()); ++i) {
-            const PreparedContact& c = frame.contacts[static_cast<std::size_t>(i)];
-            const ContactPreparation& d = c.derivation;
-            if (d.inert) continue;  // nothing can move it: no visits
+        : frame_(frame),
+          bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
+          rows_(frame.scratch),
+          targets_(frame.scratch),
+          active_(frame.scratch),
+          keys_(frame.scratch),
+          warm_started_(frame.scratch) {
+        rows_.reserve(frame.rows.size());
+        targets_.reserve(frame.rows.size());
+        active_.reserve(frame.rows.size());
+        keys_.reserve(frame.rows.size());
+        for (const RowPreparation& d : frame.rows) {
             ContactRow& row = rows_.emplace_back();
-            fill_contact_row(row, i, c, bodies_.data());
-            if (frame.settings.tangential_acceleration_velocity)
-                for (int b = 0; b < 2; ++b)
-                    if (const auto& term = d.velocity_terms.tangential_acceleration_velocity[b]) {
-                        row.slip_offset[0] += body_sign(b) * term->y();
-                        row.slip_offset[1] += body_sign(b) * term->z();
-                    }
-            targets_.push_back(prepared_normal_velocity(d));
+            if (!fill_contact_row(row, d, bodies_.data())) {  // nothing can move it: no visits
+                rows_.pop_back();
+                continue;
+            }
+            const RowVelocity& velocity = *d.velocity;  // prepared with steps 4 and 5 (the method table says so)
+            row.slip_offset = velocity.tangential_acceleration_velocity;  // step 4's term: 0 with the refinement off
+            targets_.push_back(prepared_normal_velocity(velocity));
             keys_.push_back(contact_key(d));
-            active_.push_back(i);
+            active_.push_back(d.contact);
         }
     }
 
@@ -83,7 +85,7 @@ public:
     // Last frame's totals, re-projected and clamped, applied before the first sweep. Returns how many.
     template <bool recording>
     int warm_start(const ContactMemory& memory) {
-        RememberedTotals remembered(memory);
+        RememberedTotals remembered(memory, frame_.scratch);
         int started = 0;
         for (std::size_t r = 0; r < rows_.size(); ++r) {
             const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]);
@@ -182,12 +184,13 @@ private:
     }
 
     FrameContext& frame_;
-    std::vector<SolverBody> bodies_;
-    std::vector<ContactRow> rows_;   // the active contacts, in index order
-    std::vector<double> targets_;    // per row: the normal velocity it asks for (m/s)
-    std::vector<int> active_;        // per row: its contact's index
-    std::vector<ContactKey> keys_;   // per row: its contact's key in the ContactMemory
-    std::vector<int> warm_started_;  // the contacts warm started, in order
+    // Every buffer but the recorder's in the frame's scratch (FrameContext::scratch).
+    std::pmr::vector<SolverBody> bodies_;
+    std::pmr::vector<ContactRow> rows_;   // the active contacts, in index order
+    std::pmr::vector<double> targets_;    // per row: the normal velocity it asks for (m/s)
+    std::pmr::vector<int> active_;        // per row: its contact's index
+    std::pmr::vector<ContactKey> keys_;   // per row: its contact's key in the ContactMemory
+    std::pmr::vector<int> warm_started_;  // the contacts warm started, in order
     int iterations_ = 0;
     // Only to give the recorder its updates:
     std::optional<ContactsByBody> by_body_;

@@ -32,14 +32,21 @@ Softness soft_step_softness(const ResolverSettings& settings) {
 
 namespace {
 
-// What soft step keeps per contact beside its rows.
+// What soft step keeps per contact beside its rows, read on every visit. (Small: the rows and these are read
+// through once per sweep, and together they must stay in the core's cache.)
 struct SoftContact {
     double prepared_penetration = 0.0;  // p0: the penetration when the frame began
-    NormalTarget solve;                 // what the coming solve asks, from p (see the header)
-    NormalTarget relax;                 // what the coming relax asks
-    double relative_velocity = 0.0;     // v_n when the frame began (step 4), which restitution reverses
-    bool bounces = false;               // c > 0 and it closed faster than the restitution cut-off
+    double solve_velocity = 0.0;        // the normal velocity the coming solve asks for, from p (see the header)
+    double relax_velocity = 0.0;        // the same for the coming relax
     double most_pushed = 0.0;           // the largest lambda_n this frame: restitution needs a contact that pushed
+    bool soft = false;                  // p >= 0: the solve's target is the soft contact's (else speculative)
+};
+
+// What restitution reads once, at the end of the frame.
+struct SoftBounce {
+    double relative_velocity = 0.0;  // v_n when the frame began (step 4), which restitution reverses
+    double restitution = 0.0;        // c
+    bool bounces = false;            // c > 0 and it closed faster than the restitution cut-off
 };
 
 class SoftStep {
@@ -49,7 +56,18 @@ public:
           settings_(frame.settings),
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
-          bodies_(solver_bodies(frame.bodies, frame.mass)) {
+          bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
+          rows_(frame.scratch),
+          soft_(frame.scratch),
+          bounce_(frame.scratch),
+          active_(frame.scratch),
+          keys_(frame.scratch),
+          start_position_(frame.scratch),
+          start_orientation_(frame.scratch),
+          moved_(frame.scratch),
+          turned_(frame.scratch) {
+        start_position_.reserve(frame.bodies.size());
+        start_orientation_.reserve(frame.bodies.size());
         for (const RigidBody& body : frame.bodies) {
             start_position_.push_back(body.position);
             start_orientation_.push_back(body.orientation);
@@ -57,27 +75,29 @@ public:
         moved_.assign(frame.bodies.size(), Vec3::Zero());
         turned_.assign(frame.bodies.size(), Mat3::Identity());
         const double cutoff = settings_.restitution_cutoff;
-        rows_.reserve(frame.contacts.size());
-        soft_.reserve(frame.contacts.size());
-        active_.reserve(frame.contacts.size());
-        keys_.reserve(frame.contacts.size());
-        for (int i = 0; i < static_cast<int>(frame.contacts.size()); ++i) {
-            const PreparedContact& p = frame.contacts[static_cast<std::size_t>(i)];
-            const ContactPreparation& d = p.derivation;
-            if (d.inert) continue;  // nothing can move it: no visits
-            fill_contact_row(rows_.emplace_back(), i, p, bodies_.data());
-            SoftContact c;
+        rows_.reserve(frame.rows.size());
+        soft_.reserve(frame.rows.size());
+        bounce_.reserve(frame.rows.size());
+        active_.reserve(frame.rows.size());
+        keys_.reserve(frame.rows.size());
+        for (const RowPreparation& d : frame.rows) {
+            if (!fill_contact_row(rows_.emplace_back(), d, bodies_.data())) {  // nothing can move it: no visits
+                rows_.pop_back();
+                continue;
+            }
+            SoftContact& c = soft_.emplace_back();
             c.prepared_penetration = d.penetration;
-            c.solve = target_at(d.penetration, true);
-            c.relax = target_at(d.penetration, false);
-            c.relative_velocity = d.velocity_terms.contact_velocity.x();
-            c.bounces = d.restitution != 0.0 && c.relative_velocity < -cutoff;
-            soft_.push_back(c);
-            active_.push_back(i);
+            aim_at(c, d.penetration);
+            // Step 4's v_s, which restitution reverses: only a contact that may bounce needs it.
+            SoftBounce& bounce = bounce_.emplace_back();
+            if (d.restitution != 0.0) bounce.relative_velocity = separating_velocity(d, frame.bodies, settings_);
+            bounce.restitution = d.restitution;
+            bounce.bounces = d.restitution != 0.0 && bounce.relative_velocity < -cutoff;
+            active_.push_back(d.contact);
             keys_.push_back(contact_key(d));
         }
         if (settings_.warm_start && frame.memory) {
-            RememberedTotals remembered(*frame.memory);
+            RememberedTotals remembered(*frame.memory, frame.scratch);
             for (std::size_t r = 0; r < rows_.size(); ++r)
                 if (const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]))
                     rows_[r].total_impulse = total->after;
@@ -97,14 +117,18 @@ public:
             store_velocities(bodies_, frame_.bodies);
             for (RigidBody& body : frame_.bodies) integrate_position(body, substep_, settings_.orientation_update);
             track_moves();
+            // The first relax sweep finds each contact's p as it visits it (the bodies move only here).
             for (int pass = 0; pass < settings_.sweeps; ++pass)
-                sweep<recording, false>({substep, pass, SolverStage::relax});
+                if (pass == 0)
+                    sweep<recording, false, true>({substep, pass, SolverStage::relax});
+                else
+                    sweep<recording, false>({substep, pass, SolverStage::relax});
             store_velocities(bodies_, frame_.bodies);
         }
         if constexpr (!recording) frame_.recorder.contacts_visited(active_);
-        std::vector<int> bounced;
+        std::pmr::vector<int> bounced(frame_.scratch);
         for (std::size_t r = 0; r < rows_.size(); ++r)
-            if (soft_[r].bounces && soft_[r].most_pushed > 0.0) {
+            if (bounce_[r].bounces && soft_[r].most_pushed > 0.0) {
                 restitution<recording>(r, {substeps - 1, 0, SolverStage::restitution});
                 bounced.push_back(rows_[r].contact);
             }
@@ -131,23 +155,23 @@ private:
         }
     }
 
-    // After the positions moved: each body's move and turn since the frame began, then each contact's p and what
-    // it asks of this sub-step's relax and the next one's solve.
+    // After the positions moved: each body's move and turn since the frame began.
     void track_moves() {
         for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
             const RigidBody& body = frame_.bodies[b];
             moved_[b] = body.position - start_position_[b];
             turned_[b] = (body.orientation * start_orientation_[b].conjugate()).toRotationMatrix();
         }
-        for (std::size_t r = 0; r < rows_.size(); ++r) {
-            const double p = penetration(r);
-            soft_[r].solve = target_at(p, true);
-            soft_[r].relax = target_at(p, false);
-        }
+    }
+
+    // Contact r's p once the bodies moved, and what it asks of this sub-step's relax and the next one's solve.
+    [[gnu::always_inline]] void track_penetration(std::size_t r) {
+        const double p = penetration(r);
+        aim_at(soft_[r], p);
     }
 
     // p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)]: the anchors turn with their bodies.
-    double penetration(std::size_t r) const {
+    [[gnu::always_inline]] double penetration(std::size_t r) const {
         const ContactRow& row = rows_[r];
         Vec3 separated = Vec3::Zero();  // how far body 0's anchor moved away from body 1's
         for (int i = 0; i < 2; ++i) {
@@ -159,14 +183,25 @@ private:
         return soft_[r].prepared_penetration - separated.dot(row.normal);
     }
 
-    // The soft bias of a point at penetration p for one visit (contact_solver.c's three cases), as the normal
-    // velocity it asks for: -bias.
-    NormalTarget target_at(double penetration, bool use_bias) const {
-        // Speculative: a gap of -p may close at up to -p / h_s in this sub-step, and no push is asked for.
-        if (penetration < 0.0) return {penetration / substep_, 1.0, 0.0};
-        if (!use_bias) return {0.0, 1.0, 0.0};
-        return {-std::max(-softness_.bias_rate * penetration, -settings_.soft_step.max_push_velocity),
-                softness_.mass_scale, softness_.impulse_scale};
+    // The soft bias of a point at penetration p for the coming solve and relax (contact_solver.c's three cases),
+    // as the normal velocity each asks for: -bias.
+    void aim_at(SoftContact& c, double penetration) const {
+        c.soft = penetration >= 0.0;
+        if (!c.soft) {
+            // Speculative: a gap of -p may close at up to -p / h_s in this sub-step, and no push is asked for.
+            c.solve_velocity = c.relax_velocity = penetration / substep_;
+            return;
+        }
+        c.solve_velocity = -std::max(-softness_.bias_rate * penetration, -settings_.soft_step.max_push_velocity);
+        c.relax_velocity = 0.0;  // relax: the rigid contact, no bias
+    }
+
+    // What a visit of solve (with the soft contact's bias and scales) or relax (rigid, unbiased) asks of row r.
+    template <bool biased>
+    [[gnu::always_inline]] NormalTarget target_of(std::size_t r) const {
+        const SoftContact& c = soft_[r];
+        if (biased && c.soft) return {c.solve_velocity, softness_.mass_scale, softness_.impulse_scale};
+        return {biased ? c.solve_velocity : c.relax_velocity, 1.0, 0.0};
     }
 
     // Every contact's lambda applied again: the sub-step's velocities start without any contact impulse.
@@ -187,13 +222,15 @@ private:
         }
     }
 
-    // One sweep of solve (with the soft bias) or relax (without).
-    template <bool recording, bool biased>
+    // One sweep of solve (with the soft bias) or relax (without); `moved`: the bodies moved since the last sweep,
+    // so each contact's p is found first (track_penetration).
+    template <bool recording, bool biased, bool moved = false>
     void sweep(const SweepPlace& place) {
         for (std::size_t r = 0; r < rows_.size(); ++r) {
+            if constexpr (moved) track_penetration(r);
             const ContactRow& row = rows_[r];
             const Axes velocity = row_velocity(row, bodies_.data());
-            const NormalTarget& target = biased ? soft_[r].solve : soft_[r].relax;
+            const NormalTarget target = target_of<biased>(r);
             const RowVisit v = solve_rows(row, velocity, target);
             Aim aim;
             if constexpr (recording) aim = {velocity, target.velocity - velocity.n, target.velocity};
@@ -204,10 +241,10 @@ private:
     template <bool recording>
     void restitution(std::size_t r, const SweepPlace& place) {
         const ContactRow& row = rows_[r];
-        const double c_used = frame_.contacts[static_cast<std::size_t>(row.contact)].derivation.restitution;
+        const double c_used = bounce_[r].restitution;
         const Axes velocity = row_velocity(row, bodies_.data());
         // The target is -c v_n(before): delta lambda_n = -m_n (v_n + c v_n(before)), total kept >= 0.
-        const NormalTarget target{-c_used * soft_[r].relative_velocity};
+        const NormalTarget target{-c_used * bounce_[r].relative_velocity};
         const RowVisit v = solve_normal_row(row, velocity.n, target);
         Aim aim;
         if constexpr (recording) aim = {velocity, target.velocity - velocity.n, std::nullopt};
@@ -243,7 +280,7 @@ private:
         resolution.desired_terms = {.separating_velocity = aim.contact_velocity.n,
                                     .restitution = d.restitution,
                                     .restitution_cutoff = settings_.restitution_cutoff,
-                                    .restitution_cutoff_applied = d.restitution != 0.0 && !soft_[r].bounces,
+                                    .restitution_cutoff_applied = d.restitution != 0.0 && !bounce_[r].bounces,
                                     .restitution_used = bouncing ? d.restitution : 0.0,
                                     .velocity_from_acceleration_applied = false,
                                     .velocity_from_acceleration = 0.0,
@@ -272,15 +309,17 @@ private:
     const ResolverSettings& settings_;
     double substep_;
     Softness softness_;
-    std::vector<SolverBody> bodies_;
-    std::vector<ContactRow> rows_;   // the active contacts, in index order
-    std::vector<SoftContact> soft_;  // beside each row
-    std::vector<int> active_;        // each row's contact
-    std::vector<ContactKey> keys_;   // each row's contact's key in the ContactMemory
-    std::vector<Vec3> start_position_;
-    std::vector<Quat> start_orientation_;
-    std::vector<Vec3> moved_;   // per body: its move since the frame began
-    std::vector<Mat3> turned_;  // per body: its turn since the frame began, R = q q0^-1
+    // Every buffer in the frame's scratch (FrameContext::scratch).
+    std::pmr::vector<SolverBody> bodies_;
+    std::pmr::vector<ContactRow> rows_;    // the active contacts, in index order
+    std::pmr::vector<SoftContact> soft_;   // beside each row
+    std::pmr::vector<SoftBounce> bounce_;  // beside each row
+    std::pmr::vector<int> active_;         // each row's contact
+    std::pmr::vector<ContactKey> keys_;    // each row's contact's key in the ContactMemory
+    std::pmr::vector<Vec3> start_position_;
+    std::pmr::vector<Quat> start_orientation_;
+    std::pmr::vector<Vec3> moved_;   // per body: its move since the frame began
+    std::pmr::vector<Mat3> turned_;  // per body: its turn since the frame began, R = q q0^-1
     int visits_ = 0;
 };
 

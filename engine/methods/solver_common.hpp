@@ -32,7 +32,8 @@ Vec3 current_contact_velocity(const PreparedContact& contact, std::span<const Ri
                               const ResolverSettings& settings);
 
 // The key the contact had as detected (before preparation put the world second), for ContactMemory.
-inline ContactKey contact_key(const ContactPreparation& contact) {
+template <typename Prepared>  // ContactPreparation or RowPreparation
+ContactKey contact_key(const Prepared& contact) {
     ContactKey key{contact.bodies, contact.origin};
     if (contact.swapped) {
         std::swap(key.bodies[0], key.bodies[1]);

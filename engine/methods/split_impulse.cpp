@@ -53,17 +53,18 @@ PhaseOutcome push_apart(FrameContext& frame) {
     std::vector<PreparedContact>& contacts = frame.contacts;
     const double h = settings.duration;
     // The pseudo velocities: zero at the start of every frame, with the bodies' mass as prepared.
-    std::vector<SolverBody> pseudo = solver_bodies(frame.bodies, frame.mass);
+    std::pmr::vector<SolverBody> pseudo = solver_bodies(frame.bodies, frame.mass, frame.scratch);
     for (SolverBody& p : pseudo) p.velocity = p.angular_velocity = Vec3::Zero();
-    std::vector<ContactRow> rows;
-    std::vector<double> targets;
-    std::vector<int> active;
-    for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
-        const PreparedContact& c = contacts[static_cast<std::size_t>(i)];
-        if (c.derivation.inert) continue;
-        fill_contact_row(rows.emplace_back(), i, c, pseudo.data(), false);
-        targets.push_back(position_bias(c.derivation.penetration, settings.position_bias, h));
-        active.push_back(i);
+    std::pmr::vector<ContactRow> rows(frame.scratch);
+    std::pmr::vector<double> targets(frame.scratch);
+    std::pmr::vector<int> active(frame.scratch);
+    for (const RowPreparation& c : frame.rows) {
+        if (!fill_contact_row(rows.emplace_back(), c, pseudo.data(), false)) {  // nothing can push it
+            rows.pop_back();
+            continue;
+        }
+        targets.push_back(position_bias(c.penetration, settings.position_bias, h));
+        active.push_back(c.contact);
     }
 
     std::optional<ContactsByBody> by_body;  // a push updates its neighbours' bookkeeping, not every contact

@@ -23,53 +23,55 @@ std::vector<MassProperties> mass_properties(std::span<const RigidBody> bodies) {
     return mass;
 }
 
+OrientedContact oriented(const Contact& contact) {
+    OrientedContact o{contact.bodies[0] == world_body, contact.bodies, contact.origin, contact.normal};
+    if (o.swapped) {
+        std::swap(o.bodies[0], o.bodies[1]);
+        std::swap(o.origin.features[0], o.origin.features[1]);
+        o.normal = -o.normal;
+    }
+    return o;
+}
+
+PerBody<BodyMotion> contact_motion(const std::array<int, 2>& ids, std::span<const RigidBody> bodies) {
+    const auto motion_of = [&](int i) -> std::optional<BodyMotion> {
+        if (ids[i] == world_body) return std::nullopt;
+        const RigidBody& body = bodies[static_cast<std::size_t>(ids[i])];
+        return BodyMotion{body.velocity, body.angular_velocity, body.last_frame_acceleration};
+    };
+    return {motion_of(0), motion_of(1)};
+}
+
+std::optional<double> step_5_position_bias(double penetration, const ResolverSettings& settings) {
+    if (!settings.baumgarte) return std::nullopt;
+    return position_bias(penetration, settings.position_bias, settings.duration);
+}
+
 PreparedContact prepare_contact(int index, const Contact& contact, std::span<const RigidBody> bodies,
                                 std::span<const MassProperties> mass, const ResolverSettings& settings) {
-    // Body 0 must be a body: a contact given as (world, body) becomes (body, world) with the normal
-    // reversed, so the normal still points towards body 0.
-    const bool swapped = contact.bodies[0] == world_body;
-    std::array<int, 2> ids = contact.bodies;
-    ContactOrigin origin = contact.origin;
-    Vec3 normal = contact.normal;
-    if (swapped) {
-        std::swap(ids[0], ids[1]);
-        std::swap(origin.features[0], origin.features[1]);
-        normal = -normal;
-    }
+    const OrientedContact o = oriented(contact);
 
     // What the steps need of each body (nothing of the world).
-    const auto body_of = [&](int i) -> const RigidBody* {
-        return ids[i] == world_body ? nullptr : &bodies[static_cast<std::size_t>(ids[i])];
-    };
     const auto centre = [&](int i) -> std::optional<Vec3> {
-        if (const RigidBody* body = body_of(i)) return body->position;
-        return std::nullopt;
+        if (o.bodies[i] == world_body) return std::nullopt;
+        return bodies[static_cast<std::size_t>(o.bodies[i])].position;
     };
     const auto mass_of = [&](int i) -> std::optional<MassProperties> {
-        if (body_of(i)) return mass[static_cast<std::size_t>(ids[i])];
-        return std::nullopt;
-    };
-    const auto motion_of = [&](int i) -> std::optional<BodyMotion> {
-        if (const RigidBody* body = body_of(i))
-            return BodyMotion{body->velocity, body->angular_velocity, body->last_frame_acceleration};
-        return std::nullopt;
+        if (o.bodies[i] == world_body) return std::nullopt;
+        return mass[static_cast<std::size_t>(o.bodies[i])];
     };
     const PerBody<MassProperties> body_mass{mass_of(0), mass_of(1)};
-    const PerBody<BodyMotion> motion{motion_of(0), motion_of(1)};
+    const PerBody<BodyMotion> motion = contact_motion(o.bodies, bodies);
 
     // Steps 1-5.
-    const Basis contact_basis = basis(normal);
+    const Basis contact_basis = basis(o.normal);
     const PerBody<Vec3> q_rel = relative_position(contact.point, {centre(0), centre(1)});
-    const UnitImpulseChain chain = delta_velocity_per_unit_impulse(normal, q_rel, body_mass);
+    const UnitImpulseChain chain = delta_velocity_per_unit_impulse(o.normal, q_rel, body_mass);
     const ContactVelocityTerms velocity =
         contact_velocity(contact_basis, q_rel, motion, settings.duration, settings.tangential_acceleration_velocity);
-    const std::optional<double> bias =
-        settings.baumgarte
-            ? std::optional(position_bias(contact.penetration, settings.position_bias, settings.duration))
-            : std::nullopt;
     const DesiredDeltaVelocity desired =
-        desired_delta_velocity(velocity.contact_velocity.x(), contact.restitution, normal, motion, settings.duration,
-                               velocity_refinements(settings), bias);
+        desired_delta_velocity(velocity.contact_velocity.x(), contact.restitution, o.normal, motion, settings.duration,
+                               velocity_refinements(settings), step_5_position_bias(contact.penetration, settings));
 
     // Built in one piece, every member from its value: a PreparedContact declared first and filled in after
     // would first clear its half kilobyte of optional per-body values, then overwrite them.
@@ -77,14 +79,14 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
                            .contact_velocity = velocity.contact_velocity,
                            .desired_terms = desired,  // the bookkeeping starts from steps 4 and 5
                            .derivation = {.contact = index,
-                                          .swapped = swapped,
-                                          .bodies = ids,
+                                          .swapped = o.swapped,
+                                          .bodies = o.bodies,
                                           .point = contact.point,
-                                          .normal = normal,
+                                          .normal = o.normal,
                                           .penetration = contact.penetration,
                                           .restitution = contact.restitution,
                                           .friction = contact.friction,
-                                          .origin = origin,
+                                          .origin = o.origin,
                                           .inert = chain.delta_velocity_per_unit_impulse <= 0.0,
                                           .basis = contact_basis,
                                           .relative_position = q_rel,

@@ -77,6 +77,24 @@ const FactoredDeltaVelocityMatrix& delta_velocity_matrix_of(const PreparedContac
 // Each body's mass properties once per frame, with the world inverse inertia R I^-1 R^T.
 std::vector<MassProperties> mass_properties(std::span<const RigidBody> bodies);
 
+// What steps 1-5 are made of, shared by the full preparation below and the rows' (row_preparation.hpp), so the
+// two compute each value the same way.
+
+// Body 0 must be a body: a contact given as (world, body) becomes (body, world) with the normal reversed and
+// the features exchanged, so the normal still points towards body 0.
+struct OrientedContact {
+    bool swapped;               // the bodies were exchanged
+    std::array<int, 2> bodies;  // body 1 may be world_body
+    ContactOrigin origin;       // features in the new order
+    Vec3 normal;                // from body 1 towards body 0
+};
+OrientedContact oriented(const Contact& contact);
+
+// What steps 4 and 5 read: the bodies' motion.
+PerBody<BodyMotion> contact_motion(const std::array<int, 2>& bodies, std::span<const RigidBody> all_bodies);
+// Step 5's Baumgarte term, when the setting is on (preparation/position_bias.hpp).
+std::optional<double> step_5_position_bias(double penetration, const ResolverSettings& settings);
+
 PreparedContact prepare_contact(int index, const Contact& contact, std::span<const RigidBody> bodies,
                                 std::span<const MassProperties> mass, const ResolverSettings& settings);
 

@@ -22,6 +22,8 @@ public:
 
     virtual void begin_frame(int /*frame*/, std::span<const RigidBody> /*bodies*/,
                              std::span<const MassProperties> /*mass*/) {}
+    // Steps 1-5 of every contact, in full. Always called when wants_updates() is true; otherwise only when a
+    // method of the frame reads the full preparation (the accumulating methods read only their rows' values).
     virtual void contacts_prepared(std::span<const PreparedContact> /*contacts*/) {}
     virtual void position_iteration(const PositionIteration& /*iteration*/) {}
     virtual void velocity_iteration(const VelocityIteration& /*iteration*/) {}

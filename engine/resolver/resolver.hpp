@@ -9,6 +9,7 @@
 #include "record/recorder.hpp"
 #include "settings/settings.hpp"
 
+#include <memory_resource>
 #include <span>
 #include <vector>
 
@@ -26,10 +27,12 @@ struct ResolutionSummary {
 // (methods/method_table.hpp). Contacts must name bodies inside the list, body 0 and body 1 different, unit
 // normals. `memory` carries warm-starting solvers' impulses from frame to frame (nothing = start cold every
 // frame). A velocity method that owns the whole step integrates the bodies itself under `forces` (none: they
-// move by their velocities over settings.duration while it resolves the contacts).
+// move by their velocities over settings.duration while it resolves the contacts). The frame's buffers come
+// from `scratch` (a world's FrameArena; the heap by default).
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
                                    const ResolverSettings& settings, Recorder& recorder, int frame = 0,
-                                   ContactMemory* memory = nullptr, const Forces& forces = {});
+                                   ContactMemory* memory = nullptr, const Forces& forces = {},
+                                   std::pmr::memory_resource* scratch = std::pmr::new_delete_resource());
 
 // The same with nobody listening.
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,

@@ -37,7 +37,13 @@ void stamp_material(std::vector<Contact>& contacts, std::size_t first, const Mat
 
 Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times) {
     Detection detection;
+    detect_contacts(scene, bodies, detection, times);
+    return detection;
+}
+
+void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Detection& detection, StageTimes* times) {
     std::vector<Contact>& out = detection.contacts;
+    out.clear();
     const auto start = Clock::now();
 
     std::vector<Placement> placements;
@@ -82,7 +88,6 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
         times->broad_phase += broad;
         times->narrow_phase += seconds_since(start) - broad;
     }
-    return detection;
 }
 
 std::size_t highest_body(const Scene& scene) {
@@ -93,7 +98,10 @@ std::size_t highest_body(const Scene& scene) {
     return top;
 }
 
-World::World(Scene scene) : scene_(std::move(scene)), bodies_(scene_.bodies) {}
+World::World(Scene scene) : scene_(std::move(scene)), bodies_(scene_.bodies) {
+    principal_.reserve(bodies_.size());
+    for (const RigidBody& body : bodies_) principal_.push_back(principal_inertia(body));
+}
 
 void World::reset() {
     bodies_ = scene_.bodies;
@@ -121,7 +129,8 @@ StepReport World::step(Recorder& recorder) {
             integrate(body, scene_.world.gravity, dt, damping, scene_.settings.orientation_update);
     report.times.integrate = seconds_since(start);
 
-    const Detection detection = detect_contacts(scene_, bodies_, &report.times);
+    detect_contacts(scene_, bodies_, detection_, &report.times);
+    const Detection& detection = detection_;
     report.pairs_tested = detection.pairs_tested;
     report.contacts = static_cast<int>(detection.contacts.size());
     for (const Contact& c : detection.contacts)
@@ -131,13 +140,14 @@ StepReport World::step(Recorder& recorder) {
     // on whenever the settings ask for it.
     start = Clock::now();
     LastTouch touch(recorder, detection.contacts, bodies_.size());
+    FrameArena::Frame scratch(arena_);
     report.resolution = resolve_contacts(bodies_, detection.contacts, scene_.settings, touch, frame_, &memory_,
-                                         Forces{scene_.world.gravity, damping});
+                                         Forces{scene_.world.gravity, damping}, scratch.resource());
     report.times.resolve = seconds_since(start);
 
     report.non_finite = first_non_finite(bodies_, touch);
 
-    for (const RigidBody& body : bodies_) report.kinetic_energy += kinetic_energy(body);
+    for (std::size_t b = 0; b < bodies_.size(); ++b) report.kinetic_energy += kinetic_energy(bodies_[b], principal_[b]);
     ++frame_;
     return report;
 }

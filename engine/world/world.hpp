@@ -10,6 +10,7 @@
 // timed for the profile (never for traces, which must be byte-identical run to run).
 
 #include "memory/contact_memory.hpp"
+#include "memory/frame_arena.hpp"
 #include "record/recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "scene/scene.hpp"
@@ -37,6 +38,9 @@ struct Detection {
 // shape take part in no test, and two immovable bodies are never tested against each other. The world's
 // step calls it; the bench's accuracy metrics and `resolve` (a scene without written contacts) call it alone.
 Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times = nullptr);
+// The same into `detection`, whose list keeps its room (a world detects every frame).
+void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Detection& detection,
+                     StageTimes* times = nullptr);
 
 // What one step did.
 struct StepReport {
@@ -82,6 +86,9 @@ private:
     std::vector<RigidBody> bodies_;
     ContactMemory memory_;
     int frame_ = 0;
+    std::vector<PrincipalInertia> principal_;  // per body, for the step report's kinetic energy
+    FrameArena arena_;                         // the resolution's buffers, kept from frame to frame
+    Detection detection_;  // the last step's contacts; their list's room is kept from frame to frame
 };
 
 }  // namespace impulse

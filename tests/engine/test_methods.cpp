@@ -227,7 +227,9 @@ TEST_CASE("the split impulse removes penetration without adding kinetic energy")
 
 TEST_CASE("recorded and unrecorded runs of each method are bit-identical") {
     // Every row of the method table, with the book's velocities or positions around it, every preset, and the
-    // step-5 and friction options: the sweeping methods run one loop compiled with and without the records.
+    // step-5 and friction options: the sweeping methods run one loop compiled with and without the records, and
+    // the accumulating methods read their rows from the full preparation when recorded, from the lean one when
+    // not (tests/engine/test_row_preparation.cpp compares the two directly).
     std::vector<std::vector<std::string>> runs = method_runs;
     for (const auto& row : velocity_methods) runs.push_back({"velocity_method=" + std::string(row.name)});
     for (const auto& row : position_methods) {

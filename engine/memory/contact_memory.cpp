@@ -61,8 +61,7 @@ std::optional<Vec3> ContactMemory::recall(const ContactKey& key) const {
     return impulse_at(slot);
 }
 
-void ContactMemory::remember(std::vector<std::pair<ContactKey, Vec3>> impulses) {
-    entries_ = std::move(impulses);
+void ContactMemory::index_entries() {
     std::size_t size = 16;
     while (size < 2 * entries_.size()) size *= 2;
     index_.assign(size, -1);

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <array>
 #include <optional>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -44,14 +45,22 @@ public:
     std::ptrdiff_t slot_of(const ContactKey& key, std::ptrdiff_t hint) const;
     const Vec3& impulse_at(std::ptrdiff_t slot) const { return entries_[static_cast<std::size_t>(slot)].second; }
 
-    // Replaces what was remembered with this frame's totals. When two contacts share a key (explicit contacts
-    // written by hand carry no features), the first keeps it, so recall stays deterministic.
-    void remember(std::vector<std::pair<ContactKey, Vec3>> impulses);
+    // Replaces what was remembered with this frame's totals, impulse(k) for the contact with keys[k]. When two
+    // contacts share a key (explicit contacts written by hand carry no features), the first keeps it, so recall
+    // stays deterministic. The memory keeps its buffers: once they have grown, remembering allocates nothing.
+    template <typename Impulse>
+    void remember(std::span<const ContactKey> keys, Impulse impulse) {
+        entries_.clear();
+        for (std::size_t k = 0; k < keys.size(); ++k) entries_.emplace_back(keys[k], impulse(k));
+        index_entries();
+    }
 
     std::size_t size() const { return entries_.size(); }
     void clear();
 
 private:
+    void index_entries();
+
     // The totals as given, and an open-addressing index over them (linear probing, at most half full, -1 =
     // empty): a frame's remembering writes 4 bytes per slot and allocates nothing once the index has grown.
     std::vector<std::pair<ContactKey, Vec3>> entries_;

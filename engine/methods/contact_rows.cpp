@@ -102,11 +102,7 @@ std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const Contac
 }
 
 void remember_totals(std::span<const ContactRow> rows, std::span<const ContactKey> keys, ContactMemory& memory) {
-    std::vector<std::pair<ContactKey, Vec3>> totals;
-    totals.reserve(rows.size());
-    for (std::size_t r = 0; r < rows.size(); ++r)
-        totals.emplace_back(keys[r], world_impulse(rows[r], rows[r].total_impulse));
-    memory.remember(std::move(totals));
+    memory.remember(keys, [&](std::size_t r) { return world_impulse(rows[r], rows[r].total_impulse); });
 }
 
 }  // namespace impulse

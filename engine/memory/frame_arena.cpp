@@ -10,8 +10,9 @@ void* FrameArena::Overflow::do_allocate(std::size_t size, std::size_t alignment)
     return ::operator new(size, std::align_val_t(alignment));
 }
 
-void FrameArena::Overflow::do_deallocate(void* p, std::size_t size, std::size_t alignment) {
-    ::operator delete(p, size, std::align_val_t(alignment));
+// (The unsized delete: clang does not declare the sized one without -fsized-deallocation.)
+void FrameArena::Overflow::do_deallocate(void* p, std::size_t, std::size_t alignment) {
+    ::operator delete(p, std::align_val_t(alignment));
 }
 
 FrameArena::FrameArena(const FrameArena& other)

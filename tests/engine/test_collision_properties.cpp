@@ -131,7 +131,7 @@ TEST_CASE("the screened separating-axis test gives the contacts of the test on e
                 }
             }
         },
-        20000);
+        10000);
 }
 
 TEST_CASE("sort and sweep finds exactly the pairs whose bounds overlap") {

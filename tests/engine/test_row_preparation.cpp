@@ -1,6 +1,7 @@
 // The two ways to a contact's row values (preparation/row_preparation.hpp): read off the full preparation, or
 // computed alone when nothing records. Every shipped scene, part way through its motion, under every preset:
-// the same values to the bit, with and without steps 4 and 5.
+// the same values to the bit, with and without steps 4 and 5. (grid_1000 is grid_100's boxes ten times over,
+// and would take most of the test's time under the sanitizers: it is left out.)
 
 #include "preparation/row_preparation.hpp"
 #include "settings/settings.hpp"
@@ -20,10 +21,11 @@ TEST_CASE("the lean row preparation gives the full preparation's row values, to 
     for (const auto& entry : std::filesystem::directory_iterator(IMPULSE_SOURCE_DIR "/scenes")) {
         if (entry.path().extension() != ".json") continue;
         const std::string name = entry.path().stem().string();
+        if (name == "grid_1000") continue;
         CAPTURE(name);
         const Scene scene = test::shipped(name);
         World world(scene);
-        for (int frame = 0; frame < 40; ++frame) world.step();  // moving, touching, with last frame's acceleration
+        for (int frame = 0; frame < 25; ++frame) world.step();  // moving, touching, with last frame's acceleration
         const Detection detection = detect_contacts(scene, world.bodies());
         const std::vector<MassProperties> mass = mass_properties(world.bodies());
         for (const std::string_view preset_name : preset_names()) {

@@ -32,7 +32,6 @@ double kinetic_energy(const RigidBody& body);
 // The body-axes inverse inertia's principal axes and eigenvalues: fixed for a body, so a caller that needs the
 // kinetic energy of the same bodies every frame (the world's step report) finds them once.
 struct PrincipalInertia {
-    bool turns = false;                   // the inverse inertia is not zero
     Mat3 axes = Mat3::Identity();         // columns: the principal axes, body coordinates
     Vec3 inverse_moments = Vec3::Zero();  // the inverse inertia's eigenvalues, along those axes
 };

@@ -91,6 +91,23 @@ bool fill_contact_row(ContactRow& row, const RowPreparation& d, const SolverBody
     return k_nn > 0.0;
 }
 
+ActiveRows::ActiveRows(std::size_t capacity, std::pmr::memory_resource* scratch)
+    : rows(scratch), contacts(scratch), keys(scratch) {
+    rows.reserve(capacity);
+    contacts.reserve(capacity);
+    keys.reserve(capacity);
+}
+
+ContactRow* ActiveRows::add(const RowPreparation& contact, const SolverBody* bodies) {
+    if (!fill_contact_row(rows.emplace_back(), contact, bodies)) {
+        rows.pop_back();
+        return nullptr;
+    }
+    contacts.push_back(contact.contact);
+    keys.push_back(contact_key(contact));
+    return &rows.back();
+}
+
 std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const ContactKey& key) {
     if (memory_.size() == 0) return std::nullopt;
     const std::ptrdiff_t slot = memory_.slot_of(key, next_);

@@ -134,9 +134,22 @@ struct ContactRow {
 // Fills `row` with the rows of a prepared contact, with its bodies' mass from `bodies` (K as
 // derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes) only the
 // normal row is filled. Returns whether an impulse can move the contact at all (K_nn > 0); a contact that cannot
-// is never visited. (In place: a row is 300 bytes, and a frame builds one per contact.)
+// is never visited. (In place: a row is 264 bytes, and a frame builds one per contact.)
 bool fill_contact_row(ContactRow& row, const RowPreparation& contact, const SolverBody* bodies,
                       bool friction_rows = true);
+
+// The rows of the frame's contacts that an impulse can move, each with its contact and its contact's key in the
+// contact memory (RememberedTotals, remember_totals): what the warm-started methods build first, in the frame's
+// scratch (FrameContext::scratch).
+struct ActiveRows {
+    ActiveRows(std::size_t capacity, std::pmr::memory_resource* scratch);
+    // Adds the row of `contact`, or nothing when no impulse can move it: the row, or null.
+    ContactRow* add(const RowPreparation& contact, const SolverBody* bodies);
+
+    std::pmr::vector<ContactRow> rows;  // in contact order
+    std::pmr::vector<int> contacts;     // each row's contact, as one list (the recorder's contacts_visited)
+    std::pmr::vector<ContactKey> keys;  // each row's contact's key in the ContactMemory
+};
 
 // What the normal row aims for in one visit.
 struct NormalTarget {

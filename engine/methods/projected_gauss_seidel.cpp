@@ -57,43 +57,33 @@ public:
     explicit ProjectedGaussSeidel(FrameContext& frame)
         : frame_(frame),
           bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          rows_(frame.scratch),
+          active_(frame.rows.size(), frame.scratch),
           targets_(frame.scratch),
-          active_(frame.scratch),
-          keys_(frame.scratch),
           warm_started_(frame.scratch) {
-        rows_.reserve(frame.rows.size());
         targets_.reserve(frame.rows.size());
-        active_.reserve(frame.rows.size());
-        keys_.reserve(frame.rows.size());
         for (const RowPreparation& d : frame.rows) {
-            ContactRow& row = rows_.emplace_back();
-            if (!fill_contact_row(row, d, bodies_.data())) {  // nothing can move it: no visits
-                rows_.pop_back();
-                continue;
-            }
+            ContactRow* row = active_.add(d, bodies_.data());
+            if (!row) continue;                         // nothing can move it: no visits
             const RowVelocity& velocity = *d.velocity;  // prepared with steps 4 and 5 (the method table says so)
-            row.slip_offset = velocity.tangential_acceleration_velocity;  // step 4's term: 0 with the refinement off
+            row->slip_offset = velocity.tangential_acceleration_velocity;  // step 4's term: 0 with the refinement off
             targets_.push_back(prepared_normal_velocity(velocity));
-            keys_.push_back(contact_key(d));
-            active_.push_back(d.contact);
         }
     }
 
-    int active_count() const { return static_cast<int>(rows_.size()); }
+    int active_count() const { return static_cast<int>(active_.rows.size()); }
 
     // Last frame's totals, re-projected and clamped, applied before the first sweep. Returns how many.
     template <bool recording>
     int warm_start(const ContactMemory& memory) {
         RememberedTotals remembered(memory, frame_.scratch);
         int started = 0;
-        for (std::size_t r = 0; r < rows_.size(); ++r) {
-            const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]);
+        for (std::size_t r = 0; r < active_.rows.size(); ++r) {
+            const std::optional<RowVisit> total = remembered.of(active_.rows[r], active_.keys[r]);
             if (!total) continue;
             Axes velocity;
-            if constexpr (recording) velocity = row_velocity(rows_[r], bodies_.data());
+            if constexpr (recording) velocity = row_velocity(active_.rows[r], bodies_.data());
             visit<recording>(r, *total, SweepPlace{0, 0, SolverStage::warm_start}, velocity);
-            warm_started_.push_back(rows_[r].contact);
+            warm_started_.push_back(active_.rows[r].contact);
             ++started;
         }
         return started;
@@ -105,10 +95,10 @@ public:
     double sweep(int pass) {
         double largest = 0.0;
         SolverBody* bodies = bodies_.data();
-        for (std::size_t r = 0; r < rows_.size(); ++r) {
-            const Axes velocity = row_velocity(rows_[r], bodies);
-            const RowVisit v = solve_rows(rows_[r], velocity, NormalTarget{targets_[r]});
-            largest = std::max(largest, velocity_change_squared(rows_[r], v.increment()));
+        for (std::size_t r = 0; r < active_.rows.size(); ++r) {
+            const Axes velocity = row_velocity(active_.rows[r], bodies);
+            const RowVisit v = solve_rows(active_.rows[r], velocity, NormalTarget{targets_[r]});
+            largest = std::max(largest, velocity_change_squared(active_.rows[r], v.increment()));
             visit<recording>(r, v, SweepPlace{0, pass, SolverStage::solve}, velocity);
         }
         return largest;
@@ -117,12 +107,12 @@ public:
     // Writes the velocities back to the bodies, remembers the totals.
     void finish(ContactMemory* memory) {
         store_velocities(bodies_, frame_.bodies);
-        if (memory) remember_totals(rows_, keys_, *memory);
+        if (memory) remember_totals(active_.rows, active_.keys, *memory);
     }
 
     // The contacts of the last visits, in visit order: every sweep visits every active contact in index order.
     std::span<const int> last_visited(int sweeps) const {
-        return sweeps > 0 ? std::span<const int>(active_) : std::span<const int>(warm_started_);
+        return sweeps > 0 ? std::span<const int>(active_.contacts) : std::span<const int>(warm_started_);
     }
     int iterations() const { return iterations_; }
 
@@ -130,7 +120,7 @@ private:
     // Applies the change of row r's total, v.after - v.before, and (recording) reports the visit.
     template <bool recording>
     [[gnu::always_inline]] void visit(std::size_t r, const RowVisit& v, const SweepPlace& place, const Axes& velocity) {
-        ContactRow& row = rows_[r];
+        ContactRow& row = active_.rows[r];
         const Axes increment = v.increment();
         const Vec3 impulse = world_impulse(row, increment);
         keep_total(row, v.after);
@@ -146,7 +136,7 @@ private:
 
     void record(std::size_t r, const RowVisit& v, const SweepPlace& place, const Vec3& velocity, const Vec3& increment,
                 const Vec3& impulse, const VelocityChange& change) {
-        const int i = rows_[r].contact;
+        const int i = active_.rows[r].contact;
         const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(i)].derivation;
         VelocityResolution resolution;
         resolution.contact_velocity = velocity;
@@ -170,8 +160,8 @@ private:
         if (!by_body_) {
             by_body_.emplace(frame_.contacts, frame_.bodies.size());
             target_of_.assign(frame_.contacts.size(), 0.0);
-            for (std::size_t k = 0; k < rows_.size(); ++k)
-                target_of_[static_cast<std::size_t>(rows_[k].contact)] = targets_[k];
+            for (std::size_t k = 0; k < active_.rows.size(); ++k)
+                target_of_[static_cast<std::size_t>(active_.rows[k].contact)] = targets_[k];
         }
         by_body_->sharing(d.bodies, sharing_);
         update_contact_velocities(frame_.contacts, sharing_, d.bodies, change, frame_.settings, &iteration.updates);
@@ -186,10 +176,8 @@ private:
     FrameContext& frame_;
     // Every buffer but the recorder's in the frame's scratch (FrameContext::scratch).
     std::pmr::vector<SolverBody> bodies_;
-    std::pmr::vector<ContactRow> rows_;   // the active contacts, in index order
+    ActiveRows active_;                   // the rows, in contact order, with their contacts and keys
     std::pmr::vector<double> targets_;    // per row: the normal velocity it asks for (m/s)
-    std::pmr::vector<int> active_;        // per row: its contact's index
-    std::pmr::vector<ContactKey> keys_;   // per row: its contact's key in the ContactMemory
     std::pmr::vector<int> warm_started_;  // the contacts warm started, in order
     int iterations_ = 0;
     // Only to give the recorder its updates:

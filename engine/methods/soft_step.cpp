@@ -57,11 +57,9 @@ public:
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
           bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          rows_(frame.scratch),
+          active_(frame.rows.size(), frame.scratch),
           soft_(frame.scratch),
           bounce_(frame.scratch),
-          active_(frame.scratch),
-          keys_(frame.scratch),
           start_position_(frame.scratch),
           start_orientation_(frame.scratch),
           moved_(frame.scratch),
@@ -75,16 +73,10 @@ public:
         moved_.assign(frame.bodies.size(), Vec3::Zero());
         turned_.assign(frame.bodies.size(), Mat3::Identity());
         const double cutoff = settings_.restitution_cutoff;
-        rows_.reserve(frame.rows.size());
         soft_.reserve(frame.rows.size());
         bounce_.reserve(frame.rows.size());
-        active_.reserve(frame.rows.size());
-        keys_.reserve(frame.rows.size());
         for (const RowPreparation& d : frame.rows) {
-            if (!fill_contact_row(rows_.emplace_back(), d, bodies_.data())) {  // nothing can move it: no visits
-                rows_.pop_back();
-                continue;
-            }
+            if (!active_.add(d, bodies_.data())) continue;  // nothing can move it: no visits
             SoftContact& c = soft_.emplace_back();
             c.prepared_penetration = d.penetration;
             aim_at(c, d.penetration);
@@ -93,14 +85,12 @@ public:
             if (d.restitution != 0.0) bounce.relative_velocity = separating_velocity(d, frame.bodies, settings_);
             bounce.restitution = d.restitution;
             bounce.bounces = d.restitution != 0.0 && bounce.relative_velocity < -cutoff;
-            active_.push_back(d.contact);
-            keys_.push_back(contact_key(d));
         }
         if (settings_.warm_start && frame.memory) {
             RememberedTotals remembered(*frame.memory, frame.scratch);
-            for (std::size_t r = 0; r < rows_.size(); ++r)
-                if (const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]))
-                    rows_[r].total_impulse = total->after;
+            for (std::size_t r = 0; r < active_.rows.size(); ++r)
+                if (const std::optional<RowVisit> total = remembered.of(active_.rows[r], active_.keys[r]))
+                    active_.rows[r].total_impulse = total->after;
         }
     }
 
@@ -125,18 +115,18 @@ public:
                     sweep<recording, false>({substep, pass, SolverStage::relax});
             store_velocities(bodies_, frame_.bodies);
         }
-        if constexpr (!recording) frame_.recorder.contacts_visited(active_);
+        if constexpr (!recording) frame_.recorder.contacts_visited(active_.contacts);
         std::pmr::vector<int> bounced(frame_.scratch);
-        for (std::size_t r = 0; r < rows_.size(); ++r)
+        for (std::size_t r = 0; r < active_.rows.size(); ++r)
             if (bounce_[r].bounces && soft_[r].most_pushed > 0.0) {
                 restitution<recording>(r, {substeps - 1, 0, SolverStage::restitution});
-                bounced.push_back(rows_[r].contact);
+                bounced.push_back(active_.rows[r].contact);
             }
         if constexpr (!recording) frame_.recorder.contacts_visited(bounced);
         store_velocities(bodies_, frame_.bodies);
     }
 
-    void remember(ContactMemory& memory) const { remember_totals(rows_, keys_, memory); }
+    void remember(ContactMemory& memory) const { remember_totals(active_.rows, active_.keys, memory); }
 
     int visits() const { return visits_; }
 
@@ -172,7 +162,7 @@ private:
 
     // p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)]: the anchors turn with their bodies.
     [[gnu::always_inline]] double penetration(std::size_t r) const {
-        const ContactRow& row = rows_[r];
+        const ContactRow& row = active_.rows[r];
         Vec3 separated = Vec3::Zero();  // how far body 0's anchor moved away from body 1's
         for (int i = 0; i < 2; ++i) {
             if (row.body[i] < 0) continue;
@@ -207,8 +197,8 @@ private:
     // Every contact's lambda applied again: the sub-step's velocities start without any contact impulse.
     template <bool recording>
     void warm_start(int substep) {
-        for (std::size_t r = 0; r < rows_.size(); ++r) {
-            const ContactRow& row = rows_[r];
+        for (std::size_t r = 0; r < active_.rows.size(); ++r) {
+            const ContactRow& row = active_.rows[r];
             RowVisit v;
             v.unclamped = v.after = row.total_impulse;
             Aim aim;
@@ -226,9 +216,9 @@ private:
     // so each contact's p is found first (track_penetration).
     template <bool recording, bool biased, bool moved = false>
     void sweep(const SweepPlace& place) {
-        for (std::size_t r = 0; r < rows_.size(); ++r) {
+        for (std::size_t r = 0; r < active_.rows.size(); ++r) {
             if constexpr (moved) track_penetration(r);
-            const ContactRow& row = rows_[r];
+            const ContactRow& row = active_.rows[r];
             const Axes velocity = row_velocity(row, bodies_.data());
             const NormalTarget target = target_of<biased>(r);
             const RowVisit v = solve_rows(row, velocity, target);
@@ -240,7 +230,7 @@ private:
 
     template <bool recording>
     void restitution(std::size_t r, const SweepPlace& place) {
-        const ContactRow& row = rows_[r];
+        const ContactRow& row = active_.rows[r];
         const double c_used = bounce_[r].restitution;
         const Axes velocity = row_velocity(row, bodies_.data());
         // The target is -c v_n(before): delta lambda_n = -m_n (v_n + c v_n(before)), total kept >= 0.
@@ -254,7 +244,7 @@ private:
     // Applies after - before to the bodies by step 7, keeps the total, and (recording) records the visit.
     template <bool recording>
     [[gnu::always_inline]] void apply(std::size_t r, const RowVisit& v, const SweepPlace& place, const Aim& aim) {
-        ContactRow& row = rows_[r];
+        ContactRow& row = active_.rows[r];
         const Axes increment = v.increment();
         const Vec3 impulse = world_impulse(row, increment);
         keep_total(row, v.after);
@@ -271,7 +261,7 @@ private:
 
     void record(std::size_t r, const SweepPlace& place, const RowVisit& v, const Aim& aim, const Vec3& increment,
                 const Vec3& impulse, const VelocityChange& change) {
-        const ContactRow& row = rows_[r];
+        const ContactRow& row = active_.rows[r];
         const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(row.contact)].derivation;
         const bool bouncing = place.stage == SolverStage::restitution;
         const bool sliding = v.sliding;
@@ -311,11 +301,9 @@ private:
     Softness softness_;
     // Every buffer in the frame's scratch (FrameContext::scratch).
     std::pmr::vector<SolverBody> bodies_;
-    std::pmr::vector<ContactRow> rows_;    // the active contacts, in index order
+    ActiveRows active_;                    // the rows, in contact order, with their contacts and keys
     std::pmr::vector<SoftContact> soft_;   // beside each row
     std::pmr::vector<SoftBounce> bounce_;  // beside each row
-    std::pmr::vector<int> active_;         // each row's contact
-    std::pmr::vector<ContactKey> keys_;    // each row's contact's key in the ContactMemory
     std::pmr::vector<Vec3> start_position_;
     std::pmr::vector<Quat> start_orientation_;
     std::pmr::vector<Vec3> moved_;   // per body: its move since the frame began

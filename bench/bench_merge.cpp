@@ -92,8 +92,8 @@ std::unique_ptr<MergedRun> merge_results(const std::vector<json>& documents, con
         const std::string& folder = folders[d];
         try {
             if (!doc.is_object() || doc.value("format", "") != "impulse-lab-bench" || doc.value("version", 0) != 1)
-                throw io::InputError("--merge",
-                                     "'" + folder + "/results.json' is not the results of impulse-lab bench");
+                throw formats::InputError("--merge",
+                                          "'" + folder + "/results.json' is not the results of impulse-lab bench");
             const json matrix = matrix_of(doc);
             const int k = doc.at("shard").at("k").get<int>();
             const int n = doc.at("shard").at("n").get<int>();
@@ -117,13 +117,13 @@ std::unique_ptr<MergedRun> merge_results(const std::vector<json>& documents, con
                 p.commit = doc.at("commit").get<std::string>();
                 p.date = doc.at("date").get<std::string>();
             } else if (matrix != first_matrix) {
-                throw io::InputError("--merge",
-                                     "'" + folder + "' holds a shard of another matrix than '" + folders[0] +
-                                         "' (its scenes, methods, iterations, repeats or shard count differ)");
+                throw formats::InputError("--merge",
+                                          "'" + folder + "' holds a shard of another matrix than '" + folders[0] +
+                                              "' (its scenes, methods, iterations, repeats or shard count differ)");
             }
             if (const auto [at, added] = shard_folders.emplace(k, folder); !added)
-                throw io::InputError("--merge", "'" + folder + "' and '" + at->second + "' both hold shard " +
-                                                    std::to_string(k) + "/" + std::to_string(n));
+                throw formats::InputError("--merge", "'" + folder + "' and '" + at->second + "' both hold shard " +
+                                                         std::to_string(k) + "/" + std::to_string(n));
             for (const json& row : doc.at("rows")) run.rows.push_back(read_row(row));
             run.wall_time += doc.at("timing").at("wall_time_s").get<double>();
             run.merged_from.push_back({{"folder", folder},
@@ -133,17 +133,18 @@ std::unique_ptr<MergedRun> merge_results(const std::vector<json>& documents, con
                                        {"date", doc.at("date")},
                                        {"wall_time_s", doc.at("timing").at("wall_time_s")}});
         } catch (const nlohmann::json::exception& e) {
-            throw io::InputError("--merge", "'" + folder + "/results.json' is not a whole bench result: " + e.what());
+            throw formats::InputError("--merge",
+                                      "'" + folder + "/results.json' is not a whole bench result: " + e.what());
         } catch (const std::out_of_range& e) {
-            throw io::InputError("--merge", "'" + folder + "/results.json' names an unknown metric");
+            throw formats::InputError("--merge", "'" + folder + "/results.json' names an unknown metric");
         }
     }
     const int n = first_matrix.at("shards").get<int>();
     for (int k = 1; k <= n; ++k)
         if (!shard_folders.count(k))
-            throw io::InputError("--merge", "shard " + std::to_string(k) + "/" + std::to_string(n) +
-                                                " is missing (given: " + std::to_string(shard_folders.size()) + " of " +
-                                                std::to_string(n) + ")");
+            throw formats::InputError("--merge", "shard " + std::to_string(k) + "/" + std::to_string(n) +
+                                                     " is missing (given: " + std::to_string(shard_folders.size()) +
+                                                     " of " + std::to_string(n) + ")");
 
     // Back into the order one run writes (scene-major, then method, then N), each configuration exactly once.
     const auto position = [&](const RunResult& r) {
@@ -160,13 +161,13 @@ std::unique_ptr<MergedRun> merge_results(const std::vector<json>& documents, con
         const auto [s, m, i] = position(run.rows[r]);
         const std::size_t index = (s * run.methods.size() + m) * run.iterations.size() + i;
         if (index != r || r >= expected)
-            throw io::InputError("--merge", "the shards do not hold every configuration exactly once (at " +
-                                                run.rows[r].scene + ", " + run.rows[r].method +
-                                                ", N = " + std::to_string(run.rows[r].n) + ")");
+            throw formats::InputError("--merge", "the shards do not hold every configuration exactly once (at " +
+                                                     run.rows[r].scene + ", " + run.rows[r].method +
+                                                     ", N = " + std::to_string(run.rows[r].n) + ")");
     }
     if (run.rows.size() != expected)
-        throw io::InputError("--merge", "the shards hold " + std::to_string(run.rows.size()) + " of the " +
-                                            std::to_string(expected) + " configurations");
+        throw formats::InputError("--merge", "the shards hold " + std::to_string(run.rows.size()) + " of the " +
+                                                 std::to_string(expected) + " configurations");
     return merged;
 }
 

@@ -20,7 +20,7 @@ struct MergedRun {
 
 // `documents[i]` is the results.json found in `folders[i]`. Every shard of one matrix must be there once: the
 // same scenes (and their metrics and targets), methods, iteration counts and repeats, shards 1..N of one N, and
-// every configuration exactly once. Throws io::InputError("--merge", ...) saying which folder and what is wrong.
+// every configuration exactly once. Throws formats::InputError("--merge", ...) saying which folder and what is wrong.
 std::unique_ptr<MergedRun> merge_results(const std::vector<nlohmann::ordered_json>& documents,
                                          const std::vector<std::string>& folders);
 

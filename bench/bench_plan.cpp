@@ -125,13 +125,13 @@ double half_height(const Scene& scene, std::size_t body) {
 }  // namespace
 
 bool declares_bench_block(std::string_view scene_text) {
-    const nlohmann::ordered_json document = io::parse_json_text(scene_text);
+    const nlohmann::ordered_json document = formats::parse_json_text(scene_text);
     return document.is_object() && document.contains("bench");
 }
 
 BenchScene declared_bench_scene(std::string name, std::string_view scene_text) {
-    const nlohmann::ordered_json document = io::parse_json_text(scene_text);
-    const Scene scene = io::read_scene(document);  // validates the whole file, the bench block with it
+    const nlohmann::ordered_json document = formats::parse_json_text(scene_text);
+    const Scene scene = formats::read_scene(document);  // validates the whole file, the bench block with it
     const int own_frames = scene.world.frames;
     if (!document.contains("bench"))
         return {std::move(name),
@@ -151,7 +151,7 @@ BenchScene declared_bench_scene(std::string name, std::string_view scene_text) {
                     true};
     if (block.contains("duration")) {
         const double frames = std::round(block["duration"].get<double>() / scene.settings.duration);
-        if (frames < 1.0) throw io::InputError("bench.duration", "is shorter than one frame of settings.duration");
+        if (frames < 1.0) throw formats::InputError("bench.duration", "is shorter than one frame of settings.duration");
         spec.frames = static_cast<int>(frames);
     }
     spec.stress = spec.metric != Metric::restitution_error && spec.metric != Metric::momentum_error;
@@ -173,8 +173,8 @@ Shard parse_shard(std::string_view text) {
     };
     if (slash == std::string_view::npos || !whole(text.substr(0, slash), shard.k) ||
         !whole(text.substr(slash + 1), shard.n) || shard.n < 1 || shard.n > 10000 || shard.k < 1 || shard.k > shard.n)
-        throw io::InputError("--shard", "expected K/N with whole numbers 1 <= K <= N <= 10000 (e.g. 2/4), got \"" +
-                                            std::string(text) + "\"");
+        throw formats::InputError("--shard", "expected K/N with whole numbers 1 <= K <= N <= 10000 (e.g. 2/4), got \"" +
+                                                 std::string(text) + "\"");
     return shard;
 }
 
@@ -211,12 +211,12 @@ std::vector<int> parse_iterations(std::string_view text) {
         int n = 0;
         const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), n);
         if (part.empty() || error != std::errc() || end != part.data() + part.size() || n < 1 || n > 1000)
-            throw io::InputError("--iterations",
-                                 "expected counts from 1 to 1000 separated by commas (e.g. 1,2,4,8), "
-                                 "got \"" +
-                                     std::string(text) + "\"");
+            throw formats::InputError("--iterations",
+                                      "expected counts from 1 to 1000 separated by commas (e.g. 1,2,4,8), "
+                                      "got \"" +
+                                          std::string(text) + "\"");
         if (std::find(counts.begin(), counts.end(), n) != counts.end())
-            throw io::InputError("--iterations", std::to_string(n) + " is given twice");
+            throw formats::InputError("--iterations", std::to_string(n) + " is given twice");
         counts.push_back(n);
     }
     return counts;
@@ -229,11 +229,11 @@ std::vector<std::string> parse_names(std::string_view text, std::span<const std:
         if (std::find(known.begin(), known.end(), part) == known.end()) {
             std::string list;
             for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-            throw io::InputError(std::string(flag),
-                                 "no " + std::string(what) + " named \"" + std::string(part) + "\" (" + list + ")");
+            throw formats::InputError(
+                std::string(flag), "no " + std::string(what) + " named \"" + std::string(part) + "\" (" + list + ")");
         }
         if (std::find(names.begin(), names.end(), part) != names.end())
-            throw io::InputError(std::string(flag), "\"" + std::string(part) + "\" is given twice");
+            throw formats::InputError(std::string(flag), "\"" + std::string(part) + "\" is given twice");
         names.emplace_back(part);
     }
     return names;

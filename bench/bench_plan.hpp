@@ -51,7 +51,7 @@ const BenchScene* find_bench_scene(std::string_view name);
 // The bench scene a scene file declares (its "bench" block, docs/scenes.md), named `name`: metric, target,
 // duration (default the scene's settings.frames) and failure threshold (default: for top_drift and any_drift half
 // the top body's height along gravity, for restitution_error and momentum_error none, else 10 x the target).
-// Without a block: the general measures and no verdict. Throws io::InputError (a JSON path) for a bad scene.
+// Without a block: the general measures and no verdict. Throws formats::InputError (a JSON path) for a bad scene.
 BenchScene declared_bench_scene(std::string name, std::string_view scene_text);
 // Whether the scene file's text has a "bench" block (after it was read by declared_bench_scene).
 bool declares_bench_block(std::string_view scene_text);
@@ -74,7 +74,7 @@ struct Shard {
         return configuration % static_cast<std::size_t>(n) == static_cast<std::size_t>(k - 1);
     }
 };
-// "2/4" -> {2, 4}; throws io::InputError("--shard", ...) unless 1 <= K <= N <= 10000.
+// "2/4" -> {2, 4}; throws formats::InputError("--shard", ...) unless 1 <= K <= N <= 10000.
 Shard parse_shard(std::string_view text);
 std::vector<int> default_iterations();  // 1, 2, 4, 8, 16, 32
 
@@ -88,9 +88,9 @@ void set_iteration_count(ResolverSettings& settings, int n);
 // "soft_step.substeps".
 std::string_view iteration_setting(const ResolverSettings& settings);
 
-// "1,2,4" -> {1, 2, 4}: positive integers, no repeats. Throws io::InputError("--iterations", ...).
+// "1,2,4" -> {1, 2, 4}: positive integers, no repeats. Throws formats::InputError("--iterations", ...).
 std::vector<int> parse_iterations(std::string_view text);
-// "a,b" -> names, each checked against `known`; throws io::InputError(flag, ...) naming the unknown one.
+// "a,b" -> names, each checked against `known`; throws formats::InputError(flag, ...) naming the unknown one.
 std::vector<std::string> parse_names(std::string_view text, std::span<const std::string> known, std::string_view flag,
                                      std::string_view what);
 

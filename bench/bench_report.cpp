@@ -1,6 +1,6 @@
 #include "bench/bench_report.hpp"
 
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -78,7 +78,7 @@ std::string format(const char* pattern, double value) {
 }
 
 std::string optional_number(const std::optional<double>& value) {
-    return value ? explain::csv_number(*value) : "";
+    return value ? formats::csv_number(*value) : "";
 }
 
 nlohmann::ordered_json json_number(double value) {
@@ -157,28 +157,28 @@ std::string results_csv(const BenchRun& run) {
             r.scene,
             std::string(metric_name(spec.metric)),
             std::string(metric_unit(spec.metric)),
-            spec.verdict ? explain::csv_number(spec.target) : "",
+            spec.verdict ? formats::csv_number(spec.target) : "",
             r.method,
             std::to_string(r.n),
             r.iteration_setting,
             std::to_string(r.frames),
-            explain::csv_number(r.frames * r.duration),
-            explain::csv_number(r.contacts_per_frame),
-            explain::csv_number(r.time_per_step * 1e3),
+            formats::csv_number(r.frames * r.duration),
+            formats::csv_number(r.contacts_per_frame),
+            formats::csv_number(r.time_per_step * 1e3),
             std::to_string(r.timed_frames),
-            explain::csv_number(a.error),
+            formats::csv_number(a.error),
             a.meets_target ? "true" : "false",
             a.holds ? "true" : "false",
-            explain::csv_field(a.failure),
+            formats::csv_field(a.failure),
             optional_number(a.failure_time),
-            explain::csv_number(a.end_penetration),
-            explain::csv_number(a.top_drift_end),
-            explain::csv_number(a.top_drift_most),
-            explain::csv_number(a.any_drift_most),
+            formats::csv_number(a.end_penetration),
+            formats::csv_number(a.top_drift_end),
+            formats::csv_number(a.top_drift_most),
+            formats::csv_number(a.any_drift_most),
             optional_number(a.collapse_time),
-            explain::csv_number(a.end_kinetic_energy),
-            explain::csv_number(a.jitter),
-            explain::csv_number(a.energy_gain),
+            formats::csv_number(a.end_kinetic_energy),
+            formats::csv_number(a.jitter),
+            formats::csv_number(a.energy_gain),
             optional_number(a.restitution_error),
             optional_number(a.momentum_error),
             a.nan_time ? "true" : "false",

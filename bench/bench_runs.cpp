@@ -59,8 +59,8 @@ int window_for(int frames, const Timing& timing) {
 RunResult run_configuration(const std::string& scene_text, const BenchScene& spec, std::string_view method, int n,
                             const Timing& timing) {
     if (const EngineRow* engine = find_engine(method))
-        return run_engine_configuration(io::read_scene_text(scene_text), spec, *engine, n, timing);
-    Scene scene = io::read_scene_text(scene_text, std::string(method));
+        return run_engine_configuration(formats::read_scene_text(scene_text), spec, *engine, n, timing);
+    Scene scene = formats::read_scene_text(scene_text, std::string(method));
     set_iteration_count(scene.settings, n);
     RunResult result;
     result.scene = spec.name;

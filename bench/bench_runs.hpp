@@ -43,7 +43,7 @@ int warm_up_for(int frames, const Timing& timing);
 int window_for(int frames, const Timing& timing);
 
 // `scene_text` is the scene file's text; `method` a preset name or an engine's (then run_engine_configuration).
-// Throws io::InputError for a bad file.
+// Throws formats::InputError for a bad file.
 RunResult run_configuration(const std::string& scene_text, const BenchScene& spec, std::string_view method, int n,
                             const Timing& timing);
 

@@ -10,7 +10,7 @@
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "cli/data_folder.hpp"
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "cli/progress.hpp"
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
@@ -42,10 +42,10 @@ fs::path checked_out_folder(const std::string& text) {
     std::error_code error;
     if (fs::exists(folder, error)) {
         if (!fs::is_directory(folder, error))
-            throw io::InputError("--out", "cannot write into '" + text + "': not a folder");
-        io::check_writable(folder / "results.csv", "--out");
+            throw formats::InputError("--out", "cannot write into '" + text + "': not a folder");
+        formats::check_writable(folder / "results.csv", "--out");
     } else {
-        io::check_writable(folder, "--out");
+        formats::check_writable(folder, "--out");
     }
     return folder;
 }
@@ -82,7 +82,7 @@ bench::Provenance provenance() {
         const fs::path checkout = shipped_scenes_folder().parent_path();
         if (fs::exists(checkout / ".git", error) && checkout.string().find('\'') == std::string::npos)
             p.commit = first_line_of(("git -C '" + checkout.string() + "' rev-parse --short HEAD 2>/dev/null").c_str());
-    } catch (const io::InputError&) {
+    } catch (const formats::InputError&) {
         // No data folder (--scene-dir named the scenes): no checkout to ask.
     }
     if (p.commit.empty()) p.commit = "unknown";
@@ -108,7 +108,7 @@ std::string fixed(const char* pattern, double value) {
 int scaling(const BenchOptions& options, const fs::path& folder, std::ostream& out, std::ostream* progress) {
     const std::vector<std::string> grids{"grid_10", "grid_100", "grid_1000"};
     std::vector<std::string> texts;
-    for (const std::string& g : grids) texts.push_back(read_input_file(scene_path(options, g)));
+    for (const std::string& g : grids) texts.push_back(formats::read_input_file(scene_path(options, g)));
     const int frames = options.frames.value_or(30);
     std::string csv =
         "scene,search,frames,contacts_per_frame,resolutions_per_frame,resolve_ms_per_frame,"
@@ -119,7 +119,7 @@ int scaling(const BenchOptions& options, const fs::path& folder, std::ostream& o
     int done = 0;
     for (std::size_t g = 0; g < grids.size(); ++g)
         for (const WorstFirstSearch search : {WorstFirstSearch::priority_queue, WorstFirstSearch::full_scan}) {
-            Scene scene = io::read_scene_text(texts[g], std::string("book"));
+            Scene scene = formats::read_scene_text(texts[g], std::string("book"));
             scene.settings.worst_first_search = search;
             World world(scene);
             std::vector<double> resolve_ms, per_resolution_us;
@@ -145,7 +145,7 @@ int scaling(const BenchOptions& options, const fs::path& folder, std::ostream& o
         }
     bar.finish();
     fs::create_directories(folder);
-    io::write_file_atomically(folder / "scaling.csv", csv, "--out");
+    formats::write_file_atomically(folder / "scaling.csv", csv, "--out");
     out << "written: " << (folder / "scaling.csv").string() << '\n';
     return exit_ok;
 }
@@ -175,17 +175,17 @@ void choose_scenes(const BenchOptions& options, bench::BenchRun& run, std::deque
     for (const bench::BenchScene& s : bench::bench_scenes()) known += (known.empty() ? "" : ", ") + s.name;
     for (const std::string& entry : entries) {
         const bool is_path = entry.find('/') != std::string::npos || fs::path(entry).extension() == ".json";
-        if (entry.empty()) throw io::InputError("--scenes", "an empty scene name in \"" + *options.scenes + "\"");
+        if (entry.empty()) throw formats::InputError("--scenes", "an empty scene name in \"" + *options.scenes + "\"");
         std::string path = is_path ? entry : scene_path(options, entry);
         const bench::BenchScene* table = is_path ? nullptr : bench::find_bench_scene(entry);
         if (!is_path && !table)
-            throw io::InputError("--scenes", "no bench scene named \"" + entry + "\" (" + known +
-                                                 "); give your own scene by its path, e.g. scenes/stack_3.json");
+            throw formats::InputError("--scenes", "no bench scene named \"" + entry + "\" (" + known +
+                                                      "); give your own scene by its path, e.g. scenes/stack_3.json");
         std::string text;
         try {
-            text = read_input_file(path);
-        } catch (const FileError& e) {
-            throw io::InputError("--scenes", "cannot read '" + path + "': " + e.problem);
+            text = formats::read_input_file(path);
+        } catch (const formats::FileError& e) {
+            throw formats::InputError("--scenes", "cannot read '" + path + "': " + e.problem);
         }
         const std::string name = fs::path(path).stem().string();
         bench::BenchScene spec;
@@ -197,14 +197,14 @@ void choose_scenes(const BenchOptions& options, bench::BenchRun& run, std::deque
                     std::error_code error;
                     if (fs::equivalent(path, scene_path(options, name), error)) table = named;
                 }
-        } catch (const io::InputError& e) {
-            throw FileError{path, e.where(), e.problem()};
+        } catch (const formats::InputError& e) {
+            throw formats::FileError{path, e.where(), e.problem()};
         }
         for (const bench::BenchScene* s : run.scenes)
             if (s->name == name)
-                throw io::InputError("--scenes", "two scenes are called \"" + name +
-                                                     "\" (a scene is named by its "
-                                                     "file's name)");
+                throw formats::InputError("--scenes", "two scenes are called \"" + name +
+                                                          "\" (a scene is named by its "
+                                                          "file's name)");
         specs.push_back(table ? *table : spec);
         run.scenes.push_back(&specs.back());
         texts.push_back(std::move(text));
@@ -222,10 +222,10 @@ std::vector<std::string> chosen_methods(const BenchOptions& options) {
             for (std::size_t at = list.find(engine); at != std::string_view::npos; at = list.find(engine, at + 1)) {
                 const std::size_t end = at + engine.size();
                 if ((at == 0 || list[at - 1] == ',') && (end == list.size() || list[end] == ','))
-                    throw io::InputError("--methods",
-                                         std::string(engine) +
-                                             " is not in this build: its library was not found when "
-                                             "impulse-lab was configured (scripts/install-deps installs it)");
+                    throw formats::InputError("--methods",
+                                              std::string(engine) +
+                                                  " is not in this build: its library was not found when "
+                                                  "impulse-lab was configured (scripts/install-deps installs it)");
             }
     return bench::parse_names(*options.methods, known, "--methods", "method");
 }
@@ -233,13 +233,13 @@ std::vector<std::string> chosen_methods(const BenchOptions& options) {
 // The five files, then the summary: per scene, the cheapest configuration that meets its target.
 int write_results(const bench::BenchRun& run, const bench::Provenance& where, const fs::path& folder, std::ostream& out,
                   std::ostream& err) {
-    const io::HeldInterruptions held;  // Ctrl-C waits until every file is in place (or none is)
-    std::vector<io::StagedFile> files;
+    const formats::HeldInterruptions held;  // Ctrl-C waits until every file is in place (or none is)
+    std::vector<formats::StagedFile> files;
     std::error_code error;
     fs::create_directories(folder, error);
-    if (error) throw io::InputError("--out", "cannot create '" + folder.string() + "': " + error.message());
+    if (error) throw formats::InputError("--out", "cannot create '" + folder.string() + "': " + error.message());
     files.emplace_back(folder / "results.csv", bench::results_csv(run), "--out");
-    files.emplace_back(folder / "results.json", io::format_json(bench::results_json(run, where)), "--out");
+    files.emplace_back(folder / "results.json", formats::format_json(bench::results_json(run, where)), "--out");
     files.emplace_back(folder / "stability.md", bench::stability_markdown(run), "--out");
     std::string charts_problem;
     try {
@@ -249,7 +249,7 @@ int write_results(const bench::BenchRun& run, const bench::Provenance& where, co
         charts_problem = e.what();
         while (files.size() > 3) files.pop_back();
     }
-    for (io::StagedFile& f : files) f.commit();
+    for (formats::StagedFile& f : files) f.commit();
 
     out << "bench: " << run.scenes.size() << " scene(s) x " << run.methods.size() << " method(s) x "
         << run.iterations.size() << " iteration count(s)"
@@ -298,21 +298,21 @@ int merge(const BenchOptions& options, const fs::path& folder, std::ostream& out
                                       {options.frames.has_value(), "--frames"},
                                       {options.scaling, "--scaling"}})
         if (given)
-            throw io::InputError("--merge",
-                                 std::string("cannot be combined with ") + flag + " (the shards say what ran)");
+            throw formats::InputError("--merge",
+                                      std::string("cannot be combined with ") + flag + " (the shards say what ran)");
     std::vector<nlohmann::ordered_json> documents;
     for (const std::string& dir : options.merge) {
         const fs::path file = fs::path(dir) / "results.json";
         std::string text;
         try {
-            text = read_input_file(file.string());
-        } catch (const FileError& e) {
-            throw io::InputError("--merge", "cannot read '" + file.string() + "': " + e.problem);
+            text = formats::read_input_file(file.string());
+        } catch (const formats::FileError& e) {
+            throw formats::InputError("--merge", "cannot read '" + file.string() + "': " + e.problem);
         }
         try {
-            documents.push_back(io::parse_json_text(text));
-        } catch (const io::InputError& e) {
-            throw io::InputError("--merge", "'" + file.string() + "' is not JSON: " + e.problem());
+            documents.push_back(formats::parse_json_text(text));
+        } catch (const formats::InputError& e) {
+            throw formats::InputError("--merge", "'" + file.string() + "' is not JSON: " + e.problem());
         }
     }
     const std::unique_ptr<bench::MergedRun> merged = bench::merge_results(documents, options.merge);
@@ -328,7 +328,8 @@ int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& 
     bench::BenchRun run;
     run.methods = chosen_methods(options);
     run.iterations = options.iterations ? bench::parse_iterations(*options.iterations) : bench::default_iterations();
-    if (options.repeats < 1) throw io::InputError("--repeats", "must be >= 1, got " + std::to_string(options.repeats));
+    if (options.repeats < 1)
+        throw formats::InputError("--repeats", "must be >= 1, got " + std::to_string(options.repeats));
     if (options.shard) run.shard = bench::parse_shard(*options.shard);
     std::deque<bench::BenchScene> specs;
     std::vector<std::string> texts, paths;
@@ -363,8 +364,8 @@ int bench_command(const BenchOptions& options, std::ostream& out, std::ostream& 
                 timing.measure_recording = method == run.methods.front() && n == representative;
                 try {
                     run.rows.push_back(bench::run_configuration(texts[i], *run.scenes[i], method, n, timing));
-                } catch (const io::InputError& e) {
-                    throw FileError{paths[i], e.where(), e.problem()};
+                } catch (const formats::InputError& e) {
+                    throw formats::FileError{paths[i], e.where(), e.problem()};
                 }
                 done += bench::frames_for(*run.scenes[i], run.timing);
                 bar.update(done);

@@ -5,7 +5,7 @@
 #include "bench/bench_plan.hpp"
 #include "cli/commands.hpp"
 #include "cli/flags.hpp"
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "cli/interrupt.hpp"
 #include "formats/input_error.hpp"
 #include "formats/suggest.hpp"
@@ -32,7 +32,7 @@ std::vector<std::string> preset_choices() {
 // --max-trace-mb, for every command that records a trace.
 void add_max_trace_mb(CLI::App& command, std::optional<double>& max_trace_mb, FlagCatalog& c) {
     std::ostringstream default_mb;
-    default_mb << inspect::default_max_trace_mb;
+    default_mb << formats::default_max_trace_mb;
     finite_number(
         command.add_option("--max-trace-mb", max_trace_mb,
                            "Stop recording when the trace would pass this size in MB (estimated; default " +
@@ -91,7 +91,7 @@ void add_run(CLI::App& app, RunOptions& o, FlagCatalog& c) {
 }
 
 // How a case or scene is run before it is looked at: the same four flags for inspect, worksheet and diff.
-void add_open_options(CLI::App& command, inspect::OpenOptions& o, const std::string& what, FlagCatalog& c) {
+void add_open_options(CLI::App& command, model::OpenOptions& o, const std::string& what, FlagCatalog& c) {
     one_of(command.add_option("--preset", o.preset, "Settings preset for " + what), c, preset_choices(), "PRESET");
     command.add_option("--set", o.settings, "Change one setting of " + what + " (repeatable)")->type_name("NAME=VALUE");
     command.add_option("--record", o.record, "Record only frames=A..B or contacts=I,J,... of " + what)
@@ -256,7 +256,7 @@ void add_bench(CLI::App& app, BenchOptions& o, FlagCatalog& c) {
               c, "K/N", "K/N: whole numbers, 1 <= K <= N <= 10000", [](const std::string& text) -> std::string {
                   try {
                       bench::parse_shard(text);
-                  } catch (const io::InputError& e) {
+                  } catch (const formats::InputError& e) {
                       return e.problem();
                   }
                   return {};
@@ -384,7 +384,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         return found.empty() ? nullptr : const_cast<CLI::App*>(found.front());
     };
     const auto unknown_command = [&](const std::string& name) {
-        const auto meant = io::closest_name(name, commands);
+        const auto meant = formats::closest_name(name, commands);
         err << "impulse-lab: unknown command \"" << name << "\""
             << (meant ? " (did you mean " + *meant + "?)" : std::string()) << "; commands: ";
         for (std::size_t i = 0; i < commands.size(); ++i) err << (i ? ", " : "") << commands[i];
@@ -429,7 +429,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     } catch (const CLI::ParseError& e) {
         err << "impulse-lab: " << parse_error_line(app, catalog, args, e) << '\n';
         return exit_bad_input;
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         err << "impulse-lab: " << e.what() << '\n';
         return exit_bad_input;
     }
@@ -454,10 +454,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         err << "impulse-lab: interrupted (" << signal_name(e.signal)
             << "): no file written, those already there are unchanged\n";
         return 128 + e.signal;
-    } catch (const FileError& e) {
+    } catch (const formats::FileError& e) {
         err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
         return exit_bad_input;
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         err << "impulse-lab: " << e.what() << '\n';
         return exit_bad_input;
     } catch (const std::exception& e) {

@@ -1,5 +1,5 @@
 #pragma once
-// The commands behind the CLI, each taking its parsed options. They throw io::InputError for bad input;
+// The commands behind the CLI, each taking its parsed options. They throw formats::InputError for bad input;
 // `where` is then prefixed with the file it concerns by the caller (cli.cpp).
 
 #include "model/script.hpp"
@@ -20,7 +20,7 @@ struct ResolveOptions {
     std::vector<std::string> settings;  // --set name=value, in order
     std::optional<std::string> trace_file;
     std::vector<std::string> record;     // --record frames=A..B / contacts=I,J
-    std::optional<double> max_trace_mb;  // default inspect::default_max_trace_mb
+    std::optional<double> max_trace_mb;  // default formats::default_max_trace_mb
     bool explain = false;
 };
 
@@ -34,7 +34,7 @@ struct RunOptions {
     std::vector<std::string> settings;  // --set name=value, in order
     std::optional<std::string> trace_file;
     std::vector<std::string> record;
-    std::optional<double> max_trace_mb;  // default inspect::default_max_trace_mb
+    std::optional<double> max_trace_mb;  // default formats::default_max_trace_mb
     std::optional<std::string> states_file;
     bool keep_partial = false;  // Ctrl-C or SIGTERM: write the trace and states of the frames done
 };
@@ -50,7 +50,7 @@ struct InspectOptions {
     std::optional<std::string> script;
     std::optional<std::string> screenshot;
     std::optional<int> bench_frames;
-    inspect::OpenOptions open;  // --preset, --set, --record, --frames for a case or scene
+    model::OpenOptions open;  // --preset, --set, --record, --frames for a case or scene
 };
 
 // Opens the inspector: a window, or with --headless the same frames rendered offscreen.
@@ -73,9 +73,9 @@ struct LessonOptions {
 int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream& err);
 
 // A --script file's actions; throws FileError naming the file and line.
-std::vector<inspect::Action> read_script_file(const std::string& path);
+std::vector<model::Action> read_script_file(const std::string& path);
 
-// "WxH" for --size: throws io::InputError("--size", ...).
+// "WxH" for --size: throws formats::InputError("--size", ...).
 std::pair<int, int> parse_window_size(const std::string& text);
 
 // Prints one line per file (all files are checked); returns exit_bad_input if a file cannot be read, else
@@ -87,7 +87,7 @@ struct WorksheetOptions {
     std::string file;                // a lesson, case, scene or trace
     std::vector<std::string> steps;  // --steps: places in the --goto syntax; empty = the first recorded frame
     std::string out;                 // .json or .csv
-    inspect::OpenOptions open;       // --preset, --set, --record, --frames for a case or scene
+    model::OpenOptions open;         // --preset, --set, --record, --frames for a case or scene
 };
 int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::ostream& err);
 
@@ -98,7 +98,7 @@ struct DiffOptions {
     double atol = 1e-12;
     std::string format = "text";  // text, json or csv
     std::optional<std::string> out;
-    inspect::OpenOptions open;  // --preset, --set, --record, --frames for a case or scene
+    model::OpenOptions open;  // --preset, --set, --record, --frames for a case or scene
 };
 // Returns exit_ok when everything matches, exit_verdict for a mismatch, a blank cell or (of several files) one
 // that could not be read; throws for a bad reference, flag or single file.

@@ -23,8 +23,8 @@ fs::path own_executable() {
     std::error_code error;
     fs::path exe = fs::read_symlink("/proc/self/exe", error);
     if (error)
-        throw io::InputError("data folder", "cannot find the program's own location (/proc/self/exe: " +
-                                                error.message() + "); set " + data_folder_variable);
+        throw formats::InputError("data folder", "cannot find the program's own location (/proc/self/exe: " +
+                                                     error.message() + "); set " + data_folder_variable);
     return exe;
 }
 
@@ -40,16 +40,18 @@ fs::path data_folder() {
     if (const char* named = std::getenv(data_folder_variable); named && *named) {
         const fs::path folder(named);
         if (!holds_data(folder))
-            throw io::InputError(data_folder_variable, "'" + folder.string() +
-                                                           "' holds no lessons/ and scenes/ folders (it should name "
-                                                           "the data folder, e.g. /usr/share/impulse-lab)");
+            throw formats::InputError(data_folder_variable,
+                                      "'" + folder.string() +
+                                          "' holds no lessons/ and scenes/ folders (it should name "
+                                          "the data folder, e.g. /usr/share/impulse-lab)");
         return folder;
     }
     const fs::path beside = own_executable().parent_path().parent_path() / "share" / "impulse-lab";
     if (!holds_data(beside))
-        throw io::InputError("data folder", "no lessons/ and scenes/ in " + beside.lexically_normal().string() +
-                                                " (where an installed impulse-lab keeps them); reinstall, or set " +
-                                                data_folder_variable + " to the folder that holds them");
+        throw formats::InputError("data folder",
+                                  "no lessons/ and scenes/ in " + beside.lexically_normal().string() +
+                                      " (where an installed impulse-lab keeps them); reinstall, or set " +
+                                      data_folder_variable + " to the folder that holds them");
     return beside;
 }
 

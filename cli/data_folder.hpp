@@ -13,7 +13,7 @@ inline constexpr const char* data_folder_variable = "IMPULSE_LAB_DATA_DIR";
 // The data folder: $IMPULSE_LAB_DATA_DIR when it is set, else share/impulse-lab beside the program's own folder
 // (PREFIX/bin/../share/impulse-lab), which is where `cmake --install` puts it. A build folder has the same layout
 // (build/<preset>/share/impulse-lab links to the source tree's folders, made when it is configured), so a program
-// run from it finds the checkout's files. Throws io::InputError naming where it looked when neither holds
+// run from it finds the checkout's files. Throws formats::InputError naming where it looked when neither holds
 // lessons/ and scenes/.
 std::filesystem::path data_folder();
 

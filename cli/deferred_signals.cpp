@@ -49,7 +49,7 @@ bool DeferredSignals::pending() const {
 
 void install_deferred_signals() {
     static DeferredSignals policy;
-    io::set_write_interruptions(&policy);
+    formats::set_write_interruptions(&policy);
 }
 
 }  // namespace impulse::cli

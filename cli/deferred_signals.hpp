@@ -1,6 +1,6 @@
 #pragma once
 // The program's policy for interruptions while files are written (the formats layer asks for it through
-// io::WriteInterruptions and knows no signals itself): SIGINT and SIGTERM are held back, in this thread, while a
+// formats::WriteInterruptions and knows no signals itself): SIGINT and SIGTERM are held back, in this thread, while a
 // set of files is staged and renamed into place, so Ctrl-C takes effect once every file is whole and no
 // temporary is left; SIGPIPE is held back too, so a FIFO's reader that goes away is an error (EPIPE) rather than
 // the end of the program between two files of a set, and a SIGPIPE so raised is taken back.
@@ -12,7 +12,7 @@
 
 namespace impulse::cli {
 
-class DeferredSignals final : public io::WriteInterruptions {
+class DeferredSignals final : public formats::WriteInterruptions {
 public:
     void hold() override;
     void release() override;

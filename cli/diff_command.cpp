@@ -4,7 +4,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "cli/outputs.hpp"
 #include "course/class_report.hpp"
 #include "course/worksheet.hpp"
@@ -39,7 +39,7 @@ bool is_csv(const std::string& file) {
 
 // A worksheet on standard input has no name to tell CSV by: JSON starts with "{".
 bool is_csv_text(const std::string& file, const std::string& text) {
-    if (file != standard_stream) return is_csv(file);
+    if (file != formats::standard_stream) return is_csv(file);
     const std::size_t first = text.find_first_not_of(" \t\r\n\xEF\xBB\xBF");
     return first == std::string::npos || text[first] != '{';
 }
@@ -47,16 +47,16 @@ bool is_csv_text(const std::string& file, const std::string& text) {
 // What the class is graded against: the reference run, its trace document, and — when the reference is a lesson
 // or a worksheet — the cells the worksheet was handed out with.
 struct Reference {
-    inspect::Session session;
-    io::json document;
+    model::Session session;
+    formats::json document;
     std::optional<std::vector<std::string>> asked;
     std::string what;  // for the reports' headers
 };
 
-std::vector<std::string> cell_paths(const coursework::Worksheet& sheet) {
+std::vector<std::string> cell_paths(const course::Worksheet& sheet) {
     std::vector<std::string> paths;
-    for (const coursework::WorksheetStep& step : sheet.steps)
-        for (const coursework::WorksheetEntry& cell : step.cells) paths.push_back(cell.path);
+    for (const course::WorksheetStep& step : sheet.steps)
+        for (const course::WorksheetEntry& cell : step.cells) paths.push_back(cell.path);
     return paths;
 }
 
@@ -65,77 +65,75 @@ std::vector<std::string> cell_paths(const coursework::Worksheet& sheet) {
 Reference open_reference(const DiffOptions& o) {
     if (lowered_extension(o.reference) == ".md") {
         if (const auto flag = o.open.first_given())
-            throw io::InputError(std::string(*flag),
-                                 "a lesson runs with its own settings; give its scene file to run it differently");
-        lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(o.reference));
-        io::json document = io::trace_json(lesson.session.trace());
-        const std::vector<inspect::Cursor> places =
-            coursework::places_with_cells(lesson.session, lesson.places, &document);
-        std::vector<std::string> asked = cell_paths(coursework::make_worksheet(lesson.session, places, &document));
+            throw formats::InputError(std::string(*flag),
+                                      "a lesson runs with its own settings; give its scene file to run it differently");
+        course::PreparedLesson lesson = course::prepare_lesson(course::read_lesson(o.reference));
+        formats::json document = formats::trace_json(lesson.session.trace());
+        const std::vector<model::Cursor> places = course::places_with_cells(lesson.session, lesson.places, &document);
+        std::vector<std::string> asked = cell_paths(course::make_worksheet(lesson.session, places, &document));
         const std::string what = "lesson " + std::to_string(lesson.lesson.number) + " · " + lesson.lesson.title;
         return {std::move(lesson.session), std::move(document), std::move(asked), what};
     }
-    const std::string text = read_input_file(o.reference);
+    const std::string text = formats::read_input_file(o.reference);
     try {
-        const io::json document = io::parse_json_text(text);
-        if (coursework::is_worksheet(document)) {
+        const formats::json document = formats::parse_json_text(text);
+        if (course::is_worksheet(document)) {
             if (const auto flag = o.open.first_given())
-                throw io::InputError(std::string(*flag),
-                                     "a worksheet reference is re-run as it was made; give the case or scene to "
-                                     "run it differently");
+                throw formats::InputError(std::string(*flag),
+                                          "a worksheet reference is re-run as it was made; give the case or scene to "
+                                          "run it differently");
             std::vector<std::string> asked;
-            for (const coursework::FilledCell& cell : coursework::read_worksheet_json(document).cells)
+            for (const course::FilledCell& cell : course::read_worksheet_json(document).cells)
                 asked.push_back(cell.path);
-            inspect::Session session = inspect::Session::from_trace(coursework::rerun_reference(document),
-                                                                    inspect::SourceKind::trace_file, o.reference);
-            io::json trace = io::trace_json(session.trace());
+            model::Session session = model::Session::from_trace(course::rerun_reference(document),
+                                                                model::SourceKind::trace_file, o.reference);
+            formats::json trace = formats::trace_json(session.trace());
             return {std::move(session), std::move(trace), std::move(asked), "worksheet"};
         }
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         if (e.where().starts_with("--")) throw;
-        throw FileError{input_name(o.reference), e.where(), e.problem()};
+        throw formats::FileError{formats::input_name(o.reference), e.where(), e.problem()};
     }
-    inspect::Session session = inspect::Session::open_text(text, o.reference, o.open);
-    io::json trace = io::trace_json(session.trace());
-    const std::string what = session.kind() == inspect::SourceKind::case_file    ? "case"
-                             : session.kind() == inspect::SourceKind::scene_file ? "scene"
-                                                                                 : "trace";
+    model::Session session = model::Session::open_text(text, o.reference, o.open);
+    formats::json trace = formats::trace_json(session.trace());
+    const std::string what = session.kind() == model::SourceKind::case_file    ? "case"
+                             : session.kind() == model::SourceKind::scene_file ? "scene"
+                                                                               : "trace";
     return {std::move(session), std::move(trace), std::nullopt, what};
 }
 
-coursework::DiffReport diff_file(const Reference& reference, const std::string& file,
-                                 const coursework::Tolerance& tolerance, std::ostream& err) {
-    const std::string text = read_input_file(file);
+course::DiffReport diff_file(const Reference& reference, const std::string& file, const course::Tolerance& tolerance,
+                             std::ostream& err) {
+    const std::string text = formats::read_input_file(file);
     try {
-        coursework::DiffReport report;
+        course::DiffReport report;
         const std::vector<std::string>* asked = reference.asked ? &*reference.asked : nullptr;
         if (is_csv_text(file, text)) {
-            report =
-                coursework::diff_worksheet(reference.document, coursework::read_worksheet_csv(text), tolerance, asked);
+            report = course::diff_worksheet(reference.document, course::read_worksheet_csv(text), tolerance, asked);
         } else {
-            io::json document = io::parse_json_text(text);
-            if (coursework::is_worksheet(document)) {
-                report = coursework::diff_worksheet(reference.document, coursework::read_worksheet_json(document),
-                                                    tolerance, asked);
+            formats::json document = formats::parse_json_text(text);
+            if (course::is_worksheet(document)) {
+                report =
+                    course::diff_worksheet(reference.document, course::read_worksheet_json(document), tolerance, asked);
             } else if (document.is_object() && document.contains("format") &&
-                       document["format"] == io::trace_format_name) {
+                       document["format"] == formats::trace_format_name) {
                 // A format-1 trace is compared in today's words: its renamed keys moved first.
-                if (io::upgrade_trace_document(document)) err << io::format1_note(file) << '\n';
-                io::read_trace(document);  // its schema, and that every index names a body or contact
-                report = coursework::diff_traces(reference.document, document, tolerance);
+                if (formats::upgrade_trace_document(document)) err << formats::format1_note(file) << '\n';
+                formats::read_trace(document);  // its schema, and that every index names a body or contact
+                report = course::diff_traces(reference.document, document, tolerance);
             } else {
                 const bool has_format = document.is_object() && document.contains("format");
-                throw io::InputError(has_format ? "format" : "",
-                                     std::string(has_format ? "" : "no \"format\": ") + "expected a trace (\"" +
-                                         std::string(io::trace_format_name) + "\") or a worksheet (\"" +
-                                         std::string(coursework::worksheet_format_name) + "\")" +
-                                         (has_format ? ", got " + document["format"].dump() : ""));
+                throw formats::InputError(has_format ? "format" : "",
+                                          std::string(has_format ? "" : "no \"format\": ") + "expected a trace (\"" +
+                                              std::string(formats::trace_format_name) + "\") or a worksheet (\"" +
+                                              std::string(course::worksheet_format_name) + "\")" +
+                                              (has_format ? ", got " + document["format"].dump() : ""));
             }
         }
-        coursework::word_findings(report, reference.session.trace(), reference.document);
+        course::word_findings(report, reference.session.trace(), reference.document);
         return report;
-    } catch (const io::InputError& e) {
-        throw FileError{input_name(file), e.where(), e.problem()};
+    } catch (const formats::InputError& e) {
+        throw formats::FileError{formats::input_name(file), e.where(), e.problem()};
     }
 }
 
@@ -161,8 +159,8 @@ std::vector<Submission> files_named(const std::vector<std::string>& others, bool
         for (const auto& entry : fs::directory_iterator(other, error))
             if (entry.is_regular_file(error) && !entry.path().filename().string().starts_with("."))
                 inside.push_back(entry.path().string());
-        if (error) throw FileError{other, "", "cannot list the folder: " + error.message()};
-        if (inside.empty()) throw FileError{other, "", "is a folder without files to compare"};
+        if (error) throw formats::FileError{other, "", "cannot list the folder: " + error.message()};
+        if (inside.empty()) throw formats::FileError{other, "", "is a folder without files to compare"};
         std::sort(inside.begin(), inside.end());
         for (const std::string& file : inside) {
             const std::string extension = lowered_extension(file);
@@ -177,55 +175,56 @@ std::vector<Submission> files_named(const std::vector<std::string>& others, bool
 
 void check_tolerance(double value, const char* flag) {
     if (!std::isfinite(value) || value < 0)
-        throw io::InputError(flag, "must be a number >= 0, got " + io::number_text(value));
+        throw formats::InputError(flag, "must be a number >= 0, got " + formats::number_text(value));
 }
 
 // --out for a class: a folder (created, its parent must exist), never an existing file.
 void check_report_folder(const fs::path& folder) {
     std::error_code error;
-    if (folder.empty()) throw io::InputError("--out", "empty folder name");
-    if (folder == standard_stream)
-        throw io::InputError("--out",
-                             "with several files --out is a folder for summary.csv, cells.csv and the feedback "
-                             "pages, and '-' (standard output) is not a folder (--format csv prints the summary)");
+    if (folder.empty()) throw formats::InputError("--out", "empty folder name");
+    if (folder == formats::standard_stream)
+        throw formats::InputError("--out",
+                                  "with several files --out is a folder for summary.csv, cells.csv and the feedback "
+                                  "pages, and '-' (standard output) is not a folder (--format csv prints the summary)");
     if (fs::exists(folder, error) && !fs::is_directory(folder, error))
-        throw io::InputError("--out",
-                             "with several files --out is a folder for summary.csv, cells.csv and the "
-                             "feedback pages, and '" +
-                                 folder.string() + "' is a file");
+        throw formats::InputError("--out",
+                                  "with several files --out is a folder for summary.csv, cells.csv and the "
+                                  "feedback pages, and '" +
+                                      folder.string() + "' is a file");
     const std::string extension = lowered_extension(folder.string());
     if (extension == ".csv" || extension == ".json" || extension == ".txt" || extension == ".md")
-        throw io::InputError("--out",
-                             "with several files --out is a folder for summary.csv, cells.csv and the "
-                             "feedback pages, got '" +
-                                 folder.string() + "', a file name (--format csv prints the summary alone)");
+        throw formats::InputError("--out",
+                                  "with several files --out is a folder for summary.csv, cells.csv and the "
+                                  "feedback pages, got '" +
+                                      folder.string() + "', a file name (--format csv prints the summary alone)");
     const fs::path parent = folder.has_parent_path() ? folder.parent_path() : fs::path(".");
     if (!fs::is_directory(parent, error))
-        throw io::InputError("--out", "cannot create '" + folder.string() + "': No such file or directory");
+        throw formats::InputError("--out", "cannot create '" + folder.string() + "': No such file or directory");
 }
 
 // The class report, staged and renamed into place together: summary.csv, cells.csv, feedback/NAME.md.
-void write_class_report(const fs::path& folder, const std::vector<coursework::ClassRow>& rows,
-                        const coursework::ClassSubject& subject) {
+void write_class_report(const fs::path& folder, const std::vector<course::ClassRow>& rows,
+                        const course::ClassSubject& subject) {
     std::vector<std::string> names;
-    for (const coursework::ClassRow& row : rows) names.push_back(row.file);
-    const std::vector<std::string> pages = coursework::feedback_names(names);
+    for (const course::ClassRow& row : rows) names.push_back(row.file);
+    const std::vector<std::string> pages = course::feedback_names(names);
 
-    std::vector<std::pair<fs::path, std::string>> texts{{folder / "summary.csv", coursework::summary_csv(rows)},
-                                                        {folder / "cells.csv", coursework::cells_csv(rows)}};
+    std::vector<std::pair<fs::path, std::string>> texts{{folder / "summary.csv", course::summary_csv(rows)},
+                                                        {folder / "cells.csv", course::cells_csv(rows)}};
     for (std::size_t i = 0; i < rows.size(); ++i)
-        texts.emplace_back(folder / "feedback" / pages[i], coursework::feedback_markdown(rows[i], subject));
+        texts.emplace_back(folder / "feedback" / pages[i], course::feedback_markdown(rows[i], subject));
 
-    const io::HeldInterruptions held;  // Ctrl-C waits until every file is in place (or none is)
+    const formats::HeldInterruptions held;  // Ctrl-C waits until every file is in place (or none is)
     std::error_code error;
     fs::create_directories(folder / "feedback", error);
     if (error)
-        throw io::InputError("--out", "cannot create '" + (folder / "feedback").string() + "': " + error.message());
+        throw formats::InputError("--out",
+                                  "cannot create '" + (folder / "feedback").string() + "': " + error.message());
     // Whatever would stop a rename (a folder where a file goes) stops the report before any file is replaced.
-    for (const auto& [path, text] : texts) io::check_writable(path, "--out");
-    std::vector<io::StagedFile> files;
+    for (const auto& [path, text] : texts) formats::check_writable(path, "--out");
+    std::vector<formats::StagedFile> files;
     for (const auto& [path, text] : texts) files.emplace_back(path, text, "--out");
-    for (io::StagedFile& f : files) f.commit();
+    for (formats::StagedFile& f : files) f.commit();
 }
 
 }  // namespace
@@ -233,7 +232,7 @@ void write_class_report(const fs::path& folder, const std::vector<coursework::Cl
 int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& err) {
     check_tolerance(options.rtol, "--rtol");
     check_tolerance(options.atol, "--atol");
-    const coursework::Tolerance tolerance{options.rtol, options.atol};
+    const course::Tolerance tolerance{options.rtol, options.atol};
     bool folder = false;
     const std::vector<Submission> files = files_named(options.others, folder);
     const bool whole_class = files.size() > 1 || folder;
@@ -243,43 +242,44 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
         if (whole_class)
             check_report_folder(*options.out);
         else if (out_is_file)
-            io::check_writable(*options.out, "--out");
+            formats::check_writable(*options.out, "--out");
     }
 
     const Reference reference = open_reference(options);
     if (!whole_class) {
         // One file: its every mismatch; a file that cannot be read is bad input.
-        const coursework::DiffReport r = diff_file(reference, files.front().file, tolerance, err);
-        const coursework::DiffSubject subject{input_name(options.reference), input_name(files.front().file), tolerance};
-        const std::string report = options.format == "json"  ? coursework::report_json(r, subject)
-                                   : options.format == "csv" ? coursework::report_csv(r)
-                                                             : coursework::report_text(r, subject);
-        if (out_is_file) io::write_file_atomically(*options.out, report, "--out");
+        const course::DiffReport r = diff_file(reference, files.front().file, tolerance, err);
+        const course::DiffSubject subject{formats::input_name(options.reference),
+                                          formats::input_name(files.front().file), tolerance};
+        const std::string report = options.format == "json"  ? course::report_json(r, subject)
+                                   : options.format == "csv" ? course::report_csv(r)
+                                                             : course::report_text(r, subject);
+        if (out_is_file) formats::write_file_atomically(*options.out, report, "--out");
         out << report;
         return r.all_match() ? exit_ok : exit_verdict;
     }
 
     // A class: one row per file; a file that cannot be read gets its row (and a line here) and does not stop
     // the others.
-    std::vector<coursework::ClassRow> rows;
+    std::vector<course::ClassRow> rows;
     int code = exit_ok;
     for (const Submission& s : files) {
         try {
-            if (!s.not_read.empty()) throw FileError{s.file, "", s.not_read};
-            rows.push_back({input_name(s.file), diff_file(reference, s.file, tolerance, err), ""});
+            if (!s.not_read.empty()) throw formats::FileError{s.file, "", s.not_read};
+            rows.push_back({formats::input_name(s.file), diff_file(reference, s.file, tolerance, err), ""});
             if (!rows.back().report->all_match()) code = exit_verdict;
-        } catch (const FileError& e) {
+        } catch (const formats::FileError& e) {
             const std::string error = (e.where.empty() ? "" : e.where + ": ") + e.problem;
             err << "impulse-lab: " << e.file << ": " << error << '\n';
-            rows.push_back({input_name(s.file), std::nullopt, error});
+            rows.push_back({formats::input_name(s.file), std::nullopt, error});
             code = exit_verdict;
         }
     }
-    const coursework::ClassSubject subject{input_name(options.reference), reference.what, tolerance};
+    const course::ClassSubject subject{formats::input_name(options.reference), reference.what, tolerance};
     if (options.out) write_class_report(*options.out, rows, subject);
-    out << (options.format == "json"  ? coursework::summary_json(rows, subject)
-            : options.format == "csv" ? coursework::summary_csv(rows)
-                                      : coursework::summary_text(rows, subject));
+    out << (options.format == "json"  ? course::summary_json(rows, subject)
+            : options.format == "csv" ? course::summary_csv(rows)
+                                      : course::summary_text(rows, subject));
     if (options.out && options.format == "text")
         out << "class report written to " << *options.out << ": summary.csv, cells.csv and " << rows.size()
             << (rows.size() == 1 ? " feedback page" : " feedback pages") << " in feedback/\n";

@@ -1,6 +1,6 @@
 #include "cli/flags.hpp"
 
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 #include "formats/suggest.hpp"
@@ -42,7 +42,8 @@ std::string unknown_flag(const CLI::App& app, const CLI::App* command, const std
     const CLI::App& scope = command ? *command : app;
     std::string text = flag + ": unknown flag";
     if (command) text += " of " + command->get_name();
-    if (const auto meant = io::closest_name(flag, flag_names(scope))) return text + " (did you mean " + *meant + "?)";
+    if (const auto meant = formats::closest_name(flag, flag_names(scope)))
+        return text + " (did you mean " + *meant + "?)";
     std::vector<std::string> owners;
     for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
         if (sub != command && sub->get_option_no_throw(flag)) owners.push_back(sub->get_name());
@@ -76,7 +77,7 @@ CLI::Option* whole_number(CLI::Option* option, FlagCatalog& catalog, long long l
 }
 
 CLI::Option* finite_number(CLI::Option* option, FlagCatalog& catalog, double lowest, double highest) {
-    const std::string range = io::number_text(lowest) + " to " + io::number_text(highest);
+    const std::string range = formats::number_text(lowest) + " to " + formats::number_text(highest);
     const std::string words = "a number from " + range;
     // CLI11's Range lets NaN through: every comparison with it is false.
     option->check(CLI::Validator(
@@ -101,7 +102,7 @@ CLI::Option* one_of(CLI::Option* option, FlagCatalog& catalog, std::vector<std::
     option->check(CLI::Validator(
         [names, words](std::string& text) -> std::string {
             if (std::find(names.begin(), names.end(), text) != names.end()) return {};
-            const auto meant = io::closest_name(text, names);
+            const auto meant = formats::closest_name(text, names);
             return "must be " + words + ", got \"" + text + "\"" + (meant ? " (did you mean " + *meant + "?)" : "");
         },
         ""));
@@ -199,20 +200,20 @@ void check_standard_streams(const CLI::App& command, const FlagCatalog& catalog)
         if (kind == catalog.kinds.end()) continue;
         const std::string name = option->get_name(false, true);
         for (const std::string& value : option->results()) {
-            if (value != standard_stream) continue;
+            if (value != formats::standard_stream) continue;
             switch (kind->second) {
                 case ValueKind::folder:
-                    throw io::InputError(name, "is a folder, so it cannot be standard input or output (\"-\")");
+                    throw formats::InputError(name, "is a folder, so it cannot be standard input or output (\"-\")");
                 case ValueKind::input_file:
                     if (!reader.empty())
-                        throw io::InputError(name, "standard input (\"-\") is already read for " + reader +
-                                                       "; only one file can come from it");
+                        throw formats::InputError(name, "standard input (\"-\") is already read for " + reader +
+                                                            "; only one file can come from it");
                     reader = name;
                     break;
                 case ValueKind::output_file:
                     if (!writer.empty())
-                        throw io::InputError(name, "standard output (\"-\") already carries " + writer +
-                                                       "; only one output can go there");
+                        throw formats::InputError(name, "standard output (\"-\") already carries " + writer +
+                                                            "; only one output can go there");
                     writer = name;
                     break;
                 case ValueKind::other:

@@ -50,7 +50,7 @@ std::vector<std::string> flag_names(const CLI::App& command);
 std::string parse_error_line(const CLI::App& app, const FlagCatalog& catalog, const std::vector<std::string>& args,
                              const CLI::ParseError& error);
 
-// Throws io::InputError if two arguments of `command` are "-" in the same direction (two files read from standard
+// Throws formats::InputError if two arguments of `command` are "-" in the same direction (two files read from standard
 // input, or two written to standard output), or a folder is given as "-".
 void check_standard_streams(const CLI::App& command, const FlagCatalog& catalog);
 

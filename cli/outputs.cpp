@@ -1,6 +1,6 @@
 #include "cli/outputs.hpp"
 
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
 
@@ -18,7 +18,7 @@ bool is_terminal(const std::ostream& stream) {
 }
 
 bool names_standard_output(const std::string& path, const std::ostream& out) {
-    if (path == standard_stream) return true;
+    if (path == formats::standard_stream) return true;
     if (&out != &std::cout) return false;
     struct stat named {
     }, standard{};
@@ -32,11 +32,11 @@ void Outputs::add(std::string_view flag, const std::optional<std::string>& path)
     if (standard) {
         const auto first = std::find_if(named_.begin(), named_.end(), [](const Named& n) { return n.standard_output; });
         if (first != named_.end())
-            throw io::InputError(std::string(flag),
-                                 "standard output already carries " + first->flag + "; only one output can go there");
+            throw formats::InputError(
+                std::string(flag), "standard output already carries " + first->flag + "; only one output can go there");
         to_standard_output_ = true;
     } else {
-        io::check_writable(*path, flag);
+        formats::check_writable(*path, flag);
     }
     named_.push_back({std::string(flag), *path, standard});
 }
@@ -55,8 +55,8 @@ void Outputs::write(const std::vector<Text>& texts) const {
     std::string_view standard_text;
     bool standard = false;
     {
-        const io::HeldInterruptions held;
-        std::vector<io::StagedFile> files;
+        const formats::HeldInterruptions held;
+        std::vector<formats::StagedFile> files;
         for (const Text& t : texts) {
             const Named* n = named(t.flag);
             if (!n) continue;
@@ -67,7 +67,7 @@ void Outputs::write(const std::vector<Text>& texts) const {
                 files.emplace_back(n->path, t.text, n->flag);
             }
         }
-        for (io::StagedFile& f : files) f.commit();
+        for (formats::StagedFile& f : files) f.commit();
     }
     if (standard) out_.write(standard_text.data(), static_cast<std::streamsize>(standard_text.size())).flush();
 }

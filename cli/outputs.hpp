@@ -24,8 +24,8 @@ class Outputs {
 public:
     Outputs(std::ostream& out, std::ostream& err) : out_(out), err_(err) {}
 
-    // Names one output, if given, and checks it now: writable, or standard output. Throws io::InputError(flag, ...)
-    // for a second output on standard output, or an output that cannot be written.
+    // Names one output, if given, and checks it now: writable, or standard output. Throws formats::InputError(flag,
+    // ...) for a second output on standard output, or an output that cannot be written.
     void add(std::string_view flag, const std::optional<std::string>& path);
 
     // Where the command's report and notes go: standard output, or standard error when a file goes there.

@@ -3,7 +3,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "cli/outputs.hpp"
 #include "explain/explain.hpp"
 #include "formats/scene_file.hpp"
@@ -20,27 +20,27 @@ int resolve_command(const ResolveOptions& options, std::ostream& out, std::ostre
     outputs.add("--trace", options.trace_file);
     Scene scene;
     try {
-        scene = io::read_scene_text(read_input_file(options.case_file), options.preset);
-    } catch (const io::InputError& e) {
-        throw FileError{input_name(options.case_file), e.where(), e.problem()};
+        scene = formats::read_scene_text(formats::read_input_file(options.case_file), options.preset);
+    } catch (const formats::InputError& e) {
+        throw formats::FileError{formats::input_name(options.case_file), e.where(), e.problem()};
     }
-    for (const std::string& assignment : options.settings) io::apply_setting(scene, assignment, "--set");
+    for (const std::string& assignment : options.settings) formats::apply_setting(scene, assignment, "--set");
     TraceFilter recording;
-    for (const std::string& spec : options.record) apply_record_spec(spec, recording);
+    for (const std::string& spec : options.record) formats::apply_record_spec(spec, recording);
     std::optional<int> stopped_at;
-    std::optional<inspect::BrokenRun> broken;
-    const Trace trace = inspect::resolve_once(
-        scene, recording, {inspect::trace_budget_bytes(options.max_trace_mb), &stopped_at}, &broken);
-    if (stopped_at) err << trace_stopped_note(*stopped_at, options.max_trace_mb) << '\n';
+    std::optional<model::BrokenRun> broken;
+    const Trace trace = model::resolve_once(scene, recording,
+                                            {formats::trace_budget_bytes(options.max_trace_mb), &stopped_at}, &broken);
+    if (stopped_at) err << formats::trace_stopped_note(*stopped_at, options.max_trace_mb) << '\n';
     // One frame, and it broke: there is nothing before it to write.
     if (broken) {
-        err << "impulse-lab: " << inspect::broken_run_text(scene, *broken) << "; nothing written\n";
+        err << "impulse-lab: " << model::broken_run_text(scene, *broken) << "; nothing written\n";
         return exit_non_finite;
     }
 
     // Everything the user asked for is checked before anything is written, and the trace is written
     // atomically, so a failed run leaves no file behind.
-    if (options.trace_file) outputs.write({{"--trace", io::format_json(io::trace_json(trace))}});
+    if (options.trace_file) outputs.write({{"--trace", formats::format_json(formats::trace_json(trace))}});
     std::ostream& report = outputs.report();
     if (options.explain)
         explain::write_explanation(report, trace);

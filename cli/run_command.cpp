@@ -3,11 +3,11 @@
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "cli/interrupt.hpp"
 #include "cli/outputs.hpp"
 #include "cli/progress.hpp"
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 #include "explain/format.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -34,7 +34,7 @@ void append_states(std::string& csv, int frame, double time, const Scene& scene,
         const RigidBody& b = bodies[i];
         std::snprintf(line, sizeof line, "%d,%.17g,%zu,", frame, time, i);
         csv += line;
-        csv += explain::csv_field(scene.body_names[i]);
+        csv += formats::csv_field(scene.body_names[i]);
         std::snprintf(line, sizeof line,
                       ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
                       b.position.x(), b.position.y(), b.position.z(), b.orientation.w(), b.orientation.x(),
@@ -118,17 +118,17 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     std::ostream& report = outputs.report();
 
     Trace trace;
-    const std::string scene_name = input_name(options.scene_file);
+    const std::string scene_name = formats::input_name(options.scene_file);
     try {
-        trace.scene = io::read_scene_text(read_input_file(options.scene_file), options.preset);
-    } catch (const io::InputError& e) {
-        throw FileError{scene_name, e.where(), e.problem()};
+        trace.scene = formats::read_scene_text(formats::read_input_file(options.scene_file), options.preset);
+    } catch (const formats::InputError& e) {
+        throw formats::FileError{scene_name, e.where(), e.problem()};
     }
     Scene& scene = trace.scene;
-    for (const std::string& assignment : options.settings) io::apply_setting(scene, assignment, "--set");
+    for (const std::string& assignment : options.settings) formats::apply_setting(scene, assignment, "--set");
     if (options.frames) scene.world.frames = *options.frames;
     if (options.dt) scene.settings.duration = *options.dt;
-    for (const std::string& spec : options.record) apply_record_spec(spec, trace.recording);
+    for (const std::string& spec : options.record) formats::apply_record_spec(spec, trace.recording);
     if (!scene.contacts.empty())
         err << "impulse-lab: note: the " << scene.contacts.size() << " contact(s) written in " << scene_name
             << " are for `resolve`; `run` detects its own\n";
@@ -136,7 +136,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     scene.contacts.clear();
 
     World world(scene);
-    TraceRecorder trace_recorder(trace, inspect::trace_budget_bytes(options.max_trace_mb));
+    TraceRecorder trace_recorder(trace, formats::trace_budget_bytes(options.max_trace_mb));
     Recorder nobody;
     Recorder& recorder = options.trace_file ? static_cast<Recorder&>(trace_recorder) : nobody;
 
@@ -179,19 +179,20 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     // Formatting a long trace takes a while: a signal meanwhile is the first (the run had ended: nothing is
     // written without --keep-partial) or the second (nothing is written at all).
     const bool write = !interrupted || options.keep_partial;
-    const std::string trace_text = options.trace_file && write ? io::format_json(io::trace_json(trace)) : std::string();
+    const std::string trace_text =
+        options.trace_file && write ? formats::format_json(formats::trace_json(trace)) : std::string();
     if (const std::optional<int> signal = interrupt_received()) {
         if (interrupted) throw Interrupted{*signal};
         interrupted = signal;
     }
     if (!interrupted || options.keep_partial) {
         if (trace_recorder.stopped_at())
-            err << trace_stopped_note(*trace_recorder.stopped_at(), options.max_trace_mb) << '\n';
+            err << formats::trace_stopped_note(*trace_recorder.stopped_at(), options.max_trace_mb) << '\n';
         outputs.write({{"--trace", trace_text}, {"--states", states}});
     }
 
     if (broken_frame) {
-        err << "impulse-lab: " << inspect::broken_run_text(scene, {*broken_frame, *reports.back().non_finite}) << '\n';
+        err << "impulse-lab: " << model::broken_run_text(scene, {*broken_frame, *reports.back().non_finite}) << '\n';
         if (!outputs.file_of("--trace").empty())
             report << "trace of the frames before it written to " << outputs.file_of("--trace") << '\n';
         if (!outputs.file_of("--states").empty())

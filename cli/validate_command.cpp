@@ -5,7 +5,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "formats/scene_file.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -38,20 +38,20 @@ bool other_markdown(const std::string& path, const std::string& text) {
     return first == std::string::npos || text.compare(first, 7, "```json") != 0;
 }
 
-// The verdict on a file read whole; throws io::InputError or FileError for an invalid one.
+// The verdict on a file read whole; throws formats::InputError or FileError for an invalid one.
 std::string check_file(const std::string& path, const std::string& text) {
     if (is_lesson(path)) {
         if (other_markdown(path, text)) return "not a lesson (no NN- name, no ```json header): skipped";
         // A lesson: its header and sections, then its run, places and answers.
-        const lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson_text(text, path));
-        const auto questions = static_cast<std::size_t>(lessons::question_count(lesson.lesson));
+        const course::PreparedLesson lesson = course::prepare_lesson(course::read_lesson_text(text, path));
+        const auto questions = static_cast<std::size_t>(course::question_count(lesson.lesson));
         return "valid lesson " + std::to_string(lesson.lesson.number) + " (" +
                count(lesson.lesson.steps.size(), "step", "steps") + ", " + count(questions, "question", "questions") +
                ")";
     }
-    const io::json document = io::parse_json_text(text);
-    if (document.is_object() && document.contains("format") && document["format"] == io::trace_format_name) {
-        const Trace trace = io::read_trace(document);
+    const formats::json document = formats::parse_json_text(text);
+    if (document.is_object() && document.contains("format") && document["format"] == formats::trace_format_name) {
+        const Trace trace = formats::read_trace(document);
         std::size_t iterations = 0;
         for (const FrameRecord& f : trace.frames)
             iterations += f.position.iterations.size() + f.velocity.iterations.size();
@@ -63,7 +63,7 @@ std::string check_file(const std::string& path, const std::string& text) {
         return "valid trace (format version " + version + ", " + count(trace.frames.size(), "frame", "frames") + ", " +
                count(iterations, "iteration", "iterations") + ")";
     }
-    const Scene c = io::read_scene(document);
+    const Scene c = formats::read_scene(document);
     // A case writes its contacts out; a scene leaves them to its shapes.
     const bool is_case = !c.contacts.empty();
     std::string verdict =
@@ -78,25 +78,26 @@ std::string check_file(const std::string& path, const std::string& text) {
 int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
     // An invalid file is the verdict asked for (1); a file that cannot be read at all is bad input (2).
     bool invalid = false, unreadable = false;
-    const auto report = [&err](const FileError& e) {
+    const auto report = [&err](const formats::FileError& e) {
         err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
     };
     for (const std::string& file : files) {
         std::string text;
         try {
-            text = read_input_file(file, is_lesson(file) ? max_text_input_bytes : max_input_bytes);
-        } catch (const FileError& e) {
+            text = formats::read_input_file(file,
+                                            is_lesson(file) ? formats::max_text_input_bytes : formats::max_input_bytes);
+        } catch (const formats::FileError& e) {
             report(e);
             unreadable = true;
             continue;
         }
         try {
             const std::string verdict = check_file(file, text);
-            out << input_name(file) << ": " << verdict << '\n';
-        } catch (const io::InputError& e) {
-            err << "impulse-lab: " << input_name(file) << ": " << e.what() << '\n';
+            out << formats::input_name(file) << ": " << verdict << '\n';
+        } catch (const formats::InputError& e) {
+            err << "impulse-lab: " << formats::input_name(file) << ": " << e.what() << '\n';
             invalid = true;
-        } catch (const FileError& e) {
+        } catch (const formats::FileError& e) {
             report(e);
             invalid = true;
         }

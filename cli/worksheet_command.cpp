@@ -3,7 +3,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "course/worksheet.hpp"
 #include "cli/outputs.hpp"
 #include "formats/input_error.hpp"
@@ -34,53 +34,55 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
     const bool to_standard_output = names_standard_output(options.out, out);
     const bool csv = !to_standard_output && ends_with_case_blind(options.out, ".csv");
     if (!to_standard_output && !csv && !ends_with_case_blind(options.out, ".json"))
-        throw io::InputError("--out",
-                             "must end in .json or .csv (or be - for standard output), got \"" + options.out + "\"");
+        throw formats::InputError(
+            "--out", "must end in .json or .csv (or be - for standard output), got \"" + options.out + "\"");
     outputs.add("--out", options.out);
     std::ostream& report = outputs.report();
 
     // A lesson (NN-name.md) gives its run and, unless --steps says otherwise, its steps' places: those that
     // compute something to fill in (a step that only shows a choice has no cells).
-    std::optional<lessons::PreparedLesson> lesson;
+    std::optional<course::PreparedLesson> lesson;
     if (ends_with_case_blind(options.file, ".md")) {
         if (options.open.preset || !options.open.settings.empty() || !options.open.record.empty() ||
             options.open.frames || options.open.max_trace_mb)
-            throw io::InputError("worksheet",
-                                 "a lesson runs with its own settings; give its scene file to change "
-                                 "them");
-        lesson.emplace(lessons::prepare_lesson(lessons::read_lesson(options.file)));
+            throw formats::InputError("worksheet",
+                                      "a lesson runs with its own settings; give its scene file to change "
+                                      "them");
+        lesson.emplace(course::prepare_lesson(course::read_lesson(options.file)));
     }
-    const inspect::Session session = lesson ? lesson->session : inspect::Session::open(options.file, options.open);
-    if (session.trace().version != trace_format_version) err << io::format1_note(options.file) << '\n';
+    const model::Session session = lesson ? lesson->session : model::Session::open(options.file, options.open);
+    if (session.trace().version != trace_format_version) err << formats::format1_note(options.file) << '\n';
     if (const auto note = session.recording_note())
         err << "impulse-lab: note: " << *note << "; raise --max-trace-mb or narrow --record to see later frames\n";
     // A worksheet's numbers must be re-made exactly by diff; a run that broke is not coursework.
     if (session.broken_run()) {
-        err << "impulse-lab: " << inspect::broken_run_text(session.trace().scene, *session.broken_run())
+        err << "impulse-lab: " << model::broken_run_text(session.trace().scene, *session.broken_run())
             << "; no worksheet written\n";
         return exit_non_finite;
     }
     const Trace& trace = session.trace();
-    const io::json document = io::trace_json(trace);
-    std::vector<inspect::Cursor> places;
+    const formats::json document = formats::trace_json(trace);
+    std::vector<model::Cursor> places;
     if (!options.steps.empty())
-        places = coursework::places_from_specs(trace, options.steps, "--steps");
+        places = course::places_from_specs(trace, options.steps, "--steps");
     else if (lesson)
-        places = coursework::places_with_cells(session, lesson->places, &document);  // a choice has no cells
+        places = course::places_with_cells(session, lesson->places, &document);  // a choice has no cells
     else
-        places = coursework::default_places(trace);
+        places = course::default_places(trace);
     if (places.empty())
-        throw FileError{input_name(options.file), "", "the recording has no contact, so there is nothing to fill in"};
-    const coursework::Worksheet sheet = coursework::make_worksheet(session, places, &document);
+        throw formats::FileError{formats::input_name(options.file), "",
+                                 "the recording has no contact, so there is nothing to fill in"};
+    const course::Worksheet sheet = course::make_worksheet(session, places, &document);
 
     outputs.write(
-        {{"--out", csv ? coursework::worksheet_csv(sheet) : io::format_json(coursework::worksheet_json(sheet))}});
+        {{"--out", csv ? course::worksheet_csv(sheet) : formats::format_json(course::worksheet_json(sheet))}});
     std::size_t cells = 0, numbers = 0, inputs = 0;
-    for (const coursework::WorksheetStep& step : sheet.steps) {
+    for (const course::WorksheetStep& step : sheet.steps) {
         cells += step.cells.size();
         inputs += step.inputs.size();
-        for (const coursework::WorksheetEntry& cell : step.cells)
-            coursework::for_each_scalar(cell.value, "", [&numbers](const std::string&, const io::json&) { ++numbers; });
+        for (const course::WorksheetEntry& cell : step.cells)
+            course::for_each_scalar(cell.value, "",
+                                    [&numbers](const std::string&, const formats::json&) { ++numbers; });
     }
     report << "worksheet written to " << (to_standard_output ? "standard output" : options.out) << ": "
            << sheet.steps.size() << (sheet.steps.size() == 1 ? " step, " : " steps, ") << cells << " cells (" << numbers

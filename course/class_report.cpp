@@ -1,7 +1,7 @@
 #include "course/class_report.hpp"
 
 #include "course/worksheet.hpp"
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 #include "explain/text_table.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <map>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 namespace {
 
@@ -20,12 +20,14 @@ std::string count_text(std::size_t n) {
 }
 
 std::string tolerance_words(const Tolerance& t) {
-    return "|yours − expected| ≤ " + io::number_text(t.atol) + " + " + io::number_text(t.rtol) + "·|expected| (" +
-           io::number_text(t.rtol * 100) + " % of the expected value, or " + io::number_text(t.atol) + " when it is 0)";
+    return "|yours − expected| ≤ " + formats::number_text(t.atol) + " + " + formats::number_text(t.rtol) +
+           "·|expected| (" + formats::number_text(t.rtol * 100) + " % of the expected value, or " +
+           formats::number_text(t.atol) + " when it is 0)";
 }
 
 // "10.4 % off", or for an expected 0 "off by 0.002 N·s".
-std::string how_far(const std::optional<double>& relative_error, const io::json& expected, const std::string& unit) {
+std::string how_far(const std::optional<double>& relative_error, const formats::json& expected,
+                    const std::string& unit) {
     if (!relative_error) return "";
     char text[48];
     if (expected.is_number() && expected.get<double>() == 0.0) {
@@ -38,7 +40,7 @@ std::string how_far(const std::optional<double>& relative_error, const io::json&
 }
 
 // A wrong number that is the expected one times a telling factor: what the slip probably was.
-std::string likely_slip(const io::json& expected, const io::json& found) {
+std::string likely_slip(const formats::json& expected, const formats::json& found) {
     if (!expected.is_number() || !found.is_number() || expected.get<double>() == 0.0) return "";
     const double ratio = found.get<double>() / expected.get<double>();
     const auto near = [ratio](double factor) { return std::abs(ratio / factor - 1.0) < 2e-3; };
@@ -48,8 +50,8 @@ std::string likely_slip(const io::json& expected, const io::json& found) {
     if (near(1.0 / degrees)) return "the value divided by 57.3: radians where degrees are expected?";
     for (const double factor : {10.0, 100.0, 1000.0})
         if (near(factor) || near(1.0 / factor))
-            return (near(factor) ? io::number_text(factor) + " times the value"
-                                 : "the value divided by " + io::number_text(factor)) +
+            return (near(factor) ? formats::number_text(factor) + " times the value"
+                                 : "the value divided by " + formats::number_text(factor)) +
                    ": a unit slip (cm, mm or g where m or kg are expected)?";
     return "";
 }
@@ -100,8 +102,8 @@ std::vector<std::string> summary_cells(const ClassRow& row) {
 
 std::string summary_text(const std::vector<ClassRow>& rows, const ClassSubject& subject, std::size_t per_file) {
     std::string text = "reference " + subject.reference + (subject.what.empty() ? "" : " (" + subject.what + ")") +
-                       "\nnumbers match when |found − expected| ≤ " + io::number_text(subject.tolerance.atol) + " + " +
-                       io::number_text(subject.tolerance.rtol) + "·|expected|\n\n";
+                       "\nnumbers match when |found − expected| ≤ " + formats::number_text(subject.tolerance.atol) +
+                       " + " + formats::number_text(subject.tolerance.rtol) + "·|expected|\n\n";
     std::vector<std::vector<std::string>> table{
         {"file", "score", "cells", "matched", "mismatched", "blank", "first divergence"}};
     std::size_t perfect = 0, imperfect = 0, unreadable = 0;
@@ -131,7 +133,7 @@ std::string summary_text(const std::vector<ClassRow>& rows, const ClassSubject& 
 }
 
 std::string summary_json(const std::vector<ClassRow>& rows, const ClassSubject& subject) {
-    io::json files = io::json::array();
+    formats::json files = formats::json::array();
     for (const ClassRow& row : rows) {
         if (!row.report) {
             files.push_back({{"file", row.file},
@@ -155,15 +157,15 @@ std::string summary_json(const std::vector<ClassRow>& rows, const ClassSubject& 
                          {"matched", s.right},
                          {"mismatched", s.wrong},
                          {"blank", s.blank},
-                         {"score_percent", s.percent ? io::json(*s.percent) : io::json(nullptr)},
-                         {"first_divergence", first ? io::json(worded(*first)) : io::json(nullptr)},
-                         {"first_divergence_path", first ? io::json(first->path) : io::json(nullptr)},
+                         {"score_percent", s.percent ? formats::json(*s.percent) : formats::json(nullptr)},
+                         {"first_divergence", first ? formats::json(worded(*first)) : formats::json(nullptr)},
+                         {"first_divergence_path", first ? formats::json(first->path) : formats::json(nullptr)},
                          {"error", nullptr}});
     }
-    return io::format_json({{"reference", subject.reference},
-                            {"what", subject.what},
-                            {"tolerance", {{"rtol", subject.tolerance.rtol}, {"atol", subject.tolerance.atol}}},
-                            {"files", files}});
+    return formats::format_json({{"reference", subject.reference},
+                                 {"what", subject.what},
+                                 {"tolerance", {{"rtol", subject.tolerance.rtol}, {"atol", subject.tolerance.atol}}},
+                                 {"files", files}});
 }
 
 std::string summary_csv(const std::vector<ClassRow>& rows) {
@@ -171,7 +173,7 @@ std::string summary_csv(const std::vector<ClassRow>& rows) {
         "file,kind,cells,matched,mismatched,blank,score_percent,first_divergence,first_divergence_path,error\n";
     for (const ClassRow& row : rows) {
         if (!row.report) {
-            text += explain::csv_row({row.file, "", "", "", "", "", "", "", "", row.error});
+            text += formats::csv_row({row.file, "", "", "", "", "", "", "", "", row.error});
             continue;
         }
         const DiffReport& r = *row.report;
@@ -180,7 +182,7 @@ std::string summary_csv(const std::vector<ClassRow>& rows) {
         char score[32] = "";
         if (s.percent) std::snprintf(score, sizeof score, "%.1f", *s.percent);
         text +=
-            explain::csv_row({row.file, r.other_kind, count_text(s.cells), count_text(s.right), count_text(s.wrong),
+            formats::csv_row({row.file, r.other_kind, count_text(s.cells), count_text(s.right), count_text(s.wrong),
                               count_text(s.blank), score, first ? worded(*first) : "", first ? first->path : "", ""});
     }
     return text;
@@ -188,30 +190,30 @@ std::string summary_csv(const std::vector<ClassRow>& rows) {
 
 std::string cells_csv(const std::vector<ClassRow>& rows) {
     std::string text = "file,place,quantity,unit,expected,found,relative_error,verdict,first_divergence,path\n";
-    const auto value = [](const io::json& v) { return v.is_structured() ? v.dump() : scalar_text(v); };
-    const auto error = [](const std::optional<double>& e) { return e ? io::number_text(*e) : std::string(); };
+    const auto value = [](const formats::json& v) { return v.is_structured() ? v.dump() : scalar_text(v); };
+    const auto error = [](const std::optional<double>& e) { return e ? formats::number_text(*e) : std::string(); };
     for (const ClassRow& row : rows) {
         if (!row.report) {
-            text += explain::csv_row({row.file, "", "", "", "", "", "", "unreadable", "", row.error});
+            text += formats::csv_row({row.file, "", "", "", "", "", "", "unreadable", "", row.error});
             continue;
         }
         const DiffReport& r = *row.report;
         const Finding* first = r.first_divergence();
         if (r.other_kind == "worksheet") {
             for (const GradedNumber& g : r.graded)
-                text += explain::csv_row({row.file, g.place, g.quantity, g.unit, value(g.expected), value(g.found),
+                text += formats::csv_row({row.file, g.place, g.quantity, g.unit, value(g.expected), value(g.found),
                                           error(g.relative_error), std::string(verdict_name(g.verdict)),
                                           first && first->path == g.path ? "true" : "false", g.path});
             // What the sheet was made with, where it differs: not the student's numbers, but why they may differ.
             for (const Finding& f : r.findings)
                 if (f.kind == FindingKind::setting || f.kind == FindingKind::scene)
-                    text += explain::csv_row({row.file, f.place, f.quantity, f.unit, value(f.expected), value(f.found),
+                    text += formats::csv_row({row.file, f.place, f.quantity, f.unit, value(f.expected), value(f.found),
                                               error(f.relative_error), std::string(finding_kind_name(f.kind)),
                                               f.first_divergence ? "true" : "false", f.path});
             continue;
         }
         for (const Finding& f : r.findings)
-            text += explain::csv_row({row.file, f.place, f.quantity, f.unit, value(f.expected), value(f.found),
+            text += formats::csv_row({row.file, f.place, f.quantity, f.unit, value(f.expected), value(f.found),
                                       error(f.relative_error), std::string(finding_kind_name(f.kind)),
                                       f.first_divergence ? "true" : "false", f.path});
     }
@@ -340,4 +342,4 @@ std::vector<std::string> feedback_names(const std::vector<std::string>& files) {
     return names;
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 // One file of a class: its report, or why it could not be read.
 struct ClassRow {
@@ -46,4 +46,4 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject);
 // ".md", or its whole name plus ".md" when two files share that stem (ada.json and ada.csv).
 std::vector<std::string> feedback_names(const std::vector<std::string>& files);
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

@@ -17,9 +17,10 @@ std::string_view lesson_schema_text() {
     return course::embedded::lesson_schema;
 }
 
-void validate_worksheet_document(const io::json& document) {
-    const auto parsed = [](std::string_view text) { return io::json::parse(text.begin(), text.end()); };
-    io::SchemaValidator(parsed(worksheet_schema_text()), {{"scene.schema.json", parsed(io::scene_schema_text())}})
+void validate_worksheet_document(const formats::json& document) {
+    const auto parsed = [](std::string_view text) { return formats::json::parse(text.begin(), text.end()); };
+    formats::SchemaValidator(parsed(worksheet_schema_text()),
+                             {{"scene.schema.json", parsed(formats::scene_schema_text())}})
         .validate(document);
 }
 

@@ -14,6 +14,6 @@ std::string_view worksheet_schema_text();  // coursework worksheets (docs/course
 std::string_view lesson_schema_text();     // a lesson file's JSON header (docs/lessons.md)
 
 // Throws InputError at the first violation.
-void validate_worksheet_document(const io::json& document);
+void validate_worksheet_document(const formats::json& document);
 
 }  // namespace impulse::course

@@ -9,7 +9,7 @@
 #include <map>
 #include <set>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 namespace {
 
@@ -23,12 +23,12 @@ std::string_view identity_key(std::string_view array_name) {
 }
 
 // Each element's identity, when every element is an object carrying a distinct one.
-std::optional<std::vector<io::json>> identities(const io::json& array, std::string_view key) {
+std::optional<std::vector<formats::json>> identities(const formats::json& array, std::string_view key) {
     if (key.empty()) return std::nullopt;
-    std::vector<io::json> ids;
-    for (const io::json& element : array) {
+    std::vector<formats::json> ids;
+    for (const formats::json& element : array) {
         if (!element.is_object() || !element.contains(key)) return std::nullopt;
-        const io::json& id = element[std::string(key)];
+        const formats::json& id = element[std::string(key)];
         if (std::find(ids.begin(), ids.end(), id) != ids.end()) return std::nullopt;
         ids.push_back(id);
     }
@@ -37,15 +37,15 @@ std::optional<std::vector<io::json>> identities(const io::json& array, std::stri
 
 class Comparison {
 public:
-    Comparison(const io::json& reference, const Tolerance& tolerance, bool blank_allowed)
+    Comparison(const formats::json& reference, const Tolerance& tolerance, bool blank_allowed)
         : reference_(reference), tolerance_(tolerance), blank_allowed_(blank_allowed), grading_(blank_allowed) {}
 
     // `area` is the kind a differing value is reported as; `name` the key that holds `expected`.
-    void compare(const io::json& expected, const io::json& found, const std::string& path, FindingKind area,
+    void compare(const formats::json& expected, const formats::json& found, const std::string& path, FindingKind area,
                  std::string_view name) {
         if (expected.is_object() && found.is_object()) {
             for (auto it = expected.begin(); it != expected.end(); ++it) {
-                const std::string child = io::json_path_child(path, it.key());
+                const std::string child = formats::json_path_child(path, it.key());
                 const auto there = found.find(it.key());
                 if (there == found.end())
                     add(FindingKind::missing, child, it.value(), nullptr);
@@ -54,7 +54,7 @@ public:
             }
             for (auto it = found.begin(); it != found.end(); ++it)
                 if (!expected.contains(it.key()))
-                    add(FindingKind::extra, io::json_path_child(path, it.key()), nullptr, it.value());
+                    add(FindingKind::extra, formats::json_path_child(path, it.key()), nullptr, it.value());
             return;
         }
         if (expected.is_array() && found.is_array()) {
@@ -62,7 +62,8 @@ public:
             return;
         }
         if (blank_allowed_ && found.is_null() && !expected.is_null()) {
-            for_each_scalar(expected, path, [this](const std::string& at, const io::json& value) { blank(at, value); });
+            for_each_scalar(expected, path,
+                            [this](const std::string& at, const formats::json& value) { blank(at, value); });
             return;
         }
         if (expected.is_number() && found.is_number()) {
@@ -88,19 +89,19 @@ public:
     }
 
     // A number of an asked cell left blank (or left out of the file).
-    void blank(const std::string& path, const io::json& expected) {
+    void blank(const std::string& path, const formats::json& expected) {
         add(FindingKind::blank, path, expected, nullptr);
         ++report_.blank;
         grade(path, expected, nullptr, std::nullopt, Verdict::blank);
     }
 
     // Records each number of the cells as graded (worksheets only, not the header they were made with).
-    void grade(const std::string& path, const io::json& expected, const io::json& found,
+    void grade(const std::string& path, const formats::json& expected, const formats::json& found,
                std::optional<double> relative_error, Verdict verdict) {
         if (grading_) report_.graded.push_back({path, expected, found, relative_error, verdict, "", "", ""});
     }
 
-    Finding& add(FindingKind kind, const std::string& path, const io::json& expected, const io::json& found) {
+    Finding& add(FindingKind kind, const std::string& path, const formats::json& expected, const formats::json& found) {
         Finding f;
         f.kind = kind;
         f.path = path;
@@ -112,7 +113,7 @@ public:
             f.quantity = d.quantity;
             f.formula = d.formula;
             f.equation = d.equation;
-        } catch (const io::InputError&) {
+        } catch (const formats::InputError&) {
             // A scene's material names are keys of any text: such a path has no vocabulary name anyway.
         }
         report_.findings.push_back(std::move(f));
@@ -127,15 +128,15 @@ private:
         if (counting_) ++report_.matched;
     }
 
-    void compare_arrays(const io::json& expected, const io::json& found, const std::string& path, FindingKind area,
-                        std::string_view name) {
+    void compare_arrays(const formats::json& expected, const formats::json& found, const std::string& path,
+                        FindingKind area, std::string_view name) {
         const std::string_view key = identity_key(name);
         const auto expected_ids = identities(expected, key), found_ids = identities(found, key);
         if (expected_ids && found_ids) {
             std::vector<bool> paired(found.size(), false);
             for (std::size_t i = 0; i < expected.size(); ++i) {
                 const auto there = std::find(found_ids->begin(), found_ids->end(), (*expected_ids)[i]);
-                const std::string at = io::json_path_index(path, i);
+                const std::string at = formats::json_path_index(path, i);
                 if (there == found_ids->end()) {
                     add(FindingKind::missing, at, expected[i], nullptr);
                     continue;
@@ -145,11 +146,11 @@ private:
                 compare(expected[i], found[j], at, area, name);
             }
             for (std::size_t j = 0; j < found.size(); ++j)
-                if (!paired[j]) add(FindingKind::extra, io::json_path_index(path, j), nullptr, found[j]);
+                if (!paired[j]) add(FindingKind::extra, formats::json_path_index(path, j), nullptr, found[j]);
             return;
         }
         for (std::size_t i = 0; i < std::max(expected.size(), found.size()); ++i) {
-            const std::string at = io::json_path_index(path, i);
+            const std::string at = formats::json_path_index(path, i);
             if (i >= found.size())
                 add(FindingKind::missing, at, expected[i], nullptr);
             else if (i >= expected.size())
@@ -159,7 +160,7 @@ private:
         }
     }
 
-    const io::json& reference_;
+    const formats::json& reference_;
     Tolerance tolerance_;
     bool blank_allowed_;
     bool counting_ = true;
@@ -186,7 +187,7 @@ void mark_first_divergence(DiffReport& report) {
 // lists them in the derivation's order — an iteration's record writes its desired velocity change before the
 // contact velocity it comes from — and then by its indices (the update, the body, the component), as the
 // worksheet lists its cells.
-std::vector<std::size_t> derivation_position(const io::json& reference, const std::vector<PathToken>& path) {
+std::vector<std::size_t> derivation_position(const formats::json& reference, const std::vector<PathToken>& path) {
     const auto key_is = [&path](std::size_t i, std::string_view key) {
         const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
         return k && *k == key;
@@ -200,7 +201,7 @@ std::vector<std::size_t> derivation_position(const io::json& reference, const st
         rest = 4;
     } else if (key_is(0, "frames") && index_at(1) && key_is(2, "phases") && index_at(3) && key_is(4, "iterations") &&
                index_at(5)) {
-        const io::json* phase = value_at(reference, {path.begin(), path.begin() + 4});
+        const formats::json* phase = value_at(reference, {path.begin(), path.begin() + 4});
         kind = phase && phase->is_object() && phase->value("phase", "") == "position" ? ItemKind::position_iteration
                                                                                       : ItemKind::velocity_iteration;
         rest = 6;
@@ -227,13 +228,13 @@ std::vector<std::size_t> derivation_position(const io::json& reference, const st
 
 // Into the derivation's order (stable for equal places).
 template <typename Item>
-void sort_into_trace_order(const io::json& reference, std::vector<Item>& items) {
+void sort_into_trace_order(const formats::json& reference, std::vector<Item>& items) {
     std::vector<std::pair<std::vector<std::size_t>, std::size_t>> order;
     for (std::size_t i = 0; i < items.size(); ++i) {
         std::vector<std::size_t> position;
         try {
             position = derivation_position(reference, parse_json_path(items[i].path, ""));
-        } catch (const io::InputError&) {
+        } catch (const formats::InputError&) {
             position = {SIZE_MAX};
         }
         order.emplace_back(std::move(position), i);
@@ -272,7 +273,7 @@ const Finding* DiffReport::first_divergence() const {
     return nullptr;
 }
 
-DiffReport diff_traces(const io::json& reference, const io::json& other, const Tolerance& tolerance) {
+DiffReport diff_traces(const formats::json& reference, const formats::json& other, const Tolerance& tolerance) {
     Comparison comparison(reference, tolerance, false);
     for (auto it = reference.begin(); it != reference.end(); ++it) {
         const auto there = other.find(it.key());
@@ -289,21 +290,21 @@ DiffReport diff_traces(const io::json& reference, const io::json& other, const T
     return report;
 }
 
-DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance,
+DiffReport diff_worksheet(const formats::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance,
                           const std::vector<std::string>* asked) {
     Comparison comparison(reference, tolerance, true);
     std::set<std::string> answered;  // the numbers the sheet has a row or a place for
     for (const FilledCell& cell : sheet.cells) {
-        const io::json* expected = value_at(reference, cell.tokens);
+        const formats::json* expected = value_at(reference, cell.tokens);
         if (!expected) {
             comparison.add(FindingKind::not_in_reference, cell.path, nullptr, cell.value);
-            for_each_scalar(cell.value, cell.path, [&comparison](const std::string& at, const io::json& value) {
+            for_each_scalar(cell.value, cell.path, [&comparison](const std::string& at, const formats::json& value) {
                 comparison.grade(at, nullptr, value, std::nullopt, Verdict::wrong);
             });
             continue;
         }
         for_each_scalar(*expected, cell.path,
-                        [&answered](const std::string& at, const io::json&) { answered.insert(at); });
+                        [&answered](const std::string& at, const formats::json&) { answered.insert(at); });
         const auto* top = std::get_if<std::string>(&cell.tokens.front());
         const auto* last = std::get_if<std::string>(&cell.tokens.back());
         comparison.compare(*expected, cell.value, cell.path, area_of(top ? *top : ""), last ? *last : "");
@@ -311,8 +312,8 @@ DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& shee
     // What the sheet was handed out with and left out: blank, as an empty cell is.
     if (asked)
         for (const std::string& path : *asked)
-            if (const io::json* expected = value_at(reference, parse_json_path(path, "")))
-                for_each_scalar(*expected, path, [&](const std::string& at, const io::json& value) {
+            if (const formats::json* expected = value_at(reference, parse_json_path(path, "")))
+                for_each_scalar(*expected, path, [&](const std::string& at, const formats::json& value) {
                     if (!answered.count(at)) comparison.blank(at, value);
                 });
     // What the sheet was made from: a difference explains every wrong cell after it. Its matches are not
@@ -330,14 +331,14 @@ DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& shee
     return report;
 }
 
-void word_findings(DiffReport& report, const Trace& trace, const io::json& reference) {
+void word_findings(DiffReport& report, const Trace& trace, const formats::json& reference) {
     const auto word = [&](const std::string& path, std::string& place, std::string& quantity, std::string& unit) {
         try {
             const Wording w = word_path(trace, reference, parse_json_path(path, ""));
             place = w.place;
             quantity = w.quantity;
             unit = w.unit;
-        } catch (const io::InputError&) {
+        } catch (const formats::InputError&) {
             place.clear();  // a scene's material names may be any text: such a path is shown as it is
             quantity = path;
         }
@@ -373,4 +374,4 @@ Score score_of(const DiffReport& report) {
     return s;
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

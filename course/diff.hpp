@@ -4,6 +4,7 @@
 // mismatch in trace order is the first divergence: later ones often follow from it.
 
 #include "course/filled_worksheet.hpp"
+#include "course/tolerance.hpp"
 #include "record/trace.hpp"
 
 #include <cstddef>
@@ -12,12 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::coursework {
-
-struct Tolerance {
-    double rtol = 1e-9;   // the reference engine's arithmetic agrees with ours to about 1e-12 relative
-    double atol = 1e-12;  // so that an expected 0 is matched by rounding noise, not by any small number
-};
+namespace impulse::course {
 
 enum class FindingKind {
     value,             // a different value (or a different type of value)
@@ -34,8 +30,8 @@ std::string_view finding_kind_name(FindingKind kind);  // "value", "setting", ..
 struct Finding {
     FindingKind kind = FindingKind::value;
     std::string path;
-    io::json expected;                     // the reference's value; null when extra
-    io::json found;                        // the other's; null when missing or blank
+    formats::json expected;                // the reference's value; null when extra
+    formats::json found;                   // the other's; null when missing or blank
     std::optional<double> relative_error;  // |a − b| / |a|, or |a − b| when a = 0; numbers only
     // In the worksheet's own words (word_path; filled by word_findings): the step's place and the value's name
     // there ("impulse_world[1]"); until then the vocabulary name the path ends in, when it has one.
@@ -53,8 +49,8 @@ std::string_view verdict_name(Verdict verdict);  // "right", "wrong", "blank"
 
 struct GradedNumber {
     std::string path;
-    io::json expected;  // null for a cell the reference does not have
-    io::json found;     // null when blank
+    formats::json expected;  // null for a cell the reference does not have
+    formats::json found;     // null when blank
     std::optional<double> relative_error;
     Verdict verdict = Verdict::right;
     std::string place;  // as Finding's
@@ -91,16 +87,16 @@ Score score_of(const DiffReport& report);
 // Frames, contacts, phases and iterations are paired by their number ("frame", "contact", "phase",
 // "iteration"), so one missing iteration is reported once rather than shifting every later one; other arrays
 // by index.
-DiffReport diff_traces(const io::json& reference, const io::json& other, const Tolerance& tolerance);
+DiffReport diff_traces(const formats::json& reference, const formats::json& other, const Tolerance& tolerance);
 
 // Each cell of the sheet against the reference's value at its path, then the sheet's settings and scene
 // against the reference's, sorted into trace order. `asked`, when known (the reference is a worksheet or a
 // lesson), holds the paths of the cells the sheet was handed out with: a number of them the sheet leaves out
 // is graded blank, as if its row had been deleted.
-DiffReport diff_worksheet(const io::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance,
+DiffReport diff_worksheet(const formats::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance,
                           const std::vector<std::string>* asked = nullptr);
 
 // Words every finding's and graded number's path as the worksheet does (word_path): its place and quantity.
-void word_findings(DiffReport& report, const Trace& trace, const io::json& reference);
+void word_findings(DiffReport& report, const Trace& trace, const formats::json& reference);
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

@@ -1,6 +1,6 @@
 #include "course/diff_report.hpp"
 
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 #include "course/worksheet.hpp"
 #include "explain/text_table.hpp"
 #include "formats/input_error.hpp"
@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 namespace {
 
@@ -18,7 +18,7 @@ constexpr std::size_t brief_width = 40;
 
 // A value in one short cell: an expected number to the digits the tolerance looks at (shown_value), a found one
 // as written; structures shortened.
-std::string brief(const io::json& value, const std::optional<Tolerance>& tolerance) {
+std::string brief(const formats::json& value, const std::optional<Tolerance>& tolerance) {
     if (!value.is_structured()) {
         if (value.is_null()) return "null";
         return tolerance ? shown_value(value, *tolerance) : scalar_text(value);
@@ -43,13 +43,13 @@ std::string error_text(const std::optional<double>& e) {
 }
 
 std::string tolerance_text(const Tolerance& t) {
-    return "numbers match when |found − expected| ≤ " + io::number_text(t.atol) + " + " + io::number_text(t.rtol) +
-           "·|expected|";
+    return "numbers match when |found − expected| ≤ " + formats::number_text(t.atol) + " + " +
+           formats::number_text(t.rtol) + "·|expected|";
 }
 
 }  // namespace
 
-std::string shown_value(const io::json& value, const Tolerance& tolerance) {
+std::string shown_value(const formats::json& value, const Tolerance& tolerance) {
     if (!value.is_number_float())
         return value.is_null() ? "" : value.is_structured() ? value.dump() : scalar_text(value);
     if (value.get<double>() == 0.0) return "0";  // and −0
@@ -58,7 +58,7 @@ std::string shown_value(const io::json& value, const Tolerance& tolerance) {
     char text[48];
     std::snprintf(text, sizeof text, "%.*g", digits, value.get<double>());
     // The shortest text that reads back the same when it is shorter (0.25, not 0.250000).
-    const std::string exact = io::number_text(value.get<double>());
+    const std::string exact = formats::number_text(value.get<double>());
     return exact.size() <= std::string(text).size() ? exact : text;
 }
 
@@ -106,18 +106,18 @@ std::string counts(const DiffReport& r) {
            std::to_string(r.blank) + " blank";
 }
 
-io::json tolerance_json(const Tolerance& t) {
+formats::json tolerance_json(const Tolerance& t) {
     return {{"rtol", t.rtol}, {"atol", t.atol}};
 }
 
-io::json score_json(const DiffReport& r) {
+formats::json score_json(const DiffReport& r) {
     const Score score = score_of(r);
-    return score.percent ? io::json(*score.percent) : io::json(nullptr);
+    return score.percent ? formats::json(*score.percent) : formats::json(nullptr);
 }
 
-io::json first_divergence_json(const DiffReport& r) {
+formats::json first_divergence_json(const DiffReport& r) {
     const Finding* first = r.first_divergence();
-    return first ? io::json(first->path) : io::json(nullptr);
+    return first ? formats::json(first->path) : formats::json(nullptr);
 }
 
 }  // namespace
@@ -138,42 +138,43 @@ std::string report_text(const DiffReport& report, const DiffSubject& subject) {
 }
 
 std::string report_json(const DiffReport& report, const DiffSubject& subject) {
-    io::json findings = io::json::array();
+    formats::json findings = formats::json::array();
     for (const Finding& f : report.findings)
-        findings.push_back({{"kind", finding_kind_name(f.kind)},
-                            {"path", f.path},
-                            {"expected", f.expected},
-                            {"found", f.found},
-                            {"relative_error", f.relative_error ? io::json(*f.relative_error) : io::json(nullptr)},
-                            {"place", f.place},
-                            {"quantity", f.quantity},
-                            {"unit", f.unit},
-                            {"formula", f.formula},
-                            {"equation", f.equation},
-                            {"first_divergence", f.first_divergence}});
-    const io::json document = {{"reference", subject.reference},
-                               {"other", subject.other},
-                               {"other_kind", report.other_kind},
-                               {"tolerance", tolerance_json(subject.tolerance)},
-                               {"matched", report.matched},
-                               {"mismatched", report.mismatched},
-                               {"blank", report.blank},
-                               {"all_match", report.all_match()},
-                               {"score_percent", score_json(report)},
-                               {"first_divergence", first_divergence_json(report)},
-                               {"findings", findings}};
-    return io::format_json(document);
+        findings.push_back(
+            {{"kind", finding_kind_name(f.kind)},
+             {"path", f.path},
+             {"expected", f.expected},
+             {"found", f.found},
+             {"relative_error", f.relative_error ? formats::json(*f.relative_error) : formats::json(nullptr)},
+             {"place", f.place},
+             {"quantity", f.quantity},
+             {"unit", f.unit},
+             {"formula", f.formula},
+             {"equation", f.equation},
+             {"first_divergence", f.first_divergence}});
+    const formats::json document = {{"reference", subject.reference},
+                                    {"other", subject.other},
+                                    {"other_kind", report.other_kind},
+                                    {"tolerance", tolerance_json(subject.tolerance)},
+                                    {"matched", report.matched},
+                                    {"mismatched", report.mismatched},
+                                    {"blank", report.blank},
+                                    {"all_match", report.all_match()},
+                                    {"score_percent", score_json(report)},
+                                    {"first_divergence", first_divergence_json(report)},
+                                    {"findings", findings}};
+    return formats::format_json(document);
 }
 
 std::string report_csv(const DiffReport& report) {
     std::string text =
         "kind,path,expected,found,relative_error,quantity,formula,equation,first_divergence,place,unit\n";
-    const auto cell = [](const io::json& v) { return v.is_structured() ? v.dump() : scalar_text(v); };
+    const auto cell = [](const formats::json& v) { return v.is_structured() ? v.dump() : scalar_text(v); };
     for (const Finding& f : report.findings)
-        text += explain::csv_row({std::string(finding_kind_name(f.kind)), f.path, cell(f.expected), cell(f.found),
-                                  f.relative_error ? io::number_text(*f.relative_error) : "", f.quantity, f.formula,
-                                  f.equation, f.first_divergence ? "true" : "false", f.place, f.unit});
+        text += formats::csv_row({std::string(finding_kind_name(f.kind)), f.path, cell(f.expected), cell(f.found),
+                                  f.relative_error ? formats::number_text(*f.relative_error) : "", f.quantity,
+                                  f.formula, f.equation, f.first_divergence ? "true" : "false", f.place, f.unit});
     return text;
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

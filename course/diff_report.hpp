@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 struct DiffSubject {
     std::string reference;  // the file names, as given
@@ -31,6 +31,6 @@ std::string findings_table(const std::vector<Finding>& findings, std::size_t lim
 
 // A value as a report shows it to a person: numbers to the significant digits the tolerance looks at (at least
 // 6, so 0.452919 against rtol 1e-4), everything else as the worksheet writes it.
-std::string shown_value(const io::json& value, const Tolerance& tolerance);
+std::string shown_value(const formats::json& value, const Tolerance& tolerance);
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

@@ -1,6 +1,6 @@
 #include "course/filled_worksheet.hpp"
 
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 #include "course/worksheet.hpp"
 #include "formats/input_error.hpp"
 #include "course/course_schemas.hpp"
@@ -10,7 +10,7 @@
 #include <charconv>
 #include <cmath>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 namespace {
 
@@ -22,7 +22,7 @@ std::string trimmed(std::string_view text) {
 }
 
 // A CSV value as JSON: empty is blank (null), then a number, true/false, else the text itself.
-io::json csv_value(std::string_view field) {
+formats::json csv_value(std::string_view field) {
     const std::string text = trimmed(field);
     if (text.empty()) return nullptr;
     // Spreadsheets write booleans in capitals.
@@ -40,39 +40,39 @@ io::json csv_value(std::string_view field) {
 
 }  // namespace
 
-bool is_worksheet(const io::json& document) {
+bool is_worksheet(const formats::json& document) {
     return document.is_object() && document.contains("format") && document["format"] == worksheet_format_name;
 }
 
-FilledWorksheet read_worksheet_json(const io::json& document) {
+FilledWorksheet read_worksheet_json(const formats::json& document) {
     course::validate_worksheet_document(document);
     FilledWorksheet sheet;
     if (document.contains("settings")) sheet.settings = document["settings"];
     if (document.contains("reference")) sheet.scene = document["reference"]["scene"];
-    const io::json& steps = document["steps"];
+    const formats::json& steps = document["steps"];
     for (std::size_t s = 0; s < steps.size(); ++s) {
-        const std::string step_path = io::json_path_index("steps", s);
-        const io::json& cells = steps[s]["cells"];
+        const std::string step_path = formats::json_path_index("steps", s);
+        const formats::json& cells = steps[s]["cells"];
         for (std::size_t c = 0; c < cells.size(); ++c) {
-            const std::string where = io::json_path_index(io::json_path_child(step_path, "cells"), c);
+            const std::string where = formats::json_path_index(formats::json_path_child(step_path, "cells"), c);
             const std::string path = cells[c]["path"].get<std::string>();
             sheet.cells.push_back(
-                {path, parse_json_path(path, io::json_path_child(where, "path")), cells[c]["value"], where});
+                {path, parse_json_path(path, formats::json_path_child(where, "path")), cells[c]["value"], where});
         }
     }
     return sheet;
 }
 
 FilledWorksheet read_worksheet_csv(std::string_view text) {
-    const std::vector<explain::CsvRow> rows = explain::parse_csv(text);
-    if (rows.empty()) throw io::InputError("line 1", "no header: expected " + std::string(worksheet_csv_header));
+    const std::vector<formats::CsvRow> rows = formats::parse_csv(text);
+    if (rows.empty()) throw formats::InputError("line 1", "no header: expected " + std::string(worksheet_csv_header));
     const std::vector<std::string>& header = rows.front().fields;
     const auto column = [&header](const char* name) {
         const auto found =
             std::find_if(header.begin(), header.end(), [name](const std::string& h) { return trimmed(h) == name; });
         if (found == header.end())
-            throw io::InputError("line 1", std::string("the header has no column \"") + name + "\" (expected " +
-                                               std::string(worksheet_csv_header) + ")");
+            throw formats::InputError("line 1", std::string("the header has no column \"") + name + "\" (expected " +
+                                                    std::string(worksheet_csv_header) + ")");
         return static_cast<std::size_t>(found - header.begin());
     };
     const std::size_t kind = column("kind"), path = column("path"), value = column("value");
@@ -83,11 +83,11 @@ FilledWorksheet read_worksheet_csv(std::string_view text) {
     for (auto row = rows.begin() + 1; row != rows.end(); ++row) {
         const std::string where = "line " + std::to_string(row->line);
         if (row->fields.size() < needed)
-            throw io::InputError(where, "has " + std::to_string(row->fields.size()) + " columns, the header " +
-                                            std::to_string(header.size()));
+            throw formats::InputError(where, "has " + std::to_string(row->fields.size()) + " columns, the header " +
+                                                 std::to_string(header.size()));
         const std::string k = trimmed(row->fields[kind]);
         if (k == "input") continue;
-        if (k != "cell") throw io::InputError(where, "kind must be \"input\" or \"cell\", got \"" + k + "\"");
+        if (k != "cell") throw formats::InputError(where, "kind must be \"input\" or \"cell\", got \"" + k + "\"");
         const std::string p = trimmed(row->fields[path]);
         const std::string filled = value < row->fields.size() ? row->fields[value] : "";
         sheet.cells.push_back({p, parse_json_path(p, where + ": path"), csv_value(filled), where});
@@ -95,4 +95,4 @@ FilledWorksheet read_worksheet_csv(std::string_view text) {
     return sheet;
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

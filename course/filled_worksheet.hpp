@@ -9,30 +9,31 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 struct FilledCell {
     std::string path;               // into the trace document
     std::vector<PathToken> tokens;  // the same, parsed
-    io::json value;                 // as filled: null (or null components) = blank
+    formats::json value;            // as filled: null (or null components) = blank
     std::string where;              // where it is in the file, for errors: "steps[2].cells[0]" or "line 14"
 };
 
 struct FilledWorksheet {
-    std::optional<io::json> settings;  // the settings the sheet was made with (JSON sheets only)
-    std::optional<io::json> scene;     // the scene (JSON sheets only)
+    std::optional<formats::json> settings;  // the settings the sheet was made with (JSON sheets only)
+    std::optional<formats::json> scene;     // the scene (JSON sheets only)
     std::vector<FilledCell> cells;
 };
 
 // Whether a parsed document is a worksheet (its "format" says so).
-bool is_worksheet(const io::json& document);
+bool is_worksheet(const formats::json& document);
 
-// Checks the worksheet schema and every cell's path; throws io::InputError with the JSON path of the problem.
-FilledWorksheet read_worksheet_json(const io::json& document);
+// Checks the worksheet schema and every cell's path; throws formats::InputError with the JSON path of the problem.
+FilledWorksheet read_worksheet_json(const formats::json& document);
 
 // A worksheet CSV: a header naming at least the columns kind, path and value (the others are read past), then
 // rows of kind "input" (skipped) or "cell". A cell's value is a number, true or false (in any case), empty or
-// missing for blank, or any other text (graded as a wrong answer, not rejected). Throws io::InputError("line N", ...).
+// missing for blank, or any other text (graded as a wrong answer, not rejected). Throws formats::InputError("line N",
+// ...).
 FilledWorksheet read_worksheet_csv(std::string_view text);
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

@@ -5,7 +5,7 @@
 #include <charconv>
 #include <limits>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 namespace {
 
@@ -14,10 +14,10 @@ bool is_key_char(char c) {
 }
 
 [[noreturn]] void malformed(std::string_view path, std::string_view where, const std::string& why) {
-    throw io::InputError(std::string(where), "\"" + std::string(path) +
-                                                 "\" is not a path such as "
-                                                 "frames[0].contacts[0].basis[1]: " +
-                                                 why);
+    throw formats::InputError(std::string(where), "\"" + std::string(path) +
+                                                      "\" is not a path such as "
+                                                      "frames[0].contacts[0].basis[1]: " +
+                                                      why);
 }
 
 }  // namespace
@@ -53,8 +53,8 @@ std::vector<PathToken> parse_json_path(std::string_view path, std::string_view w
     return tokens;
 }
 
-const io::json* value_at(const io::json& document, const std::vector<PathToken>& tokens) {
-    const io::json* here = &document;
+const formats::json* value_at(const formats::json& document, const std::vector<PathToken>& tokens) {
+    const formats::json* here = &document;
     for (const PathToken& token : tokens) {
         if (const auto* key = std::get_if<std::string>(&token)) {
             if (!here->is_object()) return nullptr;
@@ -70,10 +70,10 @@ const io::json* value_at(const io::json& document, const std::vector<PathToken>&
     return here;
 }
 
-std::vector<std::size_t> document_position(const io::json& document, const std::vector<PathToken>& tokens) {
+std::vector<std::size_t> document_position(const formats::json& document, const std::vector<PathToken>& tokens) {
     constexpr std::size_t absent = std::numeric_limits<std::size_t>::max();
     std::vector<std::size_t> position;
-    const io::json* here = &document;
+    const formats::json* here = &document;
     for (const PathToken& token : tokens) {
         if (!here) {
             position.push_back(absent);
@@ -81,7 +81,7 @@ std::vector<std::size_t> document_position(const io::json& document, const std::
         }
         if (const auto* key = std::get_if<std::string>(&token)) {
             std::size_t order = 0;
-            const io::json* next = nullptr;
+            const formats::json* next = nullptr;
             if (here->is_object())
                 for (auto it = here->begin(); it != here->end(); ++it, ++order)
                     if (it.key() == *key) {
@@ -99,4 +99,4 @@ std::vector<std::size_t> document_position(const io::json& document, const std::
     return position;
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

@@ -11,21 +11,21 @@
 #include <variant>
 #include <vector>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 // One step of a path: an object key or an array index.
 using PathToken = std::variant<std::string, std::size_t>;
 
-// Throws io::InputError(where, ...) when `path` is not keys and [indices] in the form json_path_child and
+// Throws formats::InputError(where, ...) when `path` is not keys and [indices] in the form json_path_child and
 // json_path_index write.
 std::vector<PathToken> parse_json_path(std::string_view path, std::string_view where);
 
 // The value at `tokens` in `document`, or null when the document has no such place.
-const io::json* value_at(const io::json& document, const std::vector<PathToken>& tokens);
+const formats::json* value_at(const formats::json& document, const std::vector<PathToken>& tokens);
 
 // Where a path comes in the document's own order: for each token, the position of its key in the object
 // (the order the file was written in) or its index. Paths compare lexicographically in trace order; a token
 // the document lacks sorts after everything that exists at that level.
-std::vector<std::size_t> document_position(const io::json& document, const std::vector<PathToken>& tokens);
+std::vector<std::size_t> document_position(const formats::json& document, const std::vector<PathToken>& tokens);
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

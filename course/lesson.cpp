@@ -1,7 +1,7 @@
 #include "course/lesson.hpp"
 
 #include "course/trace_path.hpp"
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "explain/annotations.hpp"
 #include "record/words.hpp"
 #include "explain/format.hpp"
@@ -22,7 +22,7 @@
 #include <cstdlib>
 #include <set>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 namespace {
 
@@ -62,25 +62,27 @@ Question read_question(const json& q, const std::string& where) {
             if (!explain::find_annotation(name)) {
                 std::vector<std::string> names;
                 for (const explain::Annotation& a : explain::vocabulary()) names.emplace_back(a.quantity);
-                const std::optional<std::string> suggestion = io::closest_name(name, names);
-                throw io::InputError(where + ".reveals[" + std::to_string(i) + "]",
-                                     "\"" + name + "\" is not a quantity of the vocabulary (docs/trace-format.md)" +
-                                         (suggestion ? "; did you mean \"" + *suggestion + "\"?" : std::string()));
+                const std::optional<std::string> suggestion = formats::closest_name(name, names);
+                throw formats::InputError(where + ".reveals[" + std::to_string(i) + "]",
+                                          "\"" + name +
+                                              "\" is not a quantity of the vocabulary (docs/trace-format.md)" +
+                                              (suggestion ? "; did you mean \"" + *suggestion + "\"?" : std::string()));
             }
             question.reveals.push_back(name);
         }
     if (question.kind == Question::Kind::predict) {
         if (!q.contains("tolerance"))
-            throw io::InputError(where + ".tolerance",
-                                 "a predict question needs a tolerance: {\"relative\": r} or "
-                                 "{\"absolute\": a}");
+            throw formats::InputError(where + ".tolerance",
+                                      "a predict question needs a tolerance: {\"relative\": r} or "
+                                      "{\"absolute\": a}");
         if (!question.options.empty())
-            throw io::InputError(where + ".options",
-                                 "a predict question has no options (did you mean \"kind\": "
-                                 "\"choose\"?)");
+            throw formats::InputError(where + ".options",
+                                      "a predict question has no options (did you mean \"kind\": "
+                                      "\"choose\"?)");
     } else {
-        if (question.options.empty()) throw io::InputError(where + ".options", "a choose question needs options");
-        if (q.contains("tolerance")) throw io::InputError(where + ".tolerance", "a choose question has no tolerance");
+        if (question.options.empty()) throw formats::InputError(where + ".options", "a choose question needs options");
+        if (q.contains("tolerance"))
+            throw formats::InputError(where + ".tolerance", "a choose question has no tolerance");
     }
     return question;
 }
@@ -93,10 +95,10 @@ std::string text_of(const json& value) {
 
 }  // namespace
 
-std::string question_quantity(const Question& question, inspect::Stage stage) {
-    const explain::ItemKind item = stage == inspect::Stage::preparation ? explain::ItemKind::contact
-                                   : stage == inspect::Stage::position  ? explain::ItemKind::position_iteration
-                                                                        : explain::ItemKind::velocity_iteration;
+std::string question_quantity(const Question& question, model::Stage stage) {
+    const explain::ItemKind item = stage == model::Stage::preparation ? explain::ItemKind::contact
+                                   : stage == model::Stage::position  ? explain::ItemKind::position_iteration
+                                                                      : explain::ItemKind::velocity_iteration;
     const explain::Annotation* a = explain::quantity_of_path(question.value, item);
     return a ? std::string(a->quantity) : std::string();
 }
@@ -105,12 +107,12 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
     Lesson lesson;
     lesson.file = file;
     lesson.name = file.stem().string();
-    io::require_utf8(text);  // shown in the window and written to the headless text and worksheets
+    formats::require_utf8(text);  // shown in the window and written to the headless text and worksheets
     {
         int number = 0;
         const auto [end, error] = std::from_chars(lesson.name.data(), lesson.name.data() + lesson.name.size(), number);
         if (error != std::errc() || end == lesson.name.data() || *end != '-')
-            throw io::InputError("", "a lesson file is named NN-slug.md (e.g. 01-impulse.md)");
+            throw formats::InputError("", "a lesson file is named NN-slug.md (e.g. 01-impulse.md)");
         lesson.number = number;
     }
 
@@ -124,21 +126,22 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
     std::size_t at = 0;
     while (at < lines.size() && trim(lines[at]).empty()) ++at;
     if (at == lines.size() || trim(lines[at]) != "```json")
-        throw io::InputError(line_at(static_cast<int>(at) + 1), "a lesson starts with its header in a ```json block");
+        throw formats::InputError(line_at(static_cast<int>(at) + 1),
+                                  "a lesson starts with its header in a ```json block");
     const std::size_t header_start = ++at;
     while (at < lines.size() && trim(lines[at]) != "```") ++at;
     if (at == lines.size())
-        throw io::InputError(line_at(static_cast<int>(header_start)),  // the opening fence's line
-                             "the ```json header block is not closed by ```");
+        throw formats::InputError(line_at(static_cast<int>(header_start)),  // the opening fence's line
+                                  "the ```json header block is not closed by ```");
     std::string header_text;
     for (std::size_t i = header_start; i < at; ++i) header_text += std::string(lines[i]) + "\n";
     json header;
     try {
-        header = io::parse_json_text(header_text);
-    } catch (const io::InputError& e) {
-        throw io::InputError("header", e.problem());
+        header = formats::parse_json_text(header_text);
+    } catch (const formats::InputError& e) {
+        throw formats::InputError("header", e.problem());
     }
-    io::SchemaValidator(io::parse_json_text(course::lesson_schema_text())).validate(header);
+    formats::SchemaValidator(formats::parse_json_text(course::lesson_schema_text())).validate(header);
 
     lesson.title = header["title"].get<std::string>();
     lesson.scene = (file.parent_path() / header["scene"].get<std::string>()).lexically_normal();
@@ -154,8 +157,8 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
         Step step;
         step.id = s["id"].get<std::string>();
         if (!valid_id(step.id))
-            throw io::InputError(where + ".id", "use letters, digits, - and _ only, got \"" + step.id + "\"");
-        if (!ids.insert(step.id).second) throw io::InputError(where + ".id", "\"" + step.id + "\" is used twice");
+            throw formats::InputError(where + ".id", "use letters, digits, - and _ only, got \"" + step.id + "\"");
+        if (!ids.insert(step.id).second) throw formats::InputError(where + ".id", "\"" + step.id + "\" is used twice");
         step.at = s["at"].get<std::string>();
         // A step renamed since the lesson was written (docs/trace-format.md) is read by its new name, with a note.
         for (const words::StepRename& r : words::step_renames()) {
@@ -167,7 +170,7 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
                     lesson.notes.push_back(where + ".at: step \"" + std::string(r.old_name) + "\" is now \"" +
                                            std::string(r.new_name) + "\"");
         }
-        inspect::parse_goto(step.at, where + ".at");
+        model::parse_goto(step.at, where + ".at");
         if (s.contains("question")) step.question = read_question(s["question"], where + ".question");
         lesson.steps.push_back(std::move(step));
     }
@@ -182,11 +185,11 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
             const auto step =
                 std::find_if(lesson.steps.begin(), lesson.steps.end(), [&](const Step& s) { return s.id == id; });
             if (step == lesson.steps.end())
-                throw io::InputError(line_at(static_cast<int>(i) + 1), "section \"" + id +
-                                                                           "\" has no step in the "
-                                                                           "header's steps");
+                throw formats::InputError(line_at(static_cast<int>(i) + 1), "section \"" + id +
+                                                                                "\" has no step in the "
+                                                                                "header's steps");
             if (!seen.insert(id).second)
-                throw io::InputError(line_at(static_cast<int>(i) + 1), "a second section \"" + id + "\"");
+                throw formats::InputError(line_at(static_cast<int>(i) + 1), "a second section \"" + id + "\"");
             into = &step->text;
             continue;
         }
@@ -195,7 +198,8 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         Step& s = lesson.steps[i];
         if (!seen.count(s.id))
-            throw io::InputError("steps[" + std::to_string(i) + "].id", "no \"## " + s.id + "\" section for this step");
+            throw formats::InputError("steps[" + std::to_string(i) + "].id",
+                                      "no \"## " + s.id + "\" section for this step");
         s.text = std::string(trim(s.text));
     }
     lesson.introduction = std::string(trim(lesson.introduction));
@@ -209,9 +213,9 @@ int question_count(const Lesson& lesson) {
 
 Lesson read_lesson(const std::filesystem::path& file) {
     try {
-        return read_lesson_text(cli::read_input_file(file.string(), cli::max_text_input_bytes), file);
-    } catch (const io::InputError& e) {
-        throw cli::FileError{file.string(), e.where(), e.problem()};
+        return read_lesson_text(formats::read_input_file(file.string(), formats::max_text_input_bytes), file);
+    } catch (const formats::InputError& e) {
+        throw formats::FileError{file.string(), e.where(), e.problem()};
     }
 }
 
@@ -224,14 +228,14 @@ std::vector<std::filesystem::path> lesson_files(const std::filesystem::path& fol
             std::isdigit(static_cast<unsigned char>(name[1])) && name[2] == '-')
             files.push_back(entry.path());
     }
-    if (error) throw cli::FileError{folder.string(), "", "cannot read the lessons folder: " + error.message()};
+    if (error) throw formats::FileError{folder.string(), "", "cannot read the lessons folder: " + error.message()};
     std::sort(files.begin(), files.end());
     return files;
 }
 
 PreparedLesson prepare_lesson(Lesson lesson) {
     const std::string file = lesson.file.string();
-    inspect::OpenOptions options;
+    model::OpenOptions options;
     options.settings = lesson.settings;
     options.record = lesson.record;
     // A case is resolved once; a scene is simulated for `frames` frames (default 1). Which one it is decides
@@ -239,24 +243,25 @@ PreparedLesson prepare_lesson(Lesson lesson) {
     const std::string scene_file = lesson.scene.string();
     bool is_case = false;
     try {
-        is_case = !io::read_scene_text(cli::read_input_file(scene_file)).contacts.empty();
-    } catch (const io::InputError& e) {
-        throw cli::FileError{scene_file, e.where(), e.problem()};
+        is_case = !formats::read_scene_text(formats::read_input_file(scene_file)).contacts.empty();
+    } catch (const formats::InputError& e) {
+        throw formats::FileError{scene_file, e.where(), e.problem()};
     }
     if (is_case && lesson.frames)
-        throw cli::FileError{file, "frames",
-                             "the scene is a case (its contacts are written out): it is resolved once, so it has no "
-                             "frames to simulate"};
+        throw formats::FileError{
+            file, "frames",
+            "the scene is a case (its contacts are written out): it is resolved once, so it has no "
+            "frames to simulate"};
     if (!is_case) options.frames = lesson.frames.value_or(1);
-    inspect::Session session = [&] {
+    model::Session session = [&] {
         try {
-            return inspect::Session::open(scene_file, options);
-        } catch (const io::InputError& e) {
-            throw cli::FileError{file,
-                                 e.where() == "--set"      ? "set"
-                                 : e.where() == "--record" ? "record"
-                                                           : e.where(),
-                                 e.problem()};
+            return model::Session::open(scene_file, options);
+        } catch (const formats::InputError& e) {
+            throw formats::FileError{file,
+                                     e.where() == "--set"      ? "set"
+                                     : e.where() == "--record" ? "record"
+                                                               : e.where(),
+                                     e.problem()};
         }
     }();
     PreparedLesson prepared{std::move(lesson), std::move(session), {}, {}};
@@ -266,8 +271,8 @@ PreparedLesson prepare_lesson(Lesson lesson) {
         const Step& step = prepared.lesson.steps[i];
         const std::string where = "steps[" + std::to_string(i) + "]";
         try {
-            const inspect::Cursor place =
-                inspect::resolve_goto(trace, inspect::parse_goto(step.at, where + ".at"), where + ".at");
+            const model::Cursor place =
+                model::resolve_goto(trace, model::parse_goto(step.at, where + ".at"), where + ".at");
             prepared.places.push_back(place);
             if (!step.question) {
                 prepared.answers.emplace_back();
@@ -277,22 +282,23 @@ PreparedLesson prepare_lesson(Lesson lesson) {
             std::string problem;
             const json item = item_json(trace, place);
             const json* value = follow(item, q.value, problem);
-            if (!value) throw io::InputError(where + ".question.value", problem);
+            if (!value) throw formats::InputError(where + ".question.value", problem);
             Answer answer{*value, question_quantity(q, place.stage), {}, -1, {}};
             if (answer.quantity.empty())
-                throw io::InputError(where + ".question.value", "\"" + q.value +
-                                                                    "\" names no quantity of the vocabulary here "
-                                                                    "(docs/trace-format.md lists the keys)");
+                throw formats::InputError(where + ".question.value", "\"" + q.value +
+                                                                         "\" names no quantity of the vocabulary here "
+                                                                         "(docs/trace-format.md lists the keys)");
             answer.unit = explain::annotation(answer.quantity).unit;
             if (q.kind == Question::Kind::predict) {
                 if (!value->is_number())
-                    throw io::InputError(where + ".question.value", "a predict question needs a number, and \"" +
-                                                                        q.value + "\" is " + value->dump());
+                    throw formats::InputError(where + ".question.value", "a predict question needs a number, and \"" +
+                                                                             q.value + "\" is " + value->dump());
                 answer.shown = explain::with_unit(explain::number(value->get<double>()), answer.unit);
             } else {
                 if (value->is_object() || value->is_array() || value->is_null())
-                    throw io::InputError(where + ".question.value", "a choose question needs a single value, and \"" +
-                                                                        q.value + "\" is " + value->dump());
+                    throw formats::InputError(
+                        where + ".question.value",
+                        "a choose question needs a single value, and \"" + q.value + "\" is " + value->dump());
                 for (std::size_t o = 0; o < q.options.size(); ++o) {
                     const json& v = q.options[o].value;
                     const bool equal = v.is_number() && value->is_number()
@@ -300,37 +306,37 @@ PreparedLesson prepare_lesson(Lesson lesson) {
                                            : v == *value;
                     if (!equal) continue;
                     if (answer.correct_option >= 0)
-                        throw io::InputError(where + ".question.options",
-                                             "two options equal the engine's value " + text_of(*value));
+                        throw formats::InputError(where + ".question.options",
+                                                  "two options equal the engine's value " + text_of(*value));
                     answer.correct_option = static_cast<int>(o);
                 }
                 if (answer.correct_option < 0)
-                    throw io::InputError(where + ".question.options",
-                                         "no option equals the engine's value " + text_of(*value));
+                    throw formats::InputError(where + ".question.options",
+                                              "no option equals the engine's value " + text_of(*value));
                 answer.shown = q.options[static_cast<std::size_t>(answer.correct_option)].label;
             }
             prepared.answers.push_back(std::move(answer));
-        } catch (const io::InputError& e) {
-            throw cli::FileError{file, e.where(), e.problem()};
+        } catch (const formats::InputError& e) {
+            throw formats::FileError{file, e.where(), e.problem()};
         }
     }
     return prepared;
 }
 
-Verdict check_answer(const Question& question, const Answer& answer, std::string_view typed) {
+AnswerVerdict check_answer(const Question& question, const Answer& answer, std::string_view typed) {
     const std::string text(trim(typed));
     char* end = nullptr;
     const double given = std::strtod(text.c_str(), &end);
     if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(given))
-        throw io::InputError(
+        throw formats::InputError(
             "answer", question.kind == Question::Kind::predict
                           ? "type a number, e.g. 3.2 or -1.5e-2"
                           : "type the number of an option, from 1 to " + std::to_string(question.options.size()));
     if (question.kind == Question::Kind::choose) {
         const int option = static_cast<int>(given) - 1;
         if (given != std::floor(given) || option < 0 || option >= static_cast<int>(question.options.size()))
-            throw io::InputError("answer",
-                                 "type the number of an option, from 1 to " + std::to_string(question.options.size()));
+            throw formats::InputError(
+                "answer", "type the number of an option, from 1 to " + std::to_string(question.options.size()));
         if (option == answer.correct_option) return {true, "right: " + answer.shown};
         return {false, "not quite: option " + std::to_string(option + 1) +
                            " is not what the engine does; try again, or skip to see its answer"};
@@ -353,4 +359,4 @@ std::string skipped_text(const Answer& answer) {
     return "skipped: the engine's answer is " + answer.shown;
 }
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

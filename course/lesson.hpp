@@ -14,9 +14,9 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
-struct Tolerance {
+struct AnswerTolerance {
     std::optional<double> relative;  // |answer - value| <= relative |value|
     std::optional<double> absolute;  // |answer - value| <= absolute, in the value's unit
 };
@@ -30,7 +30,7 @@ struct Question {
     enum class Kind { predict, choose } kind;
     std::string prompt;
     std::string value;  // a path inside the place's item: "desired_delta_velocity", "impulse_world[1]"
-    Tolerance tolerance;
+    AnswerTolerance tolerance;
     std::vector<Option> options;
     // Vocabulary names whose values would give this answer away (a step's table that shows it under another
     // name): hidden with the answer, and with what is computed from them, until the question is answered.
@@ -61,9 +61,9 @@ struct Lesson {
 // How many of the lesson's steps ask a question.
 int question_count(const Lesson& lesson);
 
-// Throws io::InputError("line N" or a header JSON path, problem); `file` names the lesson.
+// Throws formats::InputError("line N" or a header JSON path, problem); `file` names the lesson.
 Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file);
-// Throws cli::FileError naming the file.
+// Throws formats::FileError naming the file.
 Lesson read_lesson(const std::filesystem::path& file);
 
 // The lesson files of a folder (NN-*.md), in number order.
@@ -81,30 +81,30 @@ struct Answer {
 // A lesson with its run: the place of each step and the answer of each question.
 struct PreparedLesson {
     Lesson lesson;
-    inspect::Session session;
-    std::vector<inspect::Cursor> places;         // one per step
+    model::Session session;
+    std::vector<model::Cursor> places;           // one per step
     std::vector<std::optional<Answer>> answers;  // one per step: none without a question
 };
 
-// Runs the lesson's scene with its settings; throws cli::FileError naming the lesson file and the header
+// Runs the lesson's scene with its settings; throws formats::FileError naming the lesson file and the header
 // path of the first step whose place or question does not work with this run.
 PreparedLesson prepare_lesson(Lesson lesson);
 
 // What a student typed (a number, or for choose the option's number from 1), against the engine's answer. A
 // wrong answer says how far off it is, never the answer: the student may try again, or skip to see it.
-struct Verdict {
+struct AnswerVerdict {
     bool correct = false;
     // One line: "right: the engine has 3.24 m/s (you were 1.2 % off)", "not quite: 33.3 % too low; try
     // again, or skip to see the engine's value".
     std::string feedback;
 };
-// Throws io::InputError("answer", ...) when the text is not a number (or not an option's number).
-Verdict check_answer(const Question& question, const Answer& answer, std::string_view typed);
+// Throws formats::InputError("answer", ...) when the text is not a number (or not an option's number).
+AnswerVerdict check_answer(const Question& question, const Answer& answer, std::string_view typed);
 // What a skipped question shows: "skipped: the engine's answer is 7.5 m/s".
 std::string skipped_text(const Answer& answer);
 
 // The vocabulary name of a question's value at a place of `stage`: "impulse" for "impulse[0]",
 // "velocity_update" for "updates[0].after[0]" in a velocity iteration. Empty when the path names none.
-std::string question_quantity(const Question& question, inspect::Stage stage);
+std::string question_quantity(const Question& question, model::Stage stage);
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

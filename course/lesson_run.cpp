@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 LessonRun::LessonRun(const PreparedLesson& lesson, Progress* progress, std::optional<std::filesystem::path> file)
     : lesson_(&lesson), progress_(progress), file_(std::move(file)) {
@@ -33,10 +33,10 @@ LessonRun::LessonRun(const PreparedLesson& lesson, Progress* progress, std::opti
         }
         if (a.tries == 0) continue;
         try {
-            const Verdict v = check_answer(*steps[i].question, *lesson.answers[i], a.answer);
+            const AnswerVerdict v = check_answer(*steps[i].question, *lesson.answers[i], a.answer);
             states_[i] = v.correct ? QuestionState::answered : QuestionState::open;
             feedback_[i] = v.feedback;
-        } catch (const io::InputError&) {
+        } catch (const formats::InputError&) {
             // An answer the lesson no longer accepts (its options changed): asked again.
         }
     }
@@ -55,9 +55,9 @@ AnswerRecord* LessonRun::record(int step) {
     return &progress_->lessons[lesson_->lesson.name].answers[lesson_->lesson.steps[static_cast<std::size_t>(step)].id];
 }
 
-Verdict LessonRun::answer(std::string_view typed) {
+AnswerVerdict LessonRun::answer(std::string_view typed) {
     const auto i = static_cast<std::size_t>(step_);
-    const Verdict verdict = check_answer(*current().question, *lesson_->answers[i], typed);
+    const AnswerVerdict verdict = check_answer(*current().question, *lesson_->answers[i], typed);
     if (states_[i] != QuestionState::open) return verdict;  // already settled: a check, not a new answer
     states_[i] = verdict.correct ? QuestionState::answered : QuestionState::open;
     feedback_[i] = verdict.feedback;
@@ -117,9 +117,9 @@ void LessonRun::save() {
     try {
         save_progress(*file_, *progress_);
         save_problem_.clear();
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         save_problem_ = e.problem();
     }
 }
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

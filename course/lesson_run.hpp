@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 enum class QuestionState {
     none,      // the step asks nothing
@@ -45,9 +45,9 @@ public:
     // Whether that last answer was right.
     bool right(int step) const { return state(step) == QuestionState::answered; }
 
-    // Checks an answer to the current step's open question, records and saves it. Throws io::InputError
+    // Checks an answer to the current step's open question, records and saves it. Throws formats::InputError
     // ("answer", ...) when the text is not a number (or not an option's number): nothing is recorded then.
-    Verdict answer(std::string_view typed);
+    AnswerVerdict answer(std::string_view typed);
     // Gives the current step's open question up: its answer is shown and recorded as skipped.
     void skip();
 
@@ -79,4 +79,4 @@ private:
     std::string save_problem_;
 };
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

@@ -10,13 +10,13 @@
 #include <cmath>
 #include <cstdlib>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 namespace {
 
 using json = nlohmann::ordered_json;
-using inspect::Cursor;
-using inspect::Stage;
+using model::Cursor;
+using model::Stage;
 
 // What a value shows about itself only, never about a hidden change: indices, settings, what a contact is given.
 bool fixed_row(std::string_view key) {
@@ -39,8 +39,8 @@ bool fixed_row(std::string_view key) {
 std::vector<Cursor> items_of(const Trace& trace, int f) {
     std::vector<Cursor> items;
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
-    for (Stage stage : inspect::stages(frame))
-        for (int i = 0; i < inspect::item_count(frame, stage); ++i) items.push_back(Cursor{f, stage, i, 0});
+    for (Stage stage : model::stages(frame))
+        for (int i = 0; i < model::item_count(frame, stage); ++i) items.push_back(Cursor{f, stage, i, 0});
     return items;
 }
 
@@ -48,10 +48,10 @@ int rank_in(const Trace& trace, const Cursor& c) {
     if (c.stage == Stage::preparation) return 0;
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(c.frame)];
     int offset = 1;
-    for (Stage stage : inspect::stages(frame)) {
+    for (Stage stage : model::stages(frame)) {
         if (stage == Stage::preparation) continue;
         if (stage == c.stage) return offset + c.item;
-        offset += inspect::item_count(frame, stage);
+        offset += model::item_count(frame, stage);
     }
     return offset;
 }
@@ -94,7 +94,7 @@ void add_same_step_inputs(std::set<std::string, std::less<>>& keys, std::string_
 }
 
 bool looks_ahead(const Trace& trace, const Cursor& place, std::string_view quantity) {
-    const std::vector<explain::StepTable> tables = inspect::step_tables(trace, place);
+    const std::vector<explain::StepTable> tables = model::step_tables(trace, place);
     const std::string_view step = explain::annotation(quantity).step;
     for (std::size_t t = 0; t < tables.size(); ++t) {
         const bool computes =
@@ -145,8 +145,8 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
         QuestionReach reach;
         std::optional<Cursor> place;
         try {
-            place = inspect::resolve_goto(trace, inspect::parse_goto(step.at, "at"), "at");
-        } catch (const io::InputError&) {
+            place = model::resolve_goto(trace, model::parse_goto(step.at, "at"), "at");
+        } catch (const formats::InputError&) {
             // A re-run with other settings may not have this place: the question then hides its keys in
             // every frame and contact.
         }
@@ -170,7 +170,7 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
                 for (std::string_view next : explain::inputs_of(*a)) todo.push_back(next);
         }
         reach.frame = place->frame;
-        const int own = inspect::contact_at(trace, *place);
+        const int own = model::contact_at(trace, *place);
         reach.contacts.insert(own);
 
         // Contacts whose same quantity has the answer's value: the same answer, shown elsewhere.
@@ -198,7 +198,7 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
                     for (const std::string& path : paths_like(j, q.value)) {
                         const json* other = follow(j, path, problem);
                         if (other && other->is_number() && std::abs(other->get<double>() - value) <= allowed)
-                            reach.contacts.insert(inspect::contact_at(trace, item));
+                            reach.contacts.insert(model::contact_at(trace, item));
                     }
                 }
             }
@@ -211,13 +211,13 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
             const FrameRecord& frame = trace.frames[static_cast<std::size_t>(place->frame)];
             for (const Cursor& item : items) {
                 if (item.stage == Stage::preparation) continue;
-                const int contact = inspect::contact_at(trace, item);
+                const int contact = model::contact_at(trace, item);
                 if (!reach.contacts.count(contact) || (contact == own && rank_in(trace, item) < from)) continue;
                 const bool resolved =
                     item.stage == Stage::position
                         ? frame.position.iterations[static_cast<std::size_t>(item.item)].resolution.has_value()
                         : frame.velocity.iterations[static_cast<std::size_t>(item.item)].resolution.has_value();
-                const ContactPreparation* p = inspect::preparation_of(frame, contact);
+                const ContactPreparation* p = model::preparation_of(frame, contact);
                 if (!resolved || !p) continue;
                 for (int body : p->bodies)
                     if (body != world_body && !reach.bodies.count(body)) reach.bodies.emplace(body, item);
@@ -244,7 +244,7 @@ bool Mask::later(const Cursor& at, const Cursor& from, bool including) const {
 }
 
 bool Mask::touches_hidden_body(const Cursor& at, int contact, bool including) const {
-    const ContactPreparation* p = inspect::preparation_of(trace_->frames[static_cast<std::size_t>(at.frame)], contact);
+    const ContactPreparation* p = model::preparation_of(trace_->frames[static_cast<std::size_t>(at.frame)], contact);
     if (!p) return false;
     for (const QuestionReach& r : reaches_)
         for (int body : p->bodies)
@@ -266,7 +266,7 @@ bool Mask::equals_an_answer(std::string_view key, double value, std::string_view
 
 bool Mask::hides_row(const Cursor& item, const explain::Row& row) const {
     if (reaches_.empty() || row.key.empty()) return false;
-    const int contact = inspect::contact_at(*trace_, item);
+    const int contact = model::contact_at(*trace_, item);
     for (const QuestionReach& r : reaches_) {
         const bool here = r.frame < 0 || (r.frame == item.frame && r.contacts.count(contact));
         if (here && r.keys.count(row.key)) return true;
@@ -322,4 +322,4 @@ std::optional<Cursor> Mask::body_shown_until(const Cursor& at, int body) const {
     return earliest;
 }
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

@@ -24,7 +24,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 // What one question hides while it is open, over one trace.
 struct QuestionReach {
@@ -33,7 +33,7 @@ struct QuestionReach {
     std::set<std::string, std::less<>> keys;  // vocabulary names hidden in those contacts' items
     // The bodies a hidden change moves, each with the first item (time order) that moves it: from there on
     // its state, and everything computed from it, is hidden.
-    std::map<int, inspect::Cursor> bodies;
+    std::map<int, model::Cursor> bodies;
     // A predict question's answer, to hide any value equal to it.
     std::optional<double> answer;
     double allowed = 0.0;                       // its tolerance
@@ -55,33 +55,33 @@ public:
     bool empty() const { return reaches_.empty(); }
 
     // A row of a derivation table of the item `item` stands on (its step is ignored).
-    bool hides_row(const inspect::Cursor& item, const explain::Row& row) const;
+    bool hides_row(const model::Cursor& item, const explain::Row& row) const;
     // A contact's bookkeeping value as the contacts list, the navigator and the plots show it just before
     // the item `at` stands on: "penetration", "desired_delta_velocity" or "impulse_world" (the impulse so far).
-    bool hides_value(const inspect::Cursor& at, int contact, std::string_view key, double value) const;
+    bool hides_value(const model::Cursor& at, int contact, std::string_view key, double value) const;
     // Which bodies a contact joins ("ball / world").
     bool hides_bodies_of(int frame, int contact) const;
     // A body's state just before (after = false) or just after the item `at` stands on; `state` is that state.
-    bool hides_body(const inspect::Cursor& at, int body, bool after, const BodyState& state) const;
+    bool hides_body(const model::Cursor& at, int body, bool after, const BodyState& state) const;
     // Whether a body's state at `at` is hidden for a hidden change (whatever its values).
-    bool hides_body(const inspect::Cursor& at, int body, bool after) const;
+    bool hides_body(const model::Cursor& at, int body, bool after) const;
     // A value of `key` (in that quantity's unit, or `unit` when given) equal to an open answer it does not
     // feed into.
     bool equals_an_answer(std::string_view key, double value, std::string_view unit = {}) const;
     // The item before which a hidden body was last shown, to draw it where it was; none when it is not hidden
     // at `at`.
-    std::optional<inspect::Cursor> body_shown_until(const inspect::Cursor& at, int body) const;
+    std::optional<model::Cursor> body_shown_until(const model::Cursor& at, int body) const;
 
 private:
     // Items run in this order within a frame: the preparation (0), then the phases' iterations (1, 2, ...).
-    int rank(const inspect::Cursor& c) const;
+    int rank(const model::Cursor& c) const;
     // Whether a body hidden from `from` is hidden at `at`: strictly later (before = its state going in), or
     // also at `from` itself (after).
-    bool later(const inspect::Cursor& at, const inspect::Cursor& from, bool including) const;
-    bool touches_hidden_body(const inspect::Cursor& at, int contact, bool including) const;
+    bool later(const model::Cursor& at, const model::Cursor& from, bool including) const;
+    bool touches_hidden_body(const model::Cursor& at, int contact, bool including) const;
 
     std::vector<QuestionReach> reaches_;
     const Trace* trace_ = nullptr;
 };
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

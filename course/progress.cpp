@@ -1,6 +1,6 @@
 #include "course/progress.hpp"
 
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -13,7 +13,7 @@
 #include <cstdlib>
 #include <ctime>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 namespace {
 
@@ -23,41 +23,41 @@ constexpr std::string_view format_name = "impulse-lab-progress";
 // A whole number from 0 to INT_MAX at `path`; anything else (a fraction, a huge or negative number, text)
 // is an error, never a cast.
 int read_count(const json& object, const std::string& path, const char* key) {
-    const std::string where = io::json_path_child(path, key);
-    if (!object.contains(key)) throw io::InputError(where, "missing");
+    const std::string where = formats::json_path_child(path, key);
+    if (!object.contains(key)) throw formats::InputError(where, "missing");
     const json& value = object[key];
     if (!value.is_number_integer() || value.get<std::int64_t>() < 0 ||
         value.get<std::int64_t>() > std::numeric_limits<int>::max())
-        throw io::InputError(where, "must be a whole number from 0 to " +
-                                        std::to_string(std::numeric_limits<int>::max()) + ", got " + value.dump());
+        throw formats::InputError(where, "must be a whole number from 0 to " +
+                                             std::to_string(std::numeric_limits<int>::max()) + ", got " + value.dump());
     return static_cast<int>(value.get<std::int64_t>());
 }
 
 const json& member(const json& object, const std::string& path, const char* key, json::value_t type,
                    const char* type_name) {
-    const std::string where = io::json_path_child(path, key);
-    if (!object.contains(key)) throw io::InputError(where, "missing");
-    if (object[key].type() != type) throw io::InputError(where, std::string("must be ") + type_name);
+    const std::string where = formats::json_path_child(path, key);
+    if (!object.contains(key)) throw formats::InputError(where, "missing");
+    if (object[key].type() != type) throw formats::InputError(where, std::string("must be ") + type_name);
     return object[key];
 }
 
 }  // namespace
 
 Progress read_progress_text(std::string_view text) {
-    const json document = io::parse_json_text(text);
+    const json document = formats::parse_json_text(text);
     if (!document.is_object() || document.value("format", json()) != format_name ||
         document.value("version", json()) != 1)
-        throw io::InputError("", "not an impulse-lab-progress file of version 1");
+        throw formats::InputError("", "not an impulse-lab-progress file of version 1");
     Progress progress;
     for (const auto& [name, lesson] : member(document, "", "lessons", json::value_t::object, "an object").items()) {
-        const std::string path = io::json_path_child("lessons", name);
-        if (!lesson.is_object()) throw io::InputError(path, "must be an object");
+        const std::string path = formats::json_path_child("lessons", name);
+        if (!lesson.is_object()) throw formats::InputError(path, "must be an object");
         LessonProgress p;
         p.last_step = read_count(lesson, path, "last_step");
-        const std::string answers_path = io::json_path_child(path, "answers");
+        const std::string answers_path = formats::json_path_child(path, "answers");
         for (const auto& [id, a] : member(lesson, path, "answers", json::value_t::object, "an object").items()) {
-            const std::string where = io::json_path_child(answers_path, id);
-            if (!a.is_object()) throw io::InputError(where, "must be an object");
+            const std::string where = formats::json_path_child(answers_path, id);
+            if (!a.is_object()) throw formats::InputError(where, "must be an object");
             p.answers[id] = {member(a, where, "answer", json::value_t::string, "text").get<std::string>(),
                              member(a, where, "correct", json::value_t::boolean, "true or false").get<bool>(),
                              read_count(a, where, "tries"),
@@ -121,8 +121,8 @@ LoadedProgress load_progress(const std::filesystem::path& file) {
     if (!std::filesystem::exists(file, error)) return {};
     std::string why;
     try {
-        return {read_progress_text(cli::read_input_file(file.string(), cli::max_text_input_bytes)), {}};
-    } catch (const cli::FileError& e) {
+        return {read_progress_text(formats::read_input_file(file.string(), formats::max_text_input_bytes)), {}};
+    } catch (const formats::FileError& e) {
         why = e.problem;  // unreadable, or larger than any progress file we write
     } catch (const std::exception& e) {
         why = e.what();
@@ -148,8 +148,8 @@ void save_progress(const std::filesystem::path& file, const Progress& progress) 
     std::error_code error;
     std::filesystem::create_directories(file.parent_path(), error);
     if (error)
-        throw io::InputError("progress", "cannot create " + file.parent_path().string() + ": " + error.message());
-    io::write_file_atomically(file, io::format_json(document), "progress");
+        throw formats::InputError("progress", "cannot create " + file.parent_path().string() + ": " + error.message());
+    formats::write_file_atomically(file, formats::format_json(document), "progress");
 }
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 struct AnswerRecord {
     std::string answer;  // the last answer, as typed
@@ -48,14 +48,14 @@ struct LoadedProgress {
     Progress progress;
     std::string note;  // one line when a corrupt file was moved aside ("... kept as progress.json.corrupt-...")
 };
-// Progress from a file's text, as save_progress writes it; throws io::InputError(JSON path, problem) for
+// Progress from a file's text, as save_progress writes it; throws formats::InputError(JSON path, problem) for
 // anything else. Touches no file.
 Progress read_progress_text(std::string_view text);
 
 // A missing file is empty progress. A corrupt one is renamed beside itself with a time stamp and reported.
 LoadedProgress load_progress(const std::filesystem::path& file);
 
-// Writes atomically (creating the folder); throws io::InputError("progress", ...) when it cannot.
+// Writes atomically (creating the folder); throws formats::InputError("progress", ...) when it cannot.
 void save_progress(const std::filesystem::path& file, const Progress& progress);
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

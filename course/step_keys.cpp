@@ -7,7 +7,7 @@
 #include <vector>
 #include <optional>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 namespace {
 
@@ -113,7 +113,7 @@ std::string step_key_of(const std::vector<PathToken>& path, std::size_t from) {
     return key;
 }
 
-Described describe_path(const io::json& document, const std::vector<PathToken>& path) {
+Described describe_path(const formats::json& document, const std::vector<PathToken>& path) {
     const auto key_is = [&path](std::size_t i, std::string_view key) {
         const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
         return k && *k == key;
@@ -130,7 +130,7 @@ Described describe_path(const io::json& document, const std::vector<PathToken>& 
         rest = 4;
     } else if (key_is(0, "frames") && index_at(1) && key_is(2, "phases") && index_at(3) && key_is(4, "iterations") &&
                index_at(5)) {
-        const io::json* phase = value_at(document, {path.begin(), path.begin() + 4});
+        const formats::json* phase = value_at(document, {path.begin(), path.begin() + 4});
         if (phase && phase->is_object() && phase->contains("phase"))
             item = (*phase)["phase"] == "position" ? ItemKind::position_iteration : ItemKind::velocity_iteration;
         rest = 6;
@@ -145,4 +145,4 @@ Described describe_path(const io::json& document, const std::vector<PathToken>& 
     return {};
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

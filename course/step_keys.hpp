@@ -4,7 +4,7 @@
 // (a step's cells are the keys it computes, its inputs the keys of the steps before it) and behind the
 // equation `diff` names beside a mismatch. An item is a prepared contact (frames[f].contacts[k]) or one
 // iteration of a phase (frames[f].phases[p].iterations[i]); the step names are those of the inspector's
-// tables (inspect::step_tables). Every key the trace writes into an item appears here once, which a test
+// tables (model::step_tables). Every key the trace writes into an item appears here once, which a test
 // checks over the shipped cases run with every method.
 
 #include "course/json_path.hpp"
@@ -15,7 +15,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 enum class ItemKind {
     contact,             // frames[f].contacts[k]: steps 1-5, as prepared
@@ -79,6 +79,6 @@ Described describe_outside(const OutsideKey& key);
 
 // The meaning of any path into a trace document: the item's entry when the path is inside an item, else the
 // last key of the path that is a vocabulary name; empty fields when neither applies (settings, the scene).
-Described describe_path(const io::json& trace_document, const std::vector<PathToken>& path);
+Described describe_path(const formats::json& trace_document, const std::vector<PathToken>& path);
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

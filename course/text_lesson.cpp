@@ -8,7 +8,7 @@
 #include <cctype>
 #include <string>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 namespace {
 
@@ -54,9 +54,9 @@ void write_markdown(std::ostream& out, const std::string& markdown, int width) {
 
 // The step's table, or (`earlier`) its item's tables up to it as the window's derivation table shows them,
 // with what the mask hides as "?".
-void write_tables(std::ostream& out, const Trace& trace, const inspect::Cursor& place, const Mask& mask,
+void write_tables(std::ostream& out, const Trace& trace, const model::Cursor& place, const Mask& mask,
                   bool earlier = false) {
-    const std::vector<explain::StepTable> tables = inspect::step_tables(trace, place);
+    const std::vector<explain::StepTable> tables = model::step_tables(trace, place);
     for (int t = earlier ? 0 : place.step; t <= place.step && t < static_cast<int>(tables.size()); ++t) {
         explain::StepTable table = tables[static_cast<std::size_t>(t)];
         for (explain::Row& r : table.rows)
@@ -76,8 +76,8 @@ void write_step(std::ostream& out, const LessonRun& run, const std::vector<std::
     const auto i = static_cast<std::size_t>(run.step());
     const Step& step = run.current();
     const Trace& trace = prepared.session.trace();
-    const inspect::Cursor& place = prepared.places[i];
-    out << "\n── Step " << run.step() + 1 << " of " << run.step_count() << " · " << inspect::describe(trace, place)
+    const model::Cursor& place = prepared.places[i];
+    out << "\n── Step " << run.step() + 1 << " of " << run.step_count() << " · " << model::describe(trace, place)
         << " ──\n\n";
     if (run.step() == 0 && !lesson.introduction.empty()) {
         write_markdown(out, lesson.introduction, width);
@@ -178,10 +178,10 @@ void take_lesson(LessonRun& run, std::istream& in, std::ostream& out, int width)
                 out << wrap_text(run.feedback(run.step()), width, "  ");
             } else {
                 try {
-                    const Verdict v = run.answer(typed);
+                    const AnswerVerdict v = run.answer(typed);
                     out << wrap_text(v.feedback, width, "  ");
                     if (!v.correct) continue;
-                } catch (const io::InputError& e) {
+                } catch (const formats::InputError& e) {
                     out << "  " << e.problem() << '\n';
                     continue;
                 }
@@ -212,8 +212,8 @@ void write_annotated_lesson(std::ostream& out, const PreparedLesson& prepared) {
     const Trace& trace = prepared.session.trace();
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const Step& step = lesson.steps[i];
-        const inspect::Cursor& place = prepared.places[i];
-        out << "\n── Step " << i + 1 << " of " << lesson.steps.size() << " · " << inspect::describe(trace, place)
+        const model::Cursor& place = prepared.places[i];
+        out << "\n── Step " << i + 1 << " of " << lesson.steps.size() << " · " << model::describe(trace, place)
             << " ──\n\n"
             << step.text << '\n';
         if (step.question) {
@@ -221,11 +221,11 @@ void write_annotated_lesson(std::ostream& out, const PreparedLesson& prepared) {
             for (std::size_t o = 0; o < step.question->options.size(); ++o)
                 out << "  " << o + 1 << ". " << step.question->options[o].label << '\n';
         }
-        const std::vector<explain::StepTable> tables = inspect::step_tables(trace, place);
+        const std::vector<explain::StepTable> tables = model::step_tables(trace, place);
         out << '\n';
         explain::write_table(out, tables[static_cast<std::size_t>(place.step)]);
         if (step.question) out << "Answer (the engine's): " << prepared.answers[i]->shown << '\n';
     }
 }
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

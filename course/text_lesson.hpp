@@ -9,7 +9,7 @@
 #include <istream>
 #include <ostream>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 // Reads answers and commands line by line from `in` until the lesson ends, the student types q, or `in`
 // ends; `width` is the terminal's, for wrapping the text. The commands: Enter the next step, a number (or
@@ -22,4 +22,4 @@ void write_annotated_lesson(std::ostream& out, const PreparedLesson& prepared);
 // The lines of `text` that fit `width` columns, broken at spaces (a word longer than a line stays whole).
 std::string wrap_text(std::string_view text, int width, std::string_view indent = "");
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

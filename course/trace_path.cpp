@@ -6,7 +6,7 @@
 #include <charconv>
 #include <stdexcept>
 
-namespace impulse::lessons {
+namespace impulse::course {
 
 using json = nlohmann::ordered_json;
 
@@ -48,18 +48,18 @@ const json* follow(const json& item, std::string_view path, std::string& problem
     return at;
 }
 
-json item_json(const Trace& trace, const inspect::Cursor& c) {
+json item_json(const Trace& trace, const model::Cursor& c) {
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(c.frame)];
     const auto i = static_cast<std::size_t>(c.item);
     switch (c.stage) {
-        case inspect::Stage::preparation:
-            return io::item_json(frame.contacts[i]);
-        case inspect::Stage::position:
-            return io::item_json(frame.position.iterations[i]);
-        case inspect::Stage::velocity:
-            return io::item_json(frame.velocity.iterations[i]);
+        case model::Stage::preparation:
+            return formats::item_json(frame.contacts[i]);
+        case model::Stage::position:
+            return formats::item_json(frame.position.iterations[i]);
+        case model::Stage::velocity:
+            return formats::item_json(frame.velocity.iterations[i]);
     }
     throw std::logic_error("a cursor in no stage");
 }
 
-}  // namespace impulse::lessons
+}  // namespace impulse::course

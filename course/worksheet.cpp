@@ -1,7 +1,7 @@
 #include "course/worksheet.hpp"
 
-#include "explain/csv.hpp"
-#include "course/diff.hpp"
+#include "formats/csv.hpp"
+#include "course/tolerance.hpp"
 #include "course/step_keys.hpp"
 #include "course/trace_items.hpp"
 #include "formats/input_error.hpp"
@@ -17,17 +17,17 @@
 #include <cstdlib>
 #include <set>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 namespace {
 
-using inspect::Cursor;
-using inspect::Stage;
+using model::Cursor;
+using model::Stage;
 
 // The step names of the cursor's item, in the order its tables show them.
 std::vector<std::string> step_order(const Trace& trace, const Cursor& c) {
     std::vector<std::string> names;
-    for (const explain::StepTable& t : inspect::step_tables(trace, c)) names.push_back(t.step);
+    for (const explain::StepTable& t : model::step_tables(trace, c)) names.push_back(t.step);
     return names;
 }
 
@@ -40,22 +40,22 @@ std::vector<WorksheetEntry> cells_of(const ItemAt& item, const std::string& step
 
 std::string at_spec(const Trace& trace, const Cursor& c, const std::string& step) {
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(c.frame)];
-    std::string spec = "frame=" + std::to_string(frame.frame) + ",phase=" + std::string(inspect::stage_name(c.stage));
+    std::string spec = "frame=" + std::to_string(frame.frame) + ",phase=" + std::string(model::stage_name(c.stage));
     if (c.stage == Stage::preparation)
-        spec += ",contact=" + std::to_string(inspect::contact_at(trace, c));
+        spec += ",contact=" + std::to_string(model::contact_at(trace, c));
     else
         spec += ",iteration=" + std::to_string(c.item);
     return spec + ",step=" + step;
 }
 
-io::json blanked(const io::json& value) {
+formats::json blanked(const formats::json& value) {
     if (!value.is_array()) return nullptr;
-    io::json out = io::json::array();
-    for (const io::json& v : value) out.push_back(blanked(v));
+    formats::json out = formats::json::array();
+    for (const formats::json& v : value) out.push_back(blanked(v));
     return out;
 }
 
-io::json entry_json(const WorksheetEntry& e, bool blank) {
+formats::json entry_json(const WorksheetEntry& e, bool blank) {
     return {{"path", e.path},         {"step", e.step},
             {"quantity", e.quantity}, {"unit", e.unit},
             {"formula", e.formula},   {"equation", e.equation},
@@ -63,7 +63,7 @@ io::json entry_json(const WorksheetEntry& e, bool blank) {
 }
 
 // Whether a cursor's step has anything to fill in, and the names of the item's steps that have.
-std::vector<std::string> steps_with_cells(const io::json& document, const Trace& trace, const Cursor& c) {
+std::vector<std::string> steps_with_cells(const formats::json& document, const Trace& trace, const Cursor& c) {
     const ItemAt item = item_at(document, c);
     std::vector<std::string> names;
     for (const std::string& name : step_order(trace, c))
@@ -105,15 +105,15 @@ double rounded_for_hand_work(double value) {
     return value;
 }
 
-io::json rounded_for_hand_work(const io::json& value) {
+formats::json rounded_for_hand_work(const formats::json& value) {
     if (value.is_number_float()) return rounded_for_hand_work(value.get<double>());
     if (!value.is_array()) return value;
-    io::json out = io::json::array();
-    for (const io::json& v : value) out.push_back(rounded_for_hand_work(v));
+    formats::json out = formats::json::array();
+    for (const formats::json& v : value) out.push_back(rounded_for_hand_work(v));
     return out;
 }
 
-Wording word_path(const Trace& trace, const io::json& document, const std::vector<PathToken>& path) {
+Wording word_path(const Trace& trace, const formats::json& document, const std::vector<PathToken>& path) {
     const auto key_is = [&path](std::size_t i, std::string_view key) {
         const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
         return k && *k == key;
@@ -140,8 +140,8 @@ Wording word_path(const Trace& trace, const io::json& document, const std::vecto
         c = Cursor{static_cast<int>(*f), Stage::preparation, static_cast<int>(*index(3)), 0};
         rest = 4;
     } else if (key_is(2, "phases") && index(3) && key_is(4, "iterations") && index(5)) {
-        const io::json* phase = value_at(document, {path.begin(), path.begin() + 4});
-        const io::json* iteration = value_at(document, {path.begin(), path.begin() + 6});
+        const formats::json* phase = value_at(document, {path.begin(), path.begin() + 4});
+        const formats::json* iteration = value_at(document, {path.begin(), path.begin() + 6});
         if (phase && iteration && phase->contains("phase"))
             c = Cursor{static_cast<int>(*f), (*phase)["phase"] == "position" ? Stage::position : Stage::velocity,
                        static_cast<int>(*index(5)), 0};
@@ -158,21 +158,21 @@ Wording word_path(const Trace& trace, const io::json& document, const std::vecto
     w.quantity = path_text(path, rest);
     if (at != order.end()) {
         c->step = static_cast<int>(at - order.begin());
-        w.place = inspect::describe(trace, *c);
+        w.place = model::describe(trace, *c);
     } else {
         // A given of the item (the contact as detected, the iteration's choice): the item without a step.
-        w.place = inspect::describe(trace, *c);
+        w.place = model::describe(trace, *c);
         const std::string first = order.empty() ? "" : " · " + order.front();
         if (!first.empty() && w.place.ends_with(first)) w.place.resize(w.place.size() - first.size());
     }
     return w;
 }
 
-std::vector<Cursor> places_with_cells(const inspect::Session& session, const std::vector<Cursor>& candidates,
-                                      const io::json* given_document) {
+std::vector<Cursor> places_with_cells(const model::Session& session, const std::vector<Cursor>& candidates,
+                                      const formats::json* given_document) {
     const Trace& trace = session.trace();
-    const io::json made = given_document ? io::json() : io::trace_json(trace);
-    const io::json& document = given_document ? *given_document : made;
+    const formats::json made = given_document ? formats::json() : formats::trace_json(trace);
+    const formats::json& document = given_document ? *given_document : made;
     std::vector<Cursor> places;
     for (const Cursor& c : candidates) {
         const std::vector<std::string> order = step_order(trace, c);
@@ -181,26 +181,26 @@ std::vector<Cursor> places_with_cells(const inspect::Session& session, const std
     return places;
 }
 
-std::string scalar_text(const io::json& value) {
+std::string scalar_text(const formats::json& value) {
     if (value.is_null()) return "";
     if (value.is_boolean()) return value.get<bool>() ? "true" : "false";
     if (value.is_string()) return value.get<std::string>();
-    if (value.is_number_float()) return io::number_text(value.get<double>());
+    if (value.is_number_float()) return formats::number_text(value.get<double>());
     return value.dump();
 }
 
-Worksheet make_worksheet(const inspect::Session& session, const std::vector<Cursor>& places,
-                         const io::json* given_document) {
+Worksheet make_worksheet(const model::Session& session, const std::vector<Cursor>& places,
+                         const formats::json* given_document) {
     const Trace& trace = session.trace();
-    const io::json made = given_document ? io::json() : io::trace_json(trace);
-    const io::json& document = given_document ? *given_document : made;
+    const formats::json made = given_document ? formats::json() : formats::trace_json(trace);
+    const formats::json& document = given_document ? *given_document : made;
     Worksheet sheet;
     sheet.source = session.path();
     sheet.conventions = document["conventions"];
     sheet.settings = document["settings"];
-    const bool resolved = session.kind() == inspect::SourceKind::case_file ||
-                          (session.kind() == inspect::SourceKind::trace_file && !trace.scene.contacts.empty());
-    io::json run = {{"mode", resolved ? "resolve" : "simulate"}};
+    const bool resolved = session.kind() == model::SourceKind::case_file ||
+                          (session.kind() == model::SourceKind::trace_file && !trace.scene.contacts.empty());
+    formats::json run = {{"mode", resolved ? "resolve" : "simulate"}};
     if (!resolved) run["frames"] = trace.scene.world.frames;  // a run's header says how many frames it ran
     sheet.reference = {{"run", run}, {"recording", document["recording"]}, {"scene", document["scene"]}};
 
@@ -211,10 +211,10 @@ Worksheet make_worksheet(const inspect::Session& session, const std::vector<Curs
         const std::vector<std::string> order = step_order(trace, c);
         const std::string& step = order[static_cast<std::size_t>(c.step)];
         const ItemAt item = item_at(document, c);
-        WorksheetStep s{inspect::describe(trace, c), at_spec(trace, c, step), {}, cells_of(item, step)};
+        WorksheetStep s{model::describe(trace, c), at_spec(trace, c, step), {}, cells_of(item, step)};
         if (s.cells.empty())
-            throw io::InputError("--steps", s.at + ": the step computes nothing to fill in (steps that do here: " +
-                                                joined(steps_with_cells(document, trace, c)) + ")");
+            throw formats::InputError("--steps", s.at + ": the step computes nothing to fill in (steps that do here: " +
+                                                     joined(steps_with_cells(document, trace, c)) + ")");
         s.inputs = inputs_of(item, order, static_cast<std::size_t>(c.step), document, resolved);
         sheet.steps.push_back(std::move(s));
     }
@@ -234,10 +234,10 @@ Worksheet make_worksheet(const inspect::Session& session, const std::vector<Curs
 
 std::vector<Cursor> default_places(const Trace& trace) {
     std::vector<Cursor> places;
-    const std::optional<Cursor> first = inspect::first_cursor(trace);
+    const std::optional<Cursor> first = model::first_cursor(trace);
     if (!first) return places;
-    const io::json document = io::trace_json(trace);
-    for (std::optional<Cursor> c = first; c && c->frame == first->frame; c = inspect::next_step(trace, *c)) {
+    const formats::json document = formats::trace_json(trace);
+    for (std::optional<Cursor> c = first; c && c->frame == first->frame; c = model::next_step(trace, *c)) {
         const std::vector<std::string> order = step_order(trace, *c);
         if (!cells_of(item_at(document, *c), order[static_cast<std::size_t>(c->step)]).empty()) places.push_back(*c);
     }
@@ -247,24 +247,24 @@ std::vector<Cursor> default_places(const Trace& trace) {
 std::vector<Cursor> places_from_specs(const Trace& trace, const std::vector<std::string>& specs,
                                       std::string_view where) {
     std::vector<Cursor> places;
-    const io::json document = io::trace_json(trace);
+    const formats::json document = formats::trace_json(trace);
     for (const std::string& text : specs) {
-        const inspect::GotoSpec spec = inspect::parse_goto(text, where);
-        const Cursor c = inspect::resolve_goto(trace, spec, where);
+        const model::GotoSpec spec = model::parse_goto(text, where);
+        const Cursor c = model::resolve_goto(trace, spec, where);
         const std::vector<std::string> order = step_order(trace, c);
         const std::vector<std::string> filled = steps_with_cells(document, trace, c);
         if (spec.step) {
             const std::string& step = order[static_cast<std::size_t>(c.step)];
             if (std::find(filled.begin(), filled.end(), step) == filled.end())
-                throw io::InputError(std::string(where),
-                                     "\"" + text + "\": step " + step +
-                                         " computes nothing to fill in (steps that do here: " + joined(filled) + ")");
+                throw formats::InputError(std::string(where), "\"" + text + "\": step " + step +
+                                                                  " computes nothing to fill in (steps that do here: " +
+                                                                  joined(filled) + ")");
             places.push_back(c);
             continue;
         }
         if (filled.empty())
-            throw io::InputError(std::string(where),
-                                 "\"" + text + "\": " + inspect::describe(trace, c) + " has nothing to fill in");
+            throw formats::InputError(std::string(where),
+                                      "\"" + text + "\": " + model::describe(trace, c) + " has nothing to fill in");
         for (std::size_t s = 0; s < order.size(); ++s)
             if (std::find(filled.begin(), filled.end(), order[s]) != filled.end())
                 places.push_back(Cursor{c.frame, c.stage, c.item, static_cast<int>(s)});
@@ -272,44 +272,45 @@ std::vector<Cursor> places_from_specs(const Trace& trace, const std::vector<std:
     return places;
 }
 
-Trace rerun_reference(const io::json& document) {
+Trace rerun_reference(const formats::json& document) {
     course::validate_worksheet_document(document);
     for (const char* key : {"settings", "reference"})
         if (!document.contains(key))
-            throw io::InputError(key, "missing: the worksheet does not say what it was made from");
-    const io::json& reference = document["reference"];
+            throw formats::InputError(key, "missing: the worksheet does not say what it was made from");
+    const formats::json& reference = document["reference"];
     Scene scene;
     try {
-        scene = io::read_scene(reference["scene"]);
-    } catch (const io::InputError& e) {
-        throw io::InputError(e.where().empty() ? "reference.scene" : "reference.scene." + e.where(), e.problem());
+        scene = formats::read_scene(reference["scene"]);
+    } catch (const formats::InputError& e) {
+        throw formats::InputError(e.where().empty() ? "reference.scene" : "reference.scene." + e.where(), e.problem());
     }
-    io::read_settings(scene, &document["settings"], "settings");
-    const io::json& r = reference["recording"];
+    formats::read_settings(scene, &document["settings"], "settings");
+    const formats::json& r = reference["recording"];
     TraceFilter recording;
     recording.first_frame = r["first_frame"].get<int>();
     recording.last_frame = r["last_frame"].is_null() ? INT_MAX : r["last_frame"].get<int>();
     if (!r["contacts"].is_null()) recording.contacts = r["contacts"].get<std::vector<int>>();
-    const io::json& run = reference["run"];
-    std::optional<inspect::BrokenRun> broken;
+    const formats::json& run = reference["run"];
+    std::optional<model::BrokenRun> broken;
     Trace trace;
     if (run["mode"] == "resolve") {
-        trace = inspect::resolve_once(scene, recording, {}, &broken);
+        trace = model::resolve_once(scene, recording, {}, &broken);
     } else {
         if (!run.contains("frames"))
-            throw io::InputError("reference.run.frames", "missing: a simulated reference needs its number of frames");
-        trace = inspect::run_frames(scene, recording, run["frames"].get<int>(), {}, &broken);
+            throw formats::InputError("reference.run.frames",
+                                      "missing: a simulated reference needs its number of frames");
+        trace = model::run_frames(scene, recording, run["frames"].get<int>(), {}, &broken);
     }
     // `worksheet` never writes one from a broken run, so this reference was not made by it.
     if (broken)
-        throw io::InputError("reference.run", "re-running it stops at " + inspect::broken_run_text(scene, *broken));
+        throw formats::InputError("reference.run", "re-running it stops at " + model::broken_run_text(scene, *broken));
     return trace;
 }
 
-io::json worksheet_json(const Worksheet& sheet) {
-    io::json steps = io::json::array();
+formats::json worksheet_json(const Worksheet& sheet) {
+    formats::json steps = formats::json::array();
     for (const WorksheetStep& s : sheet.steps) {
-        io::json inputs = io::json::array(), cells = io::json::array();
+        formats::json inputs = formats::json::array(), cells = formats::json::array();
         for (const WorksheetEntry& e : s.inputs) inputs.push_back(entry_json(e, false));
         for (const WorksheetEntry& e : s.cells) cells.push_back(entry_json(e, true));
         steps.push_back({{"place", s.place}, {"at", s.at}, {"inputs", inputs}, {"cells", cells}});
@@ -327,10 +328,10 @@ std::string worksheet_csv(const Worksheet& sheet) {
     std::string text = std::string(worksheet_csv_header) + "\n";
     std::set<std::string> shown;
     const auto rows = [&text](const char* kind, const WorksheetEntry& e, bool blank) {
-        for_each_scalar(e.value, e.path, [&](const std::string& path, const io::json& v) {
+        for_each_scalar(e.value, e.path, [&](const std::string& path, const formats::json& v) {
             const std::string quantity = e.quantity + path.substr(e.path.size());
             const std::string value = blank ? "" : v.is_null() ? "null" : scalar_text(v);
-            text += explain::csv_row({kind, path, e.step, quantity, value, e.unit, e.formula, e.equation, e.meaning});
+            text += formats::csv_row({kind, path, e.step, quantity, value, e.unit, e.formula, e.equation, e.meaning});
         });
     };
     for (const WorksheetStep& s : sheet.steps) {
@@ -341,4 +342,4 @@ std::string worksheet_csv(const Worksheet& sheet) {
     return text;
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

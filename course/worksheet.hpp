@@ -8,6 +8,7 @@
 // inspector's --goto syntax), the first frame by default, or a lesson's places.
 
 #include "course/json_path.hpp"
+#include "course/worksheet_entry.hpp"
 #include "formats/json_values.hpp"
 #include "model/session.hpp"
 
@@ -15,21 +16,10 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 inline constexpr std::string_view worksheet_format_name = "impulse-lab-worksheet";
 inline constexpr int worksheet_format_version = 1;
-
-struct WorksheetEntry {
-    std::string path;      // into the trace document: "frames[0].phases[1].iterations[0].impulse_world"
-    std::string step;      // the step that computes it; "given" for what the item starts from and settings
-    std::string quantity;  // its name inside the item: "relative_position[0]", "updates[1].after"
-    std::string unit;
-    std::string formula;
-    std::string equation;
-    std::string meaning;
-    io::json value;  // the reference's value; a cell's is written blank
-};
 
 struct WorksheetStep {
     std::string place;  // "frame 0 · velocity phase · iteration 0 · contact 0 · impulse"
@@ -39,10 +29,10 @@ struct WorksheetStep {
 };
 
 struct Worksheet {
-    std::string source;    // the file the session opened
-    io::json conventions;  // the trace header's
-    io::json settings;     // the trace header's: every setting that ran
-    io::json reference;    // enough to re-run it: {run: {mode, frames}, recording, scene} as in the trace header
+    std::string source;         // the file the session opened
+    formats::json conventions;  // the trace header's
+    formats::json settings;     // the trace header's: every setting that ran
+    formats::json reference;    // enough to re-run it: {run: {mode, frames}, recording, scene} as in the trace header
     std::vector<WorksheetStep> steps;
 };
 
@@ -51,35 +41,35 @@ struct Worksheet {
 // steps computed, the bodies' mass properties (and, for a contact, their state before the frame), for an
 // iteration the chosen contact as prepared, and what the step's formula needs from outside the item (the
 // frame's duration and last-frame accelerations, the chosen contact's value as earlier iterations left it, an
-// updated contact's geometry: coursework/worksheet_inputs.cpp), so every cell can be worked out from the sheet;
+// updated contact's geometry: course/worksheet_inputs.cpp), so every cell can be worked out from the sheet;
 // an input that is also a cell somewhere on the sheet is not given away, and inputs are rounded for work by hand.
-// Throws io::InputError("--steps", ...) for a place whose step computes nothing to fill in.
-// `document`, when given, is io::trace_json(session.trace()) made already (a big frame's takes a while).
-Worksheet make_worksheet(const inspect::Session& session, const std::vector<inspect::Cursor>& places,
-                         const io::json* document = nullptr);
+// Throws formats::InputError("--steps", ...) for a place whose step computes nothing to fill in.
+// `document`, when given, is formats::trace_json(session.trace()) made already (a big frame's takes a while).
+Worksheet make_worksheet(const model::Session& session, const std::vector<model::Cursor>& places,
+                         const formats::json* document = nullptr);
 
 // The places among `candidates` whose step computes something to fill in (a lesson's places, for its worksheet).
-std::vector<inspect::Cursor> places_with_cells(const inspect::Session& session,
-                                               const std::vector<inspect::Cursor>& candidates,
-                                               const io::json* document = nullptr);
+std::vector<model::Cursor> places_with_cells(const model::Session& session,
+                                             const std::vector<model::Cursor>& candidates,
+                                             const formats::json* document = nullptr);
 
 // Every step with something to fill in, of every item of the first recorded frame; empty when nothing is
 // recorded.
-std::vector<inspect::Cursor> default_places(const Trace& trace);
+std::vector<model::Cursor> default_places(const Trace& trace);
 
 // The places `specs` name (--steps, the inspector's --goto syntax). A spec with `step=` names one step, one
-// without it every step of the item it names. Throws io::InputError(where, ...).
-std::vector<inspect::Cursor> places_from_specs(const Trace& trace, const std::vector<std::string>& specs,
-                                               std::string_view where);
+// without it every step of the item it names. Throws formats::InputError(where, ...).
+std::vector<model::Cursor> places_from_specs(const Trace& trace, const std::vector<std::string>& specs,
+                                             std::string_view where);
 
 // The reference trace re-run from a worksheet document's "settings" and "reference" (so a worksheet can stand
-// in for the file it was made from). Throws io::InputError with the JSON path of a problem.
-Trace rerun_reference(const io::json& worksheet_document);
+// in for the file it was made from). Throws formats::InputError with the JSON path of a problem.
+Trace rerun_reference(const formats::json& worksheet_document);
 
 // As a file: JSON (cells' values null, vectors and matrices [null, null, null]) or CSV (one row per number:
 // kind,path,step,quantity,value,unit,formula,equation,meaning; an input shown once, before the first step
 // that uses it).
-io::json worksheet_json(const Worksheet& sheet);
+formats::json worksheet_json(const Worksheet& sheet);
 std::string worksheet_csv(const Worksheet& sheet);
 
 inline constexpr std::string_view worksheet_csv_header = "kind,path,step,quantity,value,unit,formula,equation,meaning";
@@ -87,10 +77,10 @@ inline constexpr std::string_view worksheet_csv_header = "kind,path,step,quantit
 // Inputs are written for work by hand: each number as the shortest decimal within `hand_rounding_share` of
 // what diff tolerates by default (|r − x| ≤ (atol + rtol·|x|) / 1000: 1e-15 + 1e-12·|x|), so 24.000000000000004
 // is given as 24 and 1.1e-16 as 0, while a cell worked out from the rounded inputs still matches the reference
-// (tests/coursework/test_blank_cells.cpp works every cell of every shipped lesson and case out that way).
+// (tests/course/test_blank_cells.cpp works every cell of every shipped lesson and case out that way).
 inline constexpr double hand_rounding_share = 1e-3;
 double rounded_for_hand_work(double value);
-io::json rounded_for_hand_work(const io::json& value);  // numbers inside arrays too; other values as they are
+formats::json rounded_for_hand_work(const formats::json& value);  // numbers inside arrays too; other values as they are
 
 // How the worksheet names the value at a path of a trace document: the place of the step that computes it
 // (as WorksheetStep::place writes it: "frame 0 · velocity phase · iteration 0 · contact 0 · impulse"; for a
@@ -101,16 +91,16 @@ struct Wording {
     std::string quantity;
     std::string unit;
 };
-Wording word_path(const Trace& trace, const io::json& document, const std::vector<PathToken>& path);
+Wording word_path(const Trace& trace, const formats::json& document, const std::vector<PathToken>& path);
 
 // How a scalar is written in a worksheet's or report's CSV: numbers as the shortest text that reads back to
 // the same double, booleans true/false, strings as they are, null empty.
-std::string scalar_text(const io::json& value);
+std::string scalar_text(const formats::json& value);
 
 // Calls `visit(path, value)` for every scalar of `value` (numbers, strings, booleans and nulls inside arrays),
 // its path extended by [i] for each array it is in.
 template <typename Visit>
-void for_each_scalar(const io::json& value, const std::string& path, Visit&& visit) {
+void for_each_scalar(const formats::json& value, const std::string& path, Visit&& visit) {
     if (value.is_array()) {
         for (std::size_t i = 0; i < value.size(); ++i)
             for_each_scalar(value[i], path + "[" + std::to_string(i) + "]", visit);
@@ -119,4 +109,4 @@ void for_each_scalar(const io::json& value, const std::string& path, Visit&& vis
     }
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

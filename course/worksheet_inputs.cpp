@@ -2,7 +2,7 @@
 // bodies' mass properties and state, and what the step's formula needs from outside the item — the frame's
 // duration and the bodies' last-frame acceleration (velocity_from_acceleration, ch. 15), the chosen contact's
 // penetration or velocity as the earlier iterations left it, and the geometry of every contact an update
-// changes. A test (tests/coursework/test_blank_cells.cpp) works every blank of every shipped lesson and case
+// changes. A test (tests/course/test_blank_cells.cpp) works every blank of every shipped lesson and case
 // out from these inputs alone.
 
 #include "course/trace_items.hpp"
@@ -11,7 +11,7 @@
 
 #include <algorithm>
 
-namespace impulse::coursework {
+namespace impulse::course {
 
 namespace {
 
@@ -71,48 +71,50 @@ struct Source {
 // or before the iteration began when `update` is npos: an earlier update's `after`, the iteration's own value
 // (the chosen contact, from its first update on), or the contact as prepared.
 std::optional<Source> current_source(const ItemAt& item, std::size_t iteration, std::size_t update,
-                                     const io::json& contact, Current what) {
-    const std::string phase_path = io::json_path_index(io::json_path_child(item.frame_path, "phases"), item.phase);
-    const io::json& iterations = (*item.frame)["phases"][item.phase]["iterations"];
+                                     const formats::json& contact, Current what) {
+    const std::string phase_path =
+        formats::json_path_index(formats::json_path_child(item.frame_path, "phases"), item.phase);
+    const formats::json& iterations = (*item.frame)["phases"][item.phase]["iterations"];
     const auto iteration_path = [&](std::size_t i) {
-        return io::json_path_index(io::json_path_child(phase_path, "iterations"), i);
+        return formats::json_path_index(formats::json_path_child(phase_path, "iterations"), i);
     };
     const auto last_update_of = [&](std::size_t i, std::size_t before) -> std::optional<Source> {
-        const io::json& updates = iterations[i]["updates"];
+        const formats::json& updates = iterations[i]["updates"];
         for (std::size_t u = std::min(before, updates.size()); u-- > 0;)
             if (updates[u]["contact"] == contact)
-                return Source{
-                    io::json_path_child(io::json_path_index(io::json_path_child(iteration_path(i), "updates"), u),
-                                        after_key(what)),
-                    "updates",
-                    i == iteration ? "as update " + std::to_string(u) + " of this iteration left it"
-                                   : "as iteration " + std::to_string(i) + " left it"};
+                return Source{formats::json_path_child(
+                                  formats::json_path_index(formats::json_path_child(iteration_path(i), "updates"), u),
+                                  after_key(what)),
+                              "updates",
+                              i == iteration ? "as update " + std::to_string(u) + " of this iteration left it"
+                                             : "as iteration " + std::to_string(i) + " left it"};
         return std::nullopt;
     };
     if (update != std::string::npos) {
         if (auto s = last_update_of(iteration, update)) return s;
         if (iterations[iteration]["contact"] == contact)
-            return Source{io::json_path_child(iteration_path(iteration), item_key(what)),
+            return Source{formats::json_path_child(iteration_path(iteration), item_key(what)),
                           std::string(own_step(what, false)), "when this iteration chose it"};
     }
     for (std::size_t i = iteration; i-- > 0;)
         if (auto s = last_update_of(i, SIZE_MAX)) return s;
     const long k = recorded_contact_index(*item.frame, contact);
     if (k < 0) return std::nullopt;
-    return Source{io::json_path_child(io::json_path_index(io::json_path_child(item.frame_path, "contacts"),
+    return Source{
+        formats::json_path_child(formats::json_path_index(formats::json_path_child(item.frame_path, "contacts"),
                                                           static_cast<std::size_t>(k)),
-                                      item_key(what)),
-                  std::string(own_step(what, true)), "as prepared"};
+                                 item_key(what)),
+        std::string(own_step(what, true)), "as prepared"};
 }
 
 class Needs {
 public:
-    Needs(const ItemAt& item, const io::json& document, bool resolved, std::vector<WorksheetEntry>& inputs)
+    Needs(const ItemAt& item, const formats::json& document, bool resolved, std::vector<WorksheetEntry>& inputs)
         : item_(item), document_(document), resolved_(resolved), inputs_(inputs) {}
 
     // A setting of the trace header: "duration", "relaxation.fraction".
     void setting(std::string_view name, std::string_view unit, std::string_view formula, std::string_view meaning) {
-        const io::json* value = &document_["settings"];
+        const formats::json* value = &document_["settings"];
         std::string path = "settings";
         std::size_t start = 0;
         while (start <= name.size()) {
@@ -120,7 +122,7 @@ public:
             const std::string key(name.substr(start, dot - start));
             if (!value->is_object() || !value->contains(key)) return;
             value = &(*value)[key];
-            path = io::json_path_child(path, key);
+            path = formats::json_path_child(path, key);
             start = dot + 1;
         }
         inputs_.push_back(make_entry(
@@ -129,13 +131,13 @@ public:
 
     // What accelerated body `body` during the frame before this resolution (its last_frame_acceleration): a case
     // gives it in its scene; a simulation's integration has just applied gravity to every body that can move.
-    void acceleration(const io::json& body) {
+    void acceleration(const formats::json& body) {
         if (body.is_null()) return;
         const auto b = body.get<std::size_t>();
         if (resolved_) {
             const std::string path =
-                io::json_path_child(io::json_path_index("scene.bodies", b), "last_frame_acceleration");
-            if (const io::json* a = value_at(document_, parse_json_path(path, "")))
+                formats::json_path_child(formats::json_path_index("scene.bodies", b), "last_frame_acceleration");
+            if (const formats::json* a = value_at(document_, parse_json_path(path, "")))
                 inputs_.push_back(make_entry(path, "given", path,
                                              {path, "m/s²", "a, from the scene", "",
                                               "the acceleration the body had during the last frame (ch. 15)"},
@@ -151,20 +153,21 @@ public:
     }
 
     // A key of a contact as prepared (frames[f].contacts[k].key, or one body's element of a per-body key).
-    void contact_key(const io::json& contact, std::string_view key, std::optional<std::size_t> body = std::nullopt) {
+    void contact_key(const formats::json& contact, std::string_view key,
+                     std::optional<std::size_t> body = std::nullopt) {
         const long k = recorded_contact_index(*item_.frame, contact);
         if (k < 0) return;
-        const std::string contact_path =
-            io::json_path_index(io::json_path_child(item_.frame_path, "contacts"), static_cast<std::size_t>(k));
+        const std::string contact_path = formats::json_path_index(
+            formats::json_path_child(item_.frame_path, "contacts"), static_cast<std::size_t>(k));
         const StepKey* described = find_step_key(ItemKind::contact, key);
         const Described d = described ? describe_key(*described) : Described{};
-        const io::json& object = (*item_.frame)["contacts"][static_cast<std::size_t>(k)];
+        const formats::json& object = (*item_.frame)["contacts"][static_cast<std::size_t>(k)];
         if (!object.contains(std::string(key))) return;
-        std::string path = io::json_path_child(contact_path, key);
-        io::json value = object[std::string(key)];
+        std::string path = formats::json_path_child(contact_path, key);
+        formats::json value = object[std::string(key)];
         if (body) {
             if (!value.is_array() || *body >= value.size() || value[*body].is_null()) return;
-            path = io::json_path_index(path, *body);
+            path = formats::json_path_index(path, *body);
             value = value[*body];
         }
         inputs_.push_back(
@@ -173,7 +176,7 @@ public:
     }
 
     // The contact's `what` as it stood before `update` of this iteration (npos: before the iteration).
-    void current(const io::json& contact, std::size_t iteration, std::size_t update, Current what) {
+    void current(const formats::json& contact, std::size_t iteration, std::size_t update, Current what) {
         const std::optional<Source> s = current_source(item_, iteration, update, contact, what);
         if (!s) return;
         Described d = describe_path(document_, parse_json_path(s->path, ""));
@@ -186,10 +189,10 @@ public:
     }
 
     // The chosen contact's bodies: the item's own for a contact; for an iteration, the chosen contact's.
-    const io::json& bodies() const {
+    const formats::json& bodies() const {
         if (item_.kind == ItemKind::contact) return (*item_.object)["bodies"];
         const long k = recorded_contact_index(*item_.frame, (*item_.object)["contact"]);
-        static const io::json none = io::json::array({nullptr, nullptr});
+        static const formats::json none = formats::json::array({nullptr, nullptr});
         return k < 0 ? none : (*item_.frame)["contacts"][static_cast<std::size_t>(k)]["bodies"];
     }
 
@@ -197,14 +200,15 @@ public:
     // change velocities), else bodies_after (the velocity phase has finished).
     void motion() {
         const bool first = item_.phase == 0;
-        for (const io::json& body : bodies()) {
+        for (const formats::json& body : bodies()) {
             if (body.is_null()) continue;
             const auto b = body.get<std::size_t>();
             const std::string where = first ? "bodies_before" : "bodies_after";
-            const std::string name = io::json_path_index(where, b);
+            const std::string name = formats::json_path_index(where, b);
             for (const char* key : {"velocity", "angular_velocity"}) {
-                const std::string path = io::json_path_child(io::json_path_child(item_.frame_path, name), key);
-                const io::json* value = value_at(document_, parse_json_path(path, ""));
+                const std::string path =
+                    formats::json_path_child(formats::json_path_child(item_.frame_path, name), key);
+                const formats::json* value = value_at(document_, parse_json_path(path, ""));
                 if (!value) continue;
                 const bool linear = std::string_view(key) == "velocity";
                 inputs_.push_back(make_entry(path, "given", name + "." + key,
@@ -219,15 +223,15 @@ public:
 
 private:
     const ItemAt& item_;
-    const io::json& document_;
+    const formats::json& document_;
     bool resolved_;
     std::vector<WorksheetEntry>& inputs_;
 };
 
-void add_needs(const ItemAt& item, const std::vector<std::string>& order, std::size_t here, const io::json& document,
-               bool resolved, std::vector<WorksheetEntry>& inputs) {
+void add_needs(const ItemAt& item, const std::vector<std::string>& order, std::size_t here,
+               const formats::json& document, bool resolved, std::vector<WorksheetEntry>& inputs) {
     Needs needs(item, document, resolved, inputs);
-    const io::json& object = *item.object;
+    const formats::json& object = *item.object;
     const auto duration = [&needs] {
         needs.setting("duration", "s", "Δt", "the frame's duration: how long last frame's acceleration acted");
     };
@@ -238,11 +242,11 @@ void add_needs(const ItemAt& item, const std::vector<std::string>& order, std::s
             duration();
             needs.setting("tangential_acceleration_velocity", "", "setting tangential_acceleration_velocity",
                           "whether the sliding last frame's acceleration caused is added to the contact velocity");
-            for (const io::json& body : object["bodies"]) needs.acceleration(body);
+            for (const formats::json& body : object["bodies"]) needs.acceleration(body);
         }
         return;
     }
-    const io::json& chosen = object["contact"];
+    const formats::json& chosen = object["contact"];
     const auto iteration = object["iteration"].get<std::size_t>();
     if (item.kind == ItemKind::position_iteration) {
         needs.current(chosen, iteration, std::string::npos, Current::penetration);
@@ -259,14 +263,14 @@ void add_needs(const ItemAt& item, const std::vector<std::string>& order, std::s
             needs.current(chosen, iteration, std::string::npos, Current::contact_velocity);
         if (reached(order, here, "desired_delta_velocity")) {
             duration();
-            for (const io::json& body : needs.bodies()) needs.acceleration(body);
+            for (const formats::json& body : needs.bodies()) needs.acceleration(body);
         }
     }
     // Each update changes another contact through its own geometry, from the value it had just before.
     if (!reached(order, here, "updates") || !object.contains("updates")) return;
-    const io::json& updates = object["updates"];
+    const formats::json& updates = object["updates"];
     for (std::size_t u = 0; u < updates.size(); ++u) {
-        const io::json& other = updates[u]["contact"];
+        const formats::json& other = updates[u]["contact"];
         const auto slot = updates[u]["slot"].get<std::size_t>();
         if (item.kind == ItemKind::position_iteration) {
             needs.current(other, iteration, u, Current::penetration);
@@ -283,7 +287,7 @@ void add_needs(const ItemAt& item, const std::vector<std::string>& order, std::s
             needs.contact_key(other, "restitution");
             const long k = recorded_contact_index(*item.frame, other);
             if (k >= 0)
-                for (const io::json& body : (*item.frame)["contacts"][static_cast<std::size_t>(k)]["bodies"])
+                for (const formats::json& body : (*item.frame)["contacts"][static_cast<std::size_t>(k)]["bodies"])
                     needs.acceleration(body);
         }
     }
@@ -295,21 +299,22 @@ bool replaced_by_source(std::string_view key) {
 }
 
 // The chosen (or this) contact's preparation in the frame's document, or null when it was not recorded.
-const io::json* prepared_contact(const ItemAt& item, std::string* path) {
+const formats::json* prepared_contact(const ItemAt& item, std::string* path) {
     if (item.kind == ItemKind::contact) {
         *path = item.path;
         return item.object;
     }
     const long k = recorded_contact_index(*item.frame, (*item.object)["contact"]);
     if (k < 0) return nullptr;
-    *path = io::json_path_index(io::json_path_child(item.frame_path, "contacts"), static_cast<std::size_t>(k));
+    *path =
+        formats::json_path_index(formats::json_path_child(item.frame_path, "contacts"), static_cast<std::size_t>(k));
     return &(*item.frame)["contacts"][static_cast<std::size_t>(k)];
 }
 
 }  // namespace
 
 std::vector<WorksheetEntry> inputs_of(const ItemAt& item, const std::vector<std::string>& order, std::size_t here,
-                                      const io::json& document, bool resolved) {
+                                      const formats::json& document, bool resolved) {
     std::vector<WorksheetEntry> inputs;
     const std::string given = "given";
     for (const StepKey& key : step_keys())
@@ -317,7 +322,7 @@ std::vector<WorksheetEntry> inputs_of(const ItemAt& item, const std::vector<std:
 
     // What the item's bodies and (for an iteration) its chosen contact bring in.
     std::string contact_path;
-    if (const io::json* contact = prepared_contact(item, &contact_path)) {
+    if (const formats::json* contact = prepared_contact(item, &contact_path)) {
         for (const OutsideKey& key : outside_keys()) {
             const bool wanted = item.kind == ItemKind::contact              ? key.for_contact
                                 : item.kind == ItemKind::position_iteration ? key.for_position_iteration
@@ -330,16 +335,16 @@ std::vector<WorksheetEntry> inputs_of(const ItemAt& item, const std::vector<std:
                        k && k->per_body, d, given, inputs);
                 continue;
             }
-            for (const io::json& body : (*contact)["bodies"]) {
+            for (const formats::json& body : (*contact)["bodies"]) {
                 if (body.is_null()) continue;
                 const auto b = body.get<std::size_t>();
                 if (key.where == "scene_bodies") {
-                    const std::string at = io::json_path_index("scene.bodies", b);
+                    const std::string at = formats::json_path_index("scene.bodies", b);
                     expand(document["scene"]["bodies"][b], at, at, key.key, false, d, given, inputs);
                 } else {
-                    const std::string name = io::json_path_index("bodies_before", b);
-                    expand((*item.frame)["bodies_before"][b], io::json_path_child(item.frame_path, name), name, key.key,
-                           false, d, given, inputs);
+                    const std::string name = formats::json_path_index("bodies_before", b);
+                    expand((*item.frame)["bodies_before"][b], formats::json_path_child(item.frame_path, name), name,
+                           key.key, false, d, given, inputs);
                 }
             }
         }
@@ -357,4 +362,4 @@ std::vector<WorksheetEntry> inputs_of(const ItemAt& item, const std::vector<std:
     return inputs;
 }
 
-}  // namespace impulse::coursework
+}  // namespace impulse::course

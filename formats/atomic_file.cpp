@@ -11,7 +11,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -243,4 +243,4 @@ void check_writable(const fs::path& path, std::string_view flag) {
     if (::access(folder.c_str(), W_OK) != 0) fail(flag, path, std::strerror(errno));
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -13,7 +13,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 // How an output path is written.
 enum class OutputKind {
@@ -92,4 +92,4 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 // or device is not writable. Lets a long run fail before it starts, not after.
 void check_writable(const std::filesystem::path& path, std::string_view flag);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 std::string join(const std::string& where, const std::string& problem) {
@@ -34,4 +34,4 @@ std::string number_text(double value) {
     return text;
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 class InputError : public std::runtime_error {
 public:
@@ -32,4 +32,4 @@ std::string json_path_index(std::string_view parent, std::size_t index);
 // trailing ".0" (2, 0.25, -1e-07).
 std::string number_text(double value);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

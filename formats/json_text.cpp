@@ -7,7 +7,7 @@
 #include <set>
 #include <vector>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -210,4 +210,4 @@ void require_utf8(std::string_view text) {
                      "not UTF-8 text: byte " + std::string(byte) + " at column " + std::to_string(column));
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 inline constexpr int max_json_depth = 64;
 
@@ -28,4 +28,4 @@ void require_utf8(std::string_view text);
 // significant digits, so a value read back is the same to the last bit.
 std::string format_json(const nlohmann::ordered_json& value);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

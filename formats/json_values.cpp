@@ -1,6 +1,6 @@
 #include "formats/json_values.hpp"
 
-namespace impulse::io {
+namespace impulse::formats {
 
 json vec3_json(const Vec3& v) {
     return json::array({v.x(), v.y(), v.z()});
@@ -31,4 +31,4 @@ Mat3 read_mat3(const json& j) {
     return m;
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -7,7 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 using json = nlohmann::ordered_json;  // keys stay in the order written
 
@@ -40,4 +40,4 @@ inline double read_number(const json& j) {
     return j.get<double>();
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

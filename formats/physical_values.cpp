@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -70,4 +70,4 @@ void check_inverse_inertia(const Mat3& inverse_inertia, const std::string& path)
                                    eigenvalues_text(eigen.eigenvalues()));
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -7,7 +7,7 @@
 
 #include <string>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 // A stored quaternion or normal is used as it is when it is unit to rounding, so a file written by us reads
 // back bit for bit; a quaternion further than this from unit length is refused rather than normalised.
@@ -34,4 +34,4 @@ Mat3 inverse_of_inertia(const Mat3& inertia, const std::string& path);
 // Throws unless symmetric positive semi-definite (all zero: the body cannot turn).
 void check_inverse_inertia(const Mat3& inverse_inertia, const std::string& path);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

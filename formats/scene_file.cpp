@@ -12,7 +12,7 @@
 #include <map>
 #include <sstream>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -235,4 +235,4 @@ json scene_json(const Scene& c, bool with_settings) {
     return out;
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 Scene read_scene(const json& document, const std::optional<std::string>& preset_override = std::nullopt);
 Scene read_scene_text(std::string_view text, const std::optional<std::string>& preset_override = std::nullopt);
@@ -21,4 +21,4 @@ Scene read_scene_text(std::string_view text, const std::optional<std::string>& p
 // when asked for (a trace keeps them in its header).
 json scene_json(const Scene& scene, bool with_settings);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -437,4 +437,4 @@ void SchemaValidator::validate(const json& document) const {
     }
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -25,7 +25,7 @@
 #include <map>
 #include <string>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 class SchemaValidator {
 public:
@@ -45,4 +45,4 @@ private:
     Documents siblings_;
 };
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -3,7 +3,7 @@
 #include "formats/input_error.hpp"
 #include "formats/schema_validator.hpp"
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace embedded {
 extern const std::string_view scene_schema;  // schemas/scene.schema.json, compiled in by CMake
@@ -60,4 +60,4 @@ void validate_settings_object(const json& settings, std::string_view path) {
     }
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -7,7 +7,7 @@
 
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 std::string_view scene_schema_text();
 std::string_view trace_schema_text();
@@ -17,4 +17,4 @@ void validate_scene_document(const json& document);
 void validate_trace_document(const json& document);
 void validate_settings_object(const json& settings, std::string_view path);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

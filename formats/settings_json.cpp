@@ -5,7 +5,7 @@
 #include "formats/schemas.hpp"
 #include "resolver/settings_names.hpp"
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -186,4 +186,4 @@ void apply_setting(Scene& scene, std::string_view assignment, std::string_view f
     }
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -10,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 // Fills scene.settings (the resolver's) and the world's frames and damping from a settings object, which may
 // be null (no settings given). The preset is `preset_override` when given, else the object's "preset", else
@@ -30,4 +30,4 @@ void refuse_renamed_settings(const json& settings, std::string_view path);
 // name); throws InputError naming `flag`. `preset=P` starts the resolver settings over from that preset.
 void apply_setting(Scene& scene, std::string_view assignment, std::string_view flag);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -4,7 +4,7 @@
 #include <cctype>
 #include <numeric>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 std::size_t edit_distance(std::string_view a, std::string_view b) {
     const auto same = [](char x, char y) {
@@ -37,4 +37,4 @@ std::optional<std::string> closest_name(std::string_view name, const std::vector
     return best;
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -6,7 +6,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 // Levenshtein distance, counting a case difference as no difference.
 std::size_t edit_distance(std::string_view a, std::string_view b);
@@ -14,4 +14,4 @@ std::size_t edit_distance(std::string_view a, std::string_view b);
 // The candidate closest to `name` if it is at most 2 edits away (ties: the first), else nothing.
 std::optional<std::string> closest_name(std::string_view name, const std::vector<std::string>& candidates);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

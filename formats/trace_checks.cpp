@@ -7,7 +7,7 @@
 
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 void check_references(const json& frame, const std::string& path, std::size_t bodies) {
     const std::size_t contacts = frame["contact_count"].get<std::size_t>();
@@ -77,4 +77,4 @@ void check_frame_values(const FrameRecord& f, const std::string& path) {
     }
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

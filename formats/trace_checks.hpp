@@ -8,7 +8,7 @@
 #include <cstddef>
 #include <string>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 // Every index in a frame names a body of the scene or a contact of the frame; each body list has the scene's
 // bodies; a move records the word its method's unit calls for; the two phases are one of each.
@@ -19,4 +19,4 @@ void check_references(const json& frame, const std::string& path, std::size_t bo
 // them; a trace we write passes with room to spare.
 void check_frame_values(const FrameRecord& f, const std::string& path);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -2,7 +2,7 @@
 
 #include "record/words.hpp"
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -99,4 +99,4 @@ std::string with_trace_word_docs(const std::string& document, const std::string&
     return document.substr(0, begin) + section + document.substr(end + trace_docs_end.size());
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

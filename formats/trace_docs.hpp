@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 // The marked lines around the generated section of docs/trace-format.md.
 inline constexpr std::string_view trace_docs_begin = "<!-- words: generated from engine/record/word_table.hpp -->";
@@ -17,4 +17,4 @@ std::string trace_word_docs();
 // `document` with its generated section replaced by `section`; the document unchanged when it has no markers.
 std::string with_trace_word_docs(const std::string& document, const std::string& section);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -1,10 +1,10 @@
 // Trace format 1, the keys before the word list renamed them, read as the current format (docs/trace-format.md).
 #include "formats/trace_format1.hpp"
 
-#include "formats/trace_json.hpp"
+#include "record/trace.hpp"
 #include "record/words.hpp"
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -79,4 +79,4 @@ std::string format1_note(std::string_view file) {
            std::to_string(trace_format_version) + "'s renamed keys (docs/trace-format.md lists them)";
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

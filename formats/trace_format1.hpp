@@ -7,7 +7,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 // Format 1 (the keys before the word list renamed them: docs/trace-format.md) read as the current format:
 // moves each renamed key of every item to its word's path and sets the version. Returns the version the
@@ -17,4 +17,4 @@ std::optional<int> upgrade_trace_document(json& document);
 // The line a command prints when it read a format-1 file.
 std::string format1_note(std::string_view file);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -12,7 +12,7 @@
 #include "record/word_table.hpp"
 #include "resolver/settings_names.hpp"
 
-namespace impulse::io {
+namespace impulse::formats {
 
 namespace {
 
@@ -591,4 +591,4 @@ json item_json(const VelocityIteration& iteration) {
     return velocity_iteration_json(iteration);
 }
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::io {
+namespace impulse::formats {
 
 inline constexpr std::string_view trace_format_name = "impulse-lab-trace";
 
@@ -28,4 +28,4 @@ json item_json(const VelocityIteration& iteration);
 Trace read_trace(const json& document);
 Trace read_trace_text(std::string_view text);
 
-}  // namespace impulse::io
+}  // namespace impulse::formats

@@ -1,7 +1,7 @@
 #pragma once
 // The loaders the fuzz targets drive, each taking the whole input as text. Shared with the regression test
-// (tests/io/test_fuzz_regressions.cpp), which feeds every kept crasher to the same function. A loader given
-// bad input throws io::InputError; anything else (another exception, a crash, a sanitizer report, a hang,
+// (tests/course/test_fuzz_regressions.cpp), which feeds every kept crasher to the same function. A loader given
+// bad input throws formats::InputError; anything else (another exception, a crash, a sanitizer report, a hang,
 // a runaway allocation) is a bug. No loader writes a file or reads one.
 
 #include "course/class_report.hpp"
@@ -20,35 +20,35 @@ namespace impulse::fuzz {
 
 // A case or scene file (docs/scenes.md), as `resolve`, `run` and `inspect` read it.
 inline void load_scene_text(std::string_view text) {
-    io::read_scene_text(text);
+    formats::read_scene_text(text);
 }
 
 // A trace file (docs/trace-format.md), as `inspect` and `diff` read it.
 inline void load_trace_text(std::string_view text) {
-    io::read_trace_text(text);
+    formats::read_trace_text(text);
 }
 
 // A lesson's Markdown with its JSON header (docs/lessons.md); the scene it names is not opened.
 inline void load_lesson_text(std::string_view text) {
-    lessons::read_lesson_text(text, "01-fuzz.md");
+    course::read_lesson_text(text, "01-fuzz.md");
 }
 
 // A filled worksheet (docs/coursework.md) as `diff` reads a student's sheet, JSON or CSV.
 inline void load_worksheet_json(std::string_view text) {
-    coursework::read_worksheet_json(io::parse_json_text(text));
+    course::read_worksheet_json(formats::parse_json_text(text));
 }
 inline void load_worksheet_csv(std::string_view text) {
-    coursework::read_worksheet_csv(text);
+    course::read_worksheet_csv(text);
 }
 
 // A worksheet as the reference of `diff`: its settings and scene are read and its trace re-run.
 inline void load_worksheet_reference(std::string_view text) {
-    coursework::rerun_reference(io::parse_json_text(text));
+    course::rerun_reference(formats::parse_json_text(text));
 }
 
 // A student's progress file's content (the file in the user's config folder is never opened).
 inline void load_progress_text(std::string_view text) {
-    lessons::read_progress_text(text);
+    course::read_progress_text(text);
 }
 
 // `diff` on two inputs, in memory: the reference trace, a NUL byte, then the other file: a trace or a JSON
@@ -59,35 +59,35 @@ inline void load_progress_text(std::string_view text) {
 inline void load_diff(std::string_view input) {
     const std::size_t separator = input.find('\0');
     if (separator == std::string_view::npos) return;
-    const Trace trace = io::read_trace_text(input.substr(0, separator));
-    const io::json reference = io::trace_json(trace);
+    const Trace trace = formats::read_trace_text(input.substr(0, separator));
+    const formats::json reference = formats::trace_json(trace);
     const std::string_view other = input.substr(separator + 1);
-    const coursework::Tolerance tolerance;
+    const course::Tolerance tolerance;
     const std::size_t first = other.find_first_not_of(" \t\r\n");
-    coursework::DiffReport report;
+    course::DiffReport report;
     if (first == std::string_view::npos || other[first] != '{') {
-        report = coursework::diff_worksheet(reference, coursework::read_worksheet_csv(other), tolerance);
+        report = course::diff_worksheet(reference, course::read_worksheet_csv(other), tolerance);
     } else {
-        const io::json document = io::parse_json_text(other);
-        if (coursework::is_worksheet(document)) {
-            report = coursework::diff_worksheet(reference, coursework::read_worksheet_json(document), tolerance);
+        const formats::json document = formats::parse_json_text(other);
+        if (course::is_worksheet(document)) {
+            report = course::diff_worksheet(reference, course::read_worksheet_json(document), tolerance);
         } else {
-            io::read_trace(document);
-            report = coursework::diff_traces(reference, document, tolerance);
+            formats::read_trace(document);
+            report = course::diff_traces(reference, document, tolerance);
         }
     }
-    coursework::word_findings(report, trace, reference);
-    const coursework::DiffSubject subject{"reference.json", "other", tolerance};
-    coursework::report_text(report, subject);
-    coursework::report_json(report, subject);
-    coursework::report_csv(report);
-    const std::vector<coursework::ClassRow> rows{{"other", report, ""}};
-    const coursework::ClassSubject class_subject{"reference.json", "trace", tolerance};
-    coursework::summary_text(rows, class_subject);
-    coursework::summary_json(rows, class_subject);
-    coursework::summary_csv(rows);
-    coursework::cells_csv(rows);
-    coursework::feedback_markdown(rows.front(), class_subject);
+    course::word_findings(report, trace, reference);
+    const course::DiffSubject subject{"reference.json", "other", tolerance};
+    course::report_text(report, subject);
+    course::report_json(report, subject);
+    course::report_csv(report);
+    const std::vector<course::ClassRow> rows{{"other", report, ""}};
+    const course::ClassSubject class_subject{"reference.json", "trace", tolerance};
+    course::summary_text(rows, class_subject);
+    course::summary_json(rows, class_subject);
+    course::summary_csv(rows);
+    course::cells_csv(rows);
+    course::feedback_markdown(rows.front(), class_subject);
 }
 
 struct Loader {

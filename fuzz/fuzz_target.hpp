@@ -1,5 +1,5 @@
 #pragma once
-// The body of every fuzz target: one loader of fuzz_loaders.hpp on the input. Bad input (io::InputError)
+// The body of every fuzz target: one loader of fuzz_loaders.hpp on the input. Bad input (formats::InputError)
 // ends the run quietly; anything else escapes to libFuzzer, which keeps the input.
 
 #include "fuzz_loaders.hpp"
@@ -12,7 +12,7 @@ namespace impulse::fuzz {
 inline int run_loader(void (*load)(std::string_view), const std::uint8_t* data, std::size_t size) {
     try {
         load({reinterpret_cast<const char*>(data), size});
-    } catch (const io::InputError&) {
+    } catch (const formats::InputError&) {
     }
     return 0;
 }

@@ -9,9 +9,9 @@ namespace impulse::bench {
 
 void check_scene_for_engine(const Scene& scene, std::string_view engine) {
     if (!scene.contacts.empty())
-        throw io::InputError("contacts", std::string(engine) +
-                                             " runs scenes with collision detection only; this scene has contacts "
-                                             "written by hand");
+        throw formats::InputError("contacts", std::string(engine) +
+                                                  " runs scenes with collision detection only; this scene has contacts "
+                                                  "written by hand");
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const RigidBody& b = scene.bodies[i];
         if (b.inverse_mass == 0.0) continue;
@@ -19,10 +19,11 @@ void check_scene_for_engine(const Scene& scene, std::string_view engine) {
         const bool diagonal =
             k(0, 1) == 0.0 && k(0, 2) == 0.0 && k(1, 0) == 0.0 && k(1, 2) == 0.0 && k(2, 0) == 0.0 && k(2, 1) == 0.0;
         if (!diagonal || !(k.diagonal().array() > 0.0).all())
-            throw io::InputError(io::json_path_index("bodies", i),
-                                 std::string(engine) +
-                                     " takes principal moments of inertia: the inverse inertia must be diagonal in "
-                                     "the body's axes and positive");
+            throw formats::InputError(
+                formats::json_path_index("bodies", i),
+                std::string(engine) +
+                    " takes principal moments of inertia: the inverse inertia must be diagonal in "
+                    "the body's axes and positive");
     }
 }
 

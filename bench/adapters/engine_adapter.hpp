@@ -36,7 +36,7 @@ struct EngineRow {
     std::string_view name;               // the method name on the command line: "bullet", "ode", "mujoco"
     std::string_view iteration_setting;  // the engine's setting N is written to, for the results
     std::string_view version;            // the library's version, for results.json
-    // Builds the scene in the engine with `iterations` solver iterations. Throws io::InputError for a scene
+    // Builds the scene in the engine with `iterations` solver iterations. Throws formats::InputError for a scene
     // the engine cannot run (hand-written contacts, a body whose inertia is not along its axes, ...).
     std::unique_ptr<EngineWorld> (*make)(const Scene& scene, int iterations);
 };
@@ -46,7 +46,7 @@ std::span<const EngineRow> built_engines();
 const EngineRow* find_engine(std::string_view name);
 
 // What every adapter needs from a scene, checked once: no hand-written contacts, each movable body's inverse
-// inertia diagonal in body axes and positive (the engines take principal moments). Throws io::InputError naming
+// inertia diagonal in body axes and positive (the engines take principal moments). Throws formats::InputError naming
 // `engine` and the body.
 void check_scene_for_engine(const Scene& scene, std::string_view engine);
 

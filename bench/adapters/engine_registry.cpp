@@ -1,5 +1,5 @@
 // The engines this build has: each adapter's file defines its row, and the build compiles only the adapters
-// whose library was found, saying which through IMPULSE_HAVE_<ENGINE> (inspector/CMakeLists.txt).
+// whose library was found, saying which through IMPULSE_HAVE_<ENGINE> (bench/CMakeLists.txt).
 
 #include "bench/adapters/engine_adapter.hpp"
 

@@ -71,7 +71,8 @@ std::string model_text(const Scene& scene, int iterations) {
     auto bit_of = [&](const std::string& name) {
         const auto [it, added] = material_bit.emplace(name, static_cast<int>(material_bit.size()));
         if (it->second >= 31)
-            throw io::InputError("materials", "mujoco runs at most 31 materials that touch (one contact bit each)");
+            throw formats::InputError("materials",
+                                      "mujoco runs at most 31 materials that touch (one contact bit each)");
         return it->second;
     };
     auto geom_material = [&](const std::string& name) {
@@ -130,7 +131,8 @@ std::string model_text(const Scene& scene, int iterations) {
         for (std::size_t j = i + 1; j < geoms.size(); ++j) {
             if (geoms[i].second == geoms[j].second) continue;
             if (++pairs > 10000)
-                throw io::InputError("materials", "mujoco: more than 10000 pairs of bodies of different materials");
+                throw formats::InputError("materials",
+                                          "mujoco: more than 10000 pairs of bodies of different materials");
             const Material combined = combine(scene.materials.at(geoms[i].second), scene.materials.at(geoms[j].second));
             xml += "<pair geom1=\"" + geoms[i].first + "\" geom2=\"" + geoms[j].first + "\"" +
                    contact_attributes(combined, dt, true) + "/>\n";
@@ -155,7 +157,7 @@ public:
         data_ = mj_makeData(model_);
         // Damping: MuJoCo's is a joint property, per second; none unless the scene asks for it.
         if (scene.world.linear_damping != 1.0 || scene.world.angular_damping != 1.0)
-            throw io::InputError("world", "mujoco: the scene's damping is not mapped (MuJoCo damps joints)");
+            throw formats::InputError("world", "mujoco: the scene's damping is not mapped (MuJoCo damps joints)");
 
         // Each movable body's free joint: qpos (x, y, z, qw, qx, qy, qz), qvel (v in the world frame, omega in the
         // body's frame).

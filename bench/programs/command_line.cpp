@@ -25,8 +25,8 @@ CsvOutput::CsvOutput(CLI::App& app) : program_(app.get_name()) {
 
 bool CsvOutput::check() const {
     try {
-        if (!path_.empty() && path_ != "-") io::check_writable(path_, "--csv");
-    } catch (const io::InputError& e) {
+        if (!path_.empty() && path_ != "-") formats::check_writable(path_, "--csv");
+    } catch (const formats::InputError& e) {
         std::cerr << program_ << ": " << e.what() << '\n';
         return false;
     }
@@ -42,8 +42,8 @@ bool CsvOutput::write(const std::string& rows) const {
         std::cout << rows << std::flush;
     } else if (!path_.empty()) {
         try {
-            io::write_file_atomically(path_, rows, "--csv");
-        } catch (const io::InputError& e) {
+            formats::write_file_atomically(path_, rows, "--csv");
+        } catch (const formats::InputError& e) {
             std::cerr << program_ << ": " << e.what() << '\n';
             return false;
         }

@@ -234,10 +234,10 @@ double median(std::vector<double> samples) {
 
 Scene load(const std::string& path) {
     std::ifstream in(path);
-    if (!in) throw io::InputError(path, "cannot be read");
+    if (!in) throw formats::InputError(path, "cannot be read");
     std::stringstream text;
     text << in.rdbuf();
-    return io::read_scene_text(text.str());
+    return formats::read_scene_text(text.str());
 }
 
 }  // namespace
@@ -256,9 +256,9 @@ int main(int argc, char** argv) {
     Scene scene;
     try {
         scene = load(scene_path);
-        io::apply_setting(scene, "preset=pgs", "--set");
-        io::apply_setting(scene, "sweeps=" + std::to_string(sweeps), "--set");
-    } catch (const io::InputError& e) {
+        formats::apply_setting(scene, "preset=pgs", "--set");
+        formats::apply_setting(scene, "sweeps=" + std::to_string(sweeps), "--set");
+    } catch (const formats::InputError& e) {
         std::cerr << "impulse-bench-pgs: " << e.where() << ": " << e.problem() << '\n';
         return 2;
     }

@@ -14,7 +14,7 @@
 // on standard error.
 
 #include "command_line.hpp"
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 #include "record/trace_recorder.hpp"
 #include "preparation/prepared_contact.hpp"
 #include "resolver/resolver.hpp"
@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
     const ResolverSettings settings = *preset("book");
     std::fprintf(table, "%6s %9s %11s %13s %13s %8s %18s\n", "boxes", "contacts", "iterations", "off ns/contact",
                  "on ns/contact", "on/off", "prepare ns/contact");
-    std::string rows = explain::csv_row({"boxes", "contacts", "iterations", "friction", "off_ns_per_contact",
+    std::string rows = formats::csv_row({"boxes", "contacts", "iterations", "friction", "off_ns_per_contact",
                                          "on_ns_per_contact", "recording_ratio", "prepare_ns_per_contact"});
     for (int count : boxes) {
         const Landing scene = landing_boxes(count, friction);
@@ -133,10 +133,10 @@ int main(int argc, char** argv) {
         const int iterations = summary.position.iterations_used + summary.velocity.iterations_used;
         std::fprintf(table, "%6d %9zu %11d %13.0f %13.0f %8.2f %18.1f\n", count, scene.contacts.size(), iterations,
                      off / contacts * 1e9, on / contacts * 1e9, on / off, prepare / contacts * 1e9);
-        rows += explain::csv_row({std::to_string(count), std::to_string(scene.contacts.size()),
-                                  std::to_string(iterations), explain::csv_number(friction),
-                                  explain::csv_number(off / contacts * 1e9), explain::csv_number(on / contacts * 1e9),
-                                  explain::csv_number(on / off), explain::csv_number(prepare / contacts * 1e9)});
+        rows += formats::csv_row({std::to_string(count), std::to_string(scene.contacts.size()),
+                                  std::to_string(iterations), formats::csv_number(friction),
+                                  formats::csv_number(off / contacts * 1e9), formats::csv_number(on / contacts * 1e9),
+                                  formats::csv_number(on / off), formats::csv_number(prepare / contacts * 1e9)});
     }
     return csv.write(rows) ? 0 : 2;
 }

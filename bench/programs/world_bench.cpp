@@ -10,8 +10,8 @@
 // (every repeat is identical: runs are deterministic).
 
 #include "command_line.hpp"
-#include "model/input_files.hpp"
-#include "explain/csv.hpp"
+#include "formats/input_files.hpp"
+#include "formats/csv.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 #include "formats/scene_file.hpp"
@@ -79,7 +79,7 @@ int main(int argc, char** argv) {
     if (!csv.check()) return 2;
     std::FILE* table = csv.table();
 
-    std::string rows = explain::csv_row({"scene", "bodies", "frames", "contacts_per_frame", "pairs_per_frame",
+    std::string rows = formats::csv_row({"scene", "bodies", "frames", "contacts_per_frame", "pairs_per_frame",
                                          "ms_per_frame", "integrate_ms", "broad_phase_ms", "pair_tests_ms",
                                          "resolve_ms", "limited_frames", "top_drift_end_mm", "top_drift_most_mm"});
     std::fprintf(table, "%-22s %6s %6s %9s %9s %10s %9s %9s %9s %9s %8s %11s %11s\n", "scene", "bodies", "frames",
@@ -88,13 +88,13 @@ int main(int argc, char** argv) {
     for (const std::string& file : scenes) {
         Scene scene;
         try {
-            scene = io::read_scene_text(cli::read_input_file(file));
-            for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
-        } catch (const cli::FileError& e) {
+            scene = formats::read_scene_text(formats::read_input_file(file));
+            for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
+        } catch (const formats::FileError& e) {
             std::cerr << "impulse-bench-world: " << e.file << ": " << e.problem << '\n';
             return 2;
-        } catch (const io::InputError& e) {
-            std::cerr << "impulse-bench-world: " << cli::input_name(file) << ": " << e.what() << '\n';
+        } catch (const formats::InputError& e) {
+            std::cerr << "impulse-bench-world: " << formats::input_name(file) << ": " << e.what() << '\n';
             return 2;
         }
         const int n = frames.value_or(scene.world.frames);
@@ -105,18 +105,18 @@ int main(int argc, char** argv) {
                   [](const Figures& a, const Figures& b) { return a.frame_ms < b.frame_ms; });
         const Figures& median = sorted[sorted.size() / 2];
         const Figures& first = runs.front();
-        const std::string name = cli::input_name(file.substr(file.find_last_of('/') + 1));
+        const std::string name = formats::input_name(file.substr(file.find_last_of('/') + 1));
         std::fprintf(table, "%-22s %6zu %6d %9.1f %9.1f %10.3f %9.3f %9.3f %9.3f %9.3f %8d %11.2f %11.2f\n",
                      name.c_str(), scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms,
                      median.stage_ms.integrate, median.stage_ms.broad_phase, median.stage_ms.narrow_phase,
                      median.stage_ms.resolve, first.limited_frames, first.drift_end_mm, first.drift_most_mm);
-        rows += explain::csv_row({name, std::to_string(scene.bodies.size()), std::to_string(n),
-                                  explain::csv_number(first.contacts), explain::csv_number(first.pairs),
-                                  explain::csv_number(median.frame_ms), explain::csv_number(median.stage_ms.integrate),
-                                  explain::csv_number(median.stage_ms.broad_phase),
-                                  explain::csv_number(median.stage_ms.narrow_phase),
-                                  explain::csv_number(median.stage_ms.resolve), std::to_string(first.limited_frames),
-                                  explain::csv_number(first.drift_end_mm), explain::csv_number(first.drift_most_mm)});
+        rows += formats::csv_row({name, std::to_string(scene.bodies.size()), std::to_string(n),
+                                  formats::csv_number(first.contacts), formats::csv_number(first.pairs),
+                                  formats::csv_number(median.frame_ms), formats::csv_number(median.stage_ms.integrate),
+                                  formats::csv_number(median.stage_ms.broad_phase),
+                                  formats::csv_number(median.stage_ms.narrow_phase),
+                                  formats::csv_number(median.stage_ms.resolve), std::to_string(first.limited_frames),
+                                  formats::csv_number(first.drift_end_mm), formats::csv_number(first.drift_most_mm)});
     }
     return csv.write(rows) ? 0 : 2;
 }

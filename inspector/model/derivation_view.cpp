@@ -1,8 +1,8 @@
 #include "model/derivation_view.hpp"
 
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 DerivationView derivation_view(const Trace& trace, const Cursor& cursor) {
     const std::vector<explain::StepTable> tables = step_tables(trace, cursor);
@@ -25,10 +25,10 @@ std::string derivation_csv(const DerivationView& view) {
         std::string value = r.row.value;
         for (std::size_t at = value.find('\n'); at != std::string::npos; at = value.find('\n', at))
             value.replace(at, 1, "; ");
-        csv += explain::csv_row({r.step, r.row.quantity, value, r.row.exact, r.row.other_frame, r.row.formula,
+        csv += formats::csv_row({r.step, r.row.quantity, value, r.row.exact, r.row.other_frame, r.row.formula,
                                  r.row.equation, r.row.meaning, r.changed ? "yes" : "no"});
     }
     return csv;
 }
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 struct ViewRow {
     std::string step;  // the vocabulary name of the step that computed this row
@@ -31,4 +31,4 @@ DerivationView derivation_view(const Trace& trace, const Cursor& cursor);
 // line (a matrix's rows joined by "; "); `value` as shown, `exact` with every digit.
 std::string derivation_csv(const DerivationView& view);
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

@@ -10,7 +10,7 @@
 #include <algorithm>
 #include <charconv>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 namespace {
 
@@ -159,8 +159,8 @@ int parse_int(std::string_view text, std::string_view part, std::string_view whe
     int value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc() || end != text.data() + text.size() || value < 0)
-        throw io::InputError(std::string(where),
-                             std::string(part) + " must be a whole number ≥ 0, got \"" + std::string(text) + "\"");
+        throw formats::InputError(std::string(where),
+                                  std::string(part) + " must be a whole number ≥ 0, got \"" + std::string(text) + "\"");
     return value;
 }
 
@@ -322,16 +322,17 @@ std::optional<Cursor> previous_stage(const Trace& trace, const Cursor& c) {
 
 GotoSpec parse_goto(std::string_view text, std::string_view where) {
     GotoSpec spec;
-    if (text.empty()) throw io::InputError(std::string(where), "empty place; expected e.g. frame=0,phase=velocity");
+    if (text.empty())
+        throw formats::InputError(std::string(where), "empty place; expected e.g. frame=0,phase=velocity");
     while (!text.empty()) {
         const std::size_t comma = text.find(',');
         const std::string_view part = text.substr(0, comma);
         text = comma == std::string_view::npos ? std::string_view{} : text.substr(comma + 1);
         const std::size_t equals = part.find('=');
         if (equals == std::string_view::npos)
-            throw io::InputError(std::string(where), "\"" + std::string(part) +
-                                                         "\" is not NAME=VALUE (names: frame, phase, iteration, "
-                                                         "contact, step)");
+            throw formats::InputError(std::string(where), "\"" + std::string(part) +
+                                                              "\" is not NAME=VALUE (names: frame, phase, iteration, "
+                                                              "contact, step)");
         const std::string_view name = part.substr(0, equals), value = part.substr(equals + 1);
         if (name == "frame")
             spec.frame = parse_int(value, "frame", where);
@@ -347,39 +348,40 @@ GotoSpec parse_goto(std::string_view text, std::string_view where) {
             else if (value == "velocity")
                 spec.stage = Stage::velocity;
             else
-                throw io::InputError(std::string(where), "phase must be preparation, position or velocity, got \"" +
-                                                             std::string(value) + "\"");
+                throw formats::InputError(
+                    std::string(where),
+                    "phase must be preparation, position or velocity, got \"" + std::string(value) + "\"");
         } else if (name == "step") {
-            if (value.empty()) throw io::InputError(std::string(where), "step needs a name, e.g. step=impulse");
+            if (value.empty()) throw formats::InputError(std::string(where), "step needs a name, e.g. step=impulse");
             spec.step = std::string(value);
             // A step's name from before trace format 2 (velocity_per_unit_impulse, accumulated_impulse) reads as
             // today's (docs/trace-format.md).
             for (const words::StepRename& r : words::step_renames())
                 if (*spec.step == r.old_name) spec.step = std::string(r.new_name);
         } else
-            throw io::InputError(std::string(where), "unknown part \"" + std::string(name) +
-                                                         "\" (parts: frame, phase, iteration, contact, step)");
+            throw formats::InputError(std::string(where), "unknown part \"" + std::string(name) +
+                                                              "\" (parts: frame, phase, iteration, contact, step)");
     }
     return spec;
 }
 
 namespace {
 
-// Where a place points before its step: the frame, the stage and the item. Throws io::InputError(at, ...).
+// Where a place points before its step: the frame, the stage and the item. Throws formats::InputError(at, ...).
 Cursor place_of(const Trace& trace, const GotoSpec& spec, const std::string& at) {
-    if (!first_cursor(trace)) throw io::InputError(at, "the trace records nothing to step through");
+    if (!first_cursor(trace)) throw formats::InputError(at, "the trace records nothing to step through");
     int f = first_cursor(trace)->frame;
     if (spec.frame) {
         const auto found = std::find_if(trace.frames.begin(), trace.frames.end(),
                                         [&](const FrameRecord& r) { return r.frame == *spec.frame; });
         if (found == trace.frames.end())
-            throw io::InputError(
+            throw formats::InputError(
                 at, "frame " + std::to_string(*spec.frame) + " is not in the trace (" + recorded_frames(trace) + ")");
         f = static_cast<int>(found - trace.frames.begin());
     }
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
     const std::vector<Stage> present = stages(frame);
-    if (present.empty()) throw io::InputError(at, "frame " + std::to_string(frame.frame) + " records nothing");
+    if (present.empty()) throw formats::InputError(at, "frame " + std::to_string(frame.frame) + " records nothing");
     // Naming an iteration without a phase means the first phase that has it.
     Stage stage = spec.stage ? *spec.stage : present.front();
     if (!spec.stage && spec.iteration) {
@@ -393,27 +395,30 @@ Cursor place_of(const Trace& trace, const GotoSpec& spec, const std::string& at)
             }
     }
     if (std::find(present.begin(), present.end(), stage) == present.end())
-        throw io::InputError(at, "frame " + std::to_string(frame.frame) + " has no " + std::string(stage_name(stage)) +
-                                     (stage == Stage::preparation ? " (no contact was recorded)" : " iterations"));
+        throw formats::InputError(at, "frame " + std::to_string(frame.frame) + " has no " +
+                                          std::string(stage_name(stage)) +
+                                          (stage == Stage::preparation ? " (no contact was recorded)" : " iterations"));
 
     Cursor cursor{f, stage, 0, 0};
     const int count = item_count(frame, stage);
     if (stage == Stage::preparation) {
-        if (spec.iteration) throw io::InputError(at, "the preparation has no iterations; use contact=C");
+        if (spec.iteration) throw formats::InputError(at, "the preparation has no iterations; use contact=C");
         if (spec.contact) {
             const ContactPreparation* p = preparation_of(frame, *spec.contact);
             if (!p)
-                throw io::InputError(at, "contact " + std::to_string(*spec.contact) + " is not recorded in frame " +
-                                             std::to_string(frame.frame) + " (it has " +
-                                             std::to_string(frame.contact_count) + " contacts, numbered from 0)");
+                throw formats::InputError(at, "contact " + std::to_string(*spec.contact) +
+                                                  " is not recorded in frame " + std::to_string(frame.frame) +
+                                                  " (it has " + std::to_string(frame.contact_count) +
+                                                  " contacts, numbered from 0)");
             cursor.item = static_cast<int>(p - frame.contacts.data());
         }
     } else {
         if (spec.iteration) {
             if (*spec.iteration >= count)
-                throw io::InputError(at, "the " + std::string(stage_name(stage)) + " phase of frame " +
-                                             std::to_string(frame.frame) + " has iterations 0.." +
-                                             std::to_string(count - 1) + ", not " + std::to_string(*spec.iteration));
+                throw formats::InputError(at, "the " + std::string(stage_name(stage)) + " phase of frame " +
+                                                  std::to_string(frame.frame) + " has iterations 0.." +
+                                                  std::to_string(count - 1) + ", not " +
+                                                  std::to_string(*spec.iteration));
             cursor.item = *spec.iteration;
         }
         if (spec.contact) {
@@ -421,7 +426,7 @@ Cursor place_of(const Trace& trace, const GotoSpec& spec, const std::string& at)
             int i = cursor.item;
             while (i < count && contact_at(trace, Cursor{f, stage, i, 0}) != *spec.contact) ++i;
             if (i == count)
-                throw io::InputError(
+                throw formats::InputError(
                     at, "no iteration of the " + std::string(stage_name(stage)) + " phase" +
                             (spec.iteration ? " from iteration " + std::to_string(*spec.iteration) : std::string()) +
                             " chose contact " + std::to_string(*spec.contact));
@@ -467,16 +472,16 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
         try {
             const Cursor other = place_of(trace, there, at);
             elsewhere.emplace_back(other, step_tables(trace, other));
-        } catch (const io::InputError&) {
+        } catch (const formats::InputError&) {
             // this stage has no such place (e.g. no iteration chose the contact)
         }
     }
     for (auto& [other, other_tables] : elsewhere)
         if (const std::optional<int> found = step_named(other_tables, *spec.step)) {
             if (spec.stage)
-                throw io::InputError(at, "no step or quantity \"" + *spec.step + "\" in " + stage_phrase(cursor.stage) +
-                                             "; it is in " + stage_phrase(other.stage) +
-                                             " (phase=" + std::string(stage_name(other.stage)) + ")");
+                throw formats::InputError(
+                    at, "no step or quantity \"" + *spec.step + "\" in " + stage_phrase(cursor.stage) + "; it is in " +
+                            stage_phrase(other.stage) + " (phase=" + std::string(stage_name(other.stage)) + ")");
             other.step = *found;
             return other;
         }
@@ -496,7 +501,7 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
     for (const StepTable& t : tables) steps += (steps.empty() ? "" : ", ") + t.step;
     std::string problem =
         "no step or quantity \"" + *spec.step + "\" in " + stage_phrase(cursor.stage) + " (its steps: " + steps + ")";
-    if (const std::optional<std::string> meant = io::closest_name(*spec.step, names)) {
+    if (const std::optional<std::string> meant = formats::closest_name(*spec.step, names)) {
         const Stage stage =
             stage_of[static_cast<std::size_t>(std::find(names.begin(), names.end(), *meant) - names.begin())];
         problem += "; did you mean \"" + *meant + "\"" +
@@ -505,7 +510,7 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
                         : ", in " + stage_phrase(stage) + " (phase=" + std::string(stage_name(stage)) + ")") +
                    "?";
     }
-    throw io::InputError(at, problem);
+    throw formats::InputError(at, problem);
 }
 
 Location location_of(const Trace& trace, const Cursor& c) {
@@ -570,4 +575,4 @@ std::string describe(const Trace& trace, const Cursor& c) {
     return text;
 }
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

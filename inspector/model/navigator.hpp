@@ -13,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 enum class Stage {
     preparation,  // steps 1-5 of each contact, computed once when the frame's contacts were prepared
@@ -81,9 +81,9 @@ struct GotoSpec {
     std::optional<std::string> step;
 };
 
-// Throws io::InputError(where, ...) for a malformed spec.
+// Throws formats::InputError(where, ...) for a malformed spec.
 GotoSpec parse_goto(std::string_view text, std::string_view where);
-// Throws io::InputError(where, ...) naming what the trace does not have.
+// Throws formats::InputError(where, ...) naming what the trace does not have.
 Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view where);
 
 // Where the cursor stands, as it would be written back: stays valid after re-running the same scene with
@@ -107,4 +107,4 @@ std::string body_label(const Trace& trace, int body);
 // "frame 0 · velocity phase · iteration 3 · contact 1 · impulse"
 std::string describe(const Trace& trace, const Cursor& cursor);
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

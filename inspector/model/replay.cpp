@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 namespace {
 
@@ -150,4 +150,4 @@ std::vector<PhaseCurve> phase_curves(const FrameRecord& frame) {
     return curves;
 }
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

@@ -8,7 +8,7 @@
 
 #include <vector>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 enum class ContactStatus {
     chosen,         // resolved by the cursor's iteration
@@ -49,4 +49,4 @@ struct PhaseCurve {
 };
 std::vector<PhaseCurve> phase_curves(const FrameRecord& frame);
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

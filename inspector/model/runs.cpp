@@ -5,7 +5,7 @@
 #include "resolver/resolver.hpp"
 #include "world/world.hpp"
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 namespace {
 
@@ -38,10 +38,10 @@ Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget
     if (recording.contacts)
         for (int contact : *recording.contacts)
             if (contact >= static_cast<int>(contacts.size()))
-                throw io::InputError("--record", "there is no contact " + std::to_string(contact) +
-                                                     " (this frame has " + std::to_string(contacts.size()) +
-                                                     (contacts.size() == 1 ? " contact" : " contacts") +
-                                                     ", numbered from 0)");
+                throw formats::InputError("--record", "there is no contact " + std::to_string(contact) +
+                                                          " (this frame has " + std::to_string(contacts.size()) +
+                                                          (contacts.size() == 1 ? " contact" : " contacts") +
+                                                          ", numbered from 0)");
     std::vector<RigidBody> bodies = scene.bodies;
     TraceRecorder recorder(trace, budget.bytes);
     LastTouch touch(recorder, contacts, bodies.size());
@@ -79,4 +79,4 @@ Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, T
     return trace;
 }
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

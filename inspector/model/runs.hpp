@@ -10,7 +10,7 @@
 #include <optional>
 #include <string>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 // How much trace a run may record (--max-trace-mb): past the budget recording stops at the last complete frame
 // and `stopped_at`, if given, receives the frame it stopped at. The run itself goes on (`run` writes every
@@ -32,7 +32,7 @@ struct BrokenRun {
 std::string broken_run_text(const Scene& scene, const BrokenRun& broken);
 
 // One resolution of the scene's contacts: those written in it, else those its shapes make where they
-// stand. Throws io::InputError("--record", ...) when the filter names a contact the frame does not have.
+// stand. Throws formats::InputError("--record", ...) when the filter names a contact the frame does not have.
 // If it leaves a body non-finite, `broken` (if given) receives it and the trace holds no frame.
 Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget budget = {},
                    std::optional<BrokenRun>* broken = nullptr);
@@ -44,4 +44,4 @@ Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget
 Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, TraceBudget budget = {},
                  std::optional<BrokenRun>* broken = nullptr);
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

@@ -8,7 +8,7 @@
 
 #include <charconv>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 namespace {
 
@@ -62,14 +62,14 @@ const char* known_actions =
 Action parse_action(std::string_view text, int line) {
     const std::vector<std::string_view> w = words(text);
     const std::string where = line_name(line);
-    if (w.empty()) throw io::InputError(where, "empty action");
+    if (w.empty()) throw formats::InputError(where, "empty action");
     const auto needs = [&](std::size_t n, const char* usage) {
-        if (w.size() != n) throw io::InputError(where, "\"" + std::string(trim(text)) + "\": expected " + usage);
+        if (w.size() != n) throw formats::InputError(where, "\"" + std::string(trim(text)) + "\": expected " + usage);
     };
     if (w[0] == "next" || w[0] == "prev" || w[0] == "previous") {
         if (w.size() < 2 || w.size() > 3)
-            throw io::InputError(where, "\"" + std::string(trim(text)) +
-                                            "\": expected next|prev step|contact|iteration|item|phase [COUNT]");
+            throw formats::InputError(where, "\"" + std::string(trim(text)) +
+                                                 "\": expected next|prev step|contact|iteration|item|phase [COUNT]");
         const std::string name = std::string(w[0] == "next" ? "next " : "prev ") + std::string(w[1]);
         for (const MoveName& m : moves)
             if (m.text == name) {
@@ -77,14 +77,15 @@ Action parse_action(std::string_view text, int line) {
                 if (w.size() == 3) {
                     const auto [end, error] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), a.count);
                     if (error != std::errc() || end != w[2].data() + w[2].size() || a.count < 1 || a.count > 1000000)
-                        throw io::InputError(where, "repeat count must be a whole number from 1 to 1000000, got \"" +
-                                                        std::string(w[2]) + "\"");
+                        throw formats::InputError(
+                            where,
+                            "repeat count must be a whole number from 1 to 1000000, got \"" + std::string(w[2]) + "\"");
                 }
                 return a;
             }
-        throw io::InputError(where, "\"" + std::string(w[1]) +
-                                        "\" is not something to move by (step, contact, "
-                                        "iteration, item or phase)");
+        throw formats::InputError(where, "\"" + std::string(w[1]) +
+                                             "\" is not something to move by (step, contact, "
+                                             "iteration, item or phase)");
     }
     if (w[0] == "first") return needs(1, "first"), Action{ActionKind::first, {}, 1, line};
     if (w[0] == "last") return needs(1, "last"), Action{ActionKind::last, {}, 1, line};
@@ -101,7 +102,7 @@ Action parse_action(std::string_view text, int line) {
     if (w[0] == "view") {
         needs(2, "view front|top|side|3d");
         if (w[1] != "front" && w[1] != "top" && w[1] != "side" && w[1] != "3d")
-            throw io::InputError(where, "view must be front, top, side or 3d, got \"" + std::string(w[1]) + "\"");
+            throw formats::InputError(where, "view must be front, top, side or 3d, got \"" + std::string(w[1]) + "\"");
         return {ActionKind::view, std::string(w[1]), 1, line};
     }
     if (w[0] == "lesson") {
@@ -109,8 +110,8 @@ Action parse_action(std::string_view text, int line) {
         int step = 0;
         const auto [end, error] = std::from_chars(w[2].data(), w[2].data() + w[2].size(), step);
         if (w[1] != "step" || error != std::errc() || end != w[2].data() + w[2].size() || step < 1)
-            throw io::InputError(where,
-                                 "expected lesson step N with N from 1, got \"" + std::string(trim(text)) + "\"");
+            throw formats::InputError(where,
+                                      "expected lesson step N with N from 1, got \"" + std::string(trim(text)) + "\"");
         return {ActionKind::lesson_step, std::to_string(step), 1, line};
     }
     if (w[0] == "screenshot") {
@@ -120,11 +121,11 @@ Action parse_action(std::string_view text, int line) {
     if (w[0] == "export") {
         if (w.size() == 3 && w[1] == "trace") return {ActionKind::export_trace, std::string(w[2]), 1, line};
         if (w.size() == 3 && w[1] == "table") return {ActionKind::export_table, std::string(w[2]), 1, line};
-        throw io::InputError(where, "\"" + std::string(trim(text)) +
-                                        "\": expected export trace FILE or export table "
-                                        "FILE");
+        throw formats::InputError(where, "\"" + std::string(trim(text)) +
+                                             "\": expected export trace FILE or export table "
+                                             "FILE");
     }
-    throw io::InputError(where, "unknown action \"" + std::string(w[0]) + "\" (actions: " + known_actions + ")");
+    throw formats::InputError(where, "unknown action \"" + std::string(w[0]) + "\" (actions: " + known_actions + ")");
 }
 
 std::vector<Action> parse_script(std::string_view text) {
@@ -151,11 +152,11 @@ std::string rerun_text(const Session& session, std::string_view assignment, bool
 }
 
 std::string exported_trace(const Session& session) {
-    return io::format_json(io::trace_json(session.trace()));
+    return formats::format_json(formats::trace_json(session.trace()));
 }
 
 std::string exported_table(const Session& session) {
-    if (!session.cursor()) throw io::InputError("export table", "the trace records nothing to show");
+    if (!session.cursor()) throw formats::InputError("export table", "the trace records nothing to show");
     return derivation_csv(derivation_view(session.trace(), *session.cursor()));
 }
 
@@ -163,14 +164,14 @@ void perform(Session& session, const Action& action, std::string_view where, Act
     const std::string at(where);
     for (const MoveName& m : moves) {
         if (m.kind != action.kind) continue;
-        if (!session.cursor()) throw io::InputError(at, "the trace records nothing to step through");
+        if (!session.cursor()) throw formats::InputError(at, "the trace records nothing to step through");
         Cursor c = *session.cursor();
         for (int i = 0; i < action.count; ++i) {
             const std::optional<Cursor> next = m.move(session.trace(), c);
             if (!next)
-                throw io::InputError(at, std::string(m.text) + ": already at the " +
-                                             (m.text.starts_with("next") ? "end" : "start") + " of the trace (" +
-                                             describe(session.trace(), c) + ")");
+                throw formats::InputError(at, std::string(m.text) + ": already at the " +
+                                                  (m.text.starts_with("next") ? "end" : "start") + " of the trace (" +
+                                                  describe(session.trace(), c) + ")");
             c = *next;
         }
         session.move_to(c);
@@ -194,12 +195,12 @@ void perform(Session& session, const Action& action, std::string_view where, Act
             const std::string text =
                 action.kind == ActionKind::export_trace ? exported_trace(session) : exported_table(session);
             if (action.argument != "-") {
-                io::write_file_atomically(action.argument, text, at);
+                formats::write_file_atomically(action.argument, text, at);
                 return;
             }
             // "-": the command's standard output (cli/outputs.hpp).
             std::ostream* out = host ? host->standard_output() : nullptr;
-            if (!out) throw io::InputError(at, "standard output (\"-\") is not available here; name a file");
+            if (!out) throw formats::InputError(at, "standard output (\"-\") is not available here; name a file");
             out->write(text.data(), static_cast<std::streamsize>(text.size())).flush();
             return;
         }
@@ -207,12 +208,12 @@ void perform(Session& session, const Action& action, std::string_view where, Act
         case ActionKind::view:
         case ActionKind::lesson_step:
         case ActionKind::quit:
-            if (!host) throw io::InputError(at, "only the inspector's window or --headless renderer can do this");
+            if (!host) throw formats::InputError(at, "only the inspector's window or --headless renderer can do this");
             if (action.kind == ActionKind::screenshot) {
                 // The picture is taken a few frames later; "-" is standard output.
                 if (action.argument == "-" && !host->standard_output())
-                    throw io::InputError(at, "standard output (\"-\") is not available here; name a file");
-                if (action.argument != "-") io::check_writable(action.argument, at);
+                    throw formats::InputError(at, "standard output (\"-\") is not available here; name a file");
+                if (action.argument != "-") formats::check_writable(action.argument, at);
                 host->screenshot(action.argument);
             } else if (action.kind == ActionKind::view)
                 host->view(action.argument);
@@ -226,4 +227,4 @@ void perform(Session& session, const Action& action, std::string_view where, Act
     }
 }
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

@@ -17,7 +17,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 enum class ActionKind {
     next_step,
@@ -49,7 +49,7 @@ struct Action {
     int line = 0;               // in the script, for errors (0 = not from a script)
 };
 
-// Throws io::InputError("line N", ...) for the first line that is not an action.
+// Throws formats::InputError("line N", ...) for the first line that is not an action.
 std::vector<Action> parse_script(std::string_view text);
 // One action from its text, as typed in a script line.
 Action parse_action(std::string_view text, int line);
@@ -60,14 +60,14 @@ public:
     virtual ~ActionHost() = default;
     virtual void screenshot(const std::string& path) = 0;
     virtual void view(const std::string& plane) = 0;  // front, top, side or 3d
-    virtual void lesson_step(int step) = 0;           // from 0; throws io::InputError when there is none
+    virtual void lesson_step(int step) = 0;           // from 0; throws formats::InputError when there is none
     virtual void quit() = 0;
     // Where an export or screenshot named "-" goes (the command's standard output), or null when nowhere.
     virtual std::ostream* standard_output() { return nullptr; }
 };
 
 // Carries out one action. A move that would leave the trace, a bad goto or setting, or an unwritable file
-// throws io::InputError(where, ...) and changes nothing.
+// throws formats::InputError(where, ...) and changes nothing.
 void perform(Session& session, const Action& action, std::string_view where, ActionHost* host);
 
 // What a re-run with `assignment` ("restitution_cutoff=0") gave, for the window's status line and a script's
@@ -79,4 +79,4 @@ std::string rerun_text(const Session& session, std::string_view assignment, bool
 std::string exported_trace(const Session& session);
 std::string exported_table(const Session& session);
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

@@ -1,6 +1,6 @@
 #include "model/session.hpp"
 
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 #include "formats/scene_file.hpp"
@@ -11,43 +11,43 @@
 #include <algorithm>
 #include <cstdio>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 namespace {
 
 bool is_trace(const nlohmann::ordered_json& document) {
-    return document.is_object() && document.contains("format") && document["format"] == io::trace_format_name;
+    return document.is_object() && document.contains("format") && document["format"] == formats::trace_format_name;
 }
 
 }  // namespace
 
 Session Session::open(const std::string& path, const OpenOptions& options) {
-    return open_text(cli::read_input_file(path), path, options);
+    return open_text(formats::read_input_file(path), path, options);
 }
 
 Session Session::open_text(const std::string& text, const std::string& path, const OpenOptions& options) {
     Session s;
-    s.path_ = cli::input_name(path);
+    s.path_ = formats::input_name(path);
     nlohmann::ordered_json document;
     try {
-        document = io::parse_json_text(text);
+        document = formats::parse_json_text(text);
         if (is_trace(document)) {
             s.kind_ = SourceKind::trace_file;
-            s.trace_ = io::read_trace(document);
+            s.trace_ = formats::read_trace(document);
         } else {
-            s.scene_ = io::read_scene(document, options.preset);
+            s.scene_ = formats::read_scene(document, options.preset);
             s.kind_ = s.scene_.contacts.empty() ? SourceKind::scene_file : SourceKind::case_file;
         }
-    } catch (const io::InputError& e) {
-        throw cli::FileError{s.path_, e.where(), e.problem()};
+    } catch (const formats::InputError& e) {
+        throw formats::FileError{s.path_, e.where(), e.problem()};
     }
     document = {};
 
-    for (const std::string& spec : options.record) cli::apply_record_spec(spec, s.recording_);
+    for (const std::string& spec : options.record) formats::apply_record_spec(spec, s.recording_);
     if (s.kind_ == SourceKind::trace_file) {
         // A trace is shown as recorded; its header is what a changed setting re-runs.
         if (const auto flag = options.first_given())
-            throw io::InputError(
+            throw formats::InputError(
                 std::string(*flag),
                 "a trace is shown as it was recorded; give a scene or case file to run it differently");
         s.scene_ = s.trace_.scene;
@@ -55,13 +55,13 @@ Session Session::open_text(const std::string& text, const std::string& path, con
         s.resolve_ = !s.scene_.contacts.empty();
         s.frames_ = s.trace_.frames.empty() ? 1 : s.trace_.frames.back().frame + 1;
     } else {
-        for (const std::string& assignment : options.settings) io::apply_setting(s.scene_, assignment, "--set");
-        s.trace_budget_ = trace_budget_bytes(options.max_trace_mb);
+        for (const std::string& assignment : options.settings) formats::apply_setting(s.scene_, assignment, "--set");
+        s.trace_budget_ = formats::trace_budget_bytes(options.max_trace_mb);
         s.resolve_ = s.kind_ == SourceKind::case_file;
         if (options.frames && s.resolve_)
-            throw io::InputError("--frames",
-                                 "a case (a scene with contacts written in it) is resolved once; "
-                                 "--frames is for scenes that are simulated");
+            throw formats::InputError("--frames",
+                                      "a case (a scene with contacts written in it) is resolved once; "
+                                      "--frames is for scenes that are simulated");
         s.frames_ = options.frames ? *options.frames : std::min(s.scene_.world.frames, default_inspect_frames);
         s.rerun();
     }
@@ -108,7 +108,7 @@ std::optional<std::string> Session::recording_note() const {
 
 void Session::set(std::string_view assignment, std::string_view where) {
     Scene changed = scene_;
-    io::apply_setting(changed, assignment, where);
+    formats::apply_setting(changed, assignment, where);
     const std::optional<Location> here = cursor_ ? std::optional(location_of(trace_, *cursor_)) : std::nullopt;
     scene_ = std::move(changed);
     rerun();
@@ -116,4 +116,4 @@ void Session::set(std::string_view assignment, std::string_view where) {
     cursor_ = here ? nearest_cursor(trace_, *here) : first_cursor(trace_);
 }
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

@@ -5,6 +5,7 @@
 
 #include "model/navigator.hpp"
 #include "model/runs.hpp"
+#include "formats/input_files.hpp"
 
 #include <cstddef>
 #include <optional>
@@ -12,7 +13,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::inspect {
+namespace impulse::model {
 
 enum class SourceKind {
     case_file,   // a scene with contacts written in it: resolved once (`resolve`)
@@ -21,11 +22,12 @@ enum class SourceKind {
 };
 
 struct OpenOptions {
-    std::optional<std::string> preset;   // --preset
-    std::vector<std::string> settings;   // --set name=value, in order
-    std::vector<std::string> record;     // --record frames=A..B / contacts=I,J
-    std::optional<int> frames;           // frames to simulate for a scene (default: up to 60, the first second)
-    std::optional<double> max_trace_mb;  // --max-trace-mb: the recording's budget (default: default_max_trace_mb)
+    std::optional<std::string> preset;  // --preset
+    std::vector<std::string> settings;  // --set name=value, in order
+    std::vector<std::string> record;    // --record frames=A..B / contacts=I,J
+    std::optional<int> frames;          // frames to simulate for a scene (default: up to 60, the first second)
+    std::optional<double>
+        max_trace_mb;  // --max-trace-mb: the recording's budget (default: formats::default_max_trace_mb)
 
     // The flag of the first option given ("--preset", "--set", "--frames", "--record"), or none: for the
     // sources that run as they were made (a trace, a worksheet, a lesson) and refuse all four.
@@ -41,19 +43,9 @@ struct OpenOptions {
 
 inline constexpr int default_inspect_frames = 60;
 
-// The default --max-trace-mb: the estimate has come to at least 0.91 of the size written (tests/io/
-// test_trace_file.cpp), so a trace stopped at 200 MB is at most about 220 MB and can still be read back under the
-// 256 MiB every command reads at most (cli::max_input_bytes).
-inline constexpr double default_max_trace_mb = 200.0;
-
-// --max-trace-mb in bytes (1 MB = 10^6 bytes).
-inline std::size_t trace_budget_bytes(std::optional<double> max_trace_mb) {
-    return static_cast<std::size_t>(max_trace_mb.value_or(default_max_trace_mb) * 1e6);
-}
-
 class Session {
 public:
-    // Reads, checks and runs the file. Throws cli::FileError for a bad file and io::InputError for a bad
+    // Reads, checks and runs the file. Throws formats::FileError for a bad file and formats::InputError for a bad
     // flag, before anything is shown.
     static Session open(const std::string& path, const OpenOptions& options);
     // The same for a file already read (standard input, or a file a caller looked into first); `path` names it.
@@ -95,7 +87,7 @@ private:
     TraceFilter recording_;
     int frames_ = 1;       // scene and trace files: how many frames a re-run simulates
     bool resolve_ = true;  // re-run by resolving the written contacts once, else by simulating frames
-    std::size_t trace_budget_ = trace_budget_bytes(std::nullopt);  // bytes a run may record
+    std::size_t trace_budget_ = formats::trace_budget_bytes(std::nullopt);  // bytes a run may record
     std::optional<int> recording_stopped_at_;
     std::optional<BrokenRun> broken_run_;
     Trace trace_;
@@ -103,4 +95,4 @@ private:
     int revision_ = 0;
 };
 
-}  // namespace impulse::inspect
+}  // namespace impulse::model

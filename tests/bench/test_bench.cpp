@@ -360,14 +360,14 @@ TEST_CASE("a bad bench block is refused naming its field, as the rest of a scene
         try {
             bench::declared_bench_scene("t", text);
             FAIL("accepted");
-        } catch (const io::InputError& e) {
+        } catch (const formats::InputError& e) {
             CHECK(e.where() == cases[i].second);
         }
     }
     try {
         bench::declared_bench_scene("t", replaced(tower_with_block, R"("duration": 2)", R"("duraton": 2)"));
         FAIL("accepted");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         CHECK(e.where() == "bench.duraton");
     }
 }
@@ -407,8 +407,8 @@ TEST_CASE("a shard runs every N-th configuration from the K-th") {
     CHECK(ran == std::vector<std::size_t>{1, 4});
     CHECK(bench::parse_shard("2/3").k == 2);
     CHECK(bench::parse_shard("2/3").n == 3);
-    CHECK_THROWS_AS(bench::parse_shard("0/3"), io::InputError);
-    CHECK_THROWS_AS(bench::parse_shard("2/"), io::InputError);
+    CHECK_THROWS_AS(bench::parse_shard("0/3"), formats::InputError);
+    CHECK_THROWS_AS(bench::parse_shard("2/"), formats::InputError);
 }
 
 TEST_CASE("shards merged from their results.json give the files one run of the whole matrix gives") {
@@ -446,7 +446,7 @@ TEST_CASE("shards merged from their results.json give the files one run of the w
         try {
             bench::merge_results(docs, names);
             FAIL("merged");
-        } catch (const io::InputError& e) {
+        } catch (const formats::InputError& e) {
             CHECK(e.where() == "--merge");
             CHECK(e.problem().find(problem) != std::string::npos);
         }

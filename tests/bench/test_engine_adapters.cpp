@@ -29,7 +29,7 @@ std::unique_ptr<bench::EngineWorld> world_of(std::string_view engine, const Scen
 // ground's 0: combined by the larger), stepped at `dt` (1 ms keeps the step's own error, g dt against the impact
 // speed sqrt(2 g h) = 4.43 m/s, at 0.2 %). Returns the highest the lowest point rises after the first bounce.
 double bounce_height(std::string_view engine, double dt = 0.001) {
-    const Scene scene = io::read_scene_text(R"({
+    const Scene scene = formats::read_scene_text(R"({
       "ground": {}, "materials": {"ball": {"restitution": 0.5, "friction": 0.5}},
       "settings": {"duration": 0.01},
       "bodies": [{"shape": {"type": "sphere", "radius": 0.5}, "position": [0, 1.5, 0], "material": "ball"}]})");
@@ -51,7 +51,7 @@ double bounce_height(std::string_view engine, double dt = 0.001) {
 
 // A 1 m cube resting on the ground (its centre 0.5 m up), for 2 s at the bench's 1/60 s. Returns its state.
 RigidBody resting_box_after_two_seconds(std::string_view engine, int* contacts = nullptr) {
-    const Scene scene = io::read_scene_text(R"({
+    const Scene scene = formats::read_scene_text(R"({
       "ground": {},
       "bodies": [{"shape": {"type": "box", "half_size": [0.5, 0.5, 0.5]}, "position": [0, 0.5, 0]}]})");
     auto world = world_of(engine, scene);
@@ -68,7 +68,7 @@ RigidBody resting_box_after_two_seconds(std::string_view engine, int* contacts =
 // p0 + v t = (1, 2, 3) + (1, 2, 3) 0.5 = (1.5, 3, 4.5); the orientation turned by 2 x 0.5 = 1 rad about world z
 // on top of the first turn, q = R_z(1) R_x(pi/2); the velocity and the angular velocity unchanged, in world axes.
 void check_state_hand_back(std::string_view engine) {
-    const Scene scene = io::read_scene_text(R"({
+    const Scene scene = formats::read_scene_text(R"({
       "gravity": [0, 0, 0],
       "bodies": [{"shape": {"type": "box", "half_size": [0.5, 1, 2]}, "mass": 2, "position": [1, 2, 3],
                   "orientation": [0.7071067811865476, 0.7071067811865476, 0, 0],
@@ -116,13 +116,13 @@ TEST_CASE("an engine the build does not have is not found, and the built ones ar
 }
 
 TEST_CASE("engines refuse a scene with contacts written by hand, naming the engine") {
-    const Scene scene = io::read_scene_text(R"({
+    const Scene scene = formats::read_scene_text(R"({
       "bodies": [{"shape": {"type": "sphere", "radius": 1}}],
       "contacts": [{"bodies": [0, null], "point": [0, -1, 0], "normal": [0, 1, 0]}]})");
     CHECK_THROWS_WITH_AS(bench::check_scene_for_engine(scene, "ode"),
                          "contacts: ode runs scenes with collision detection only; this scene has contacts written by "
                          "hand",
-                         io::InputError);
+                         formats::InputError);
 }
 
 TEST_CASE("a damping share kept per second becomes the share lost per step") {

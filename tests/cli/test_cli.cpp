@@ -362,7 +362,7 @@ TEST_CASE("--max-trace-mb is refused when it is not a positive number") {
 
 TEST_CASE("a file over its stated size limit is refused before it is parsed, and so is one that never ends") {
     TempDir dir;
-    // A lesson is text a person writes: 4 MiB at most (cli::max_text_input_bytes).
+    // A lesson is text a person writes: 4 MiB at most (formats::max_text_input_bytes).
     const std::string lesson = dir.write("01-huge.md", std::string((4u << 20) + 1, '#')).string();
     const CliResult big = run_cli({"validate", lesson});
     CHECK(big.code == impulse::cli::exit_bad_input);

@@ -66,7 +66,7 @@ TEST_CASE("IMPULSE_LAB_DATA_DIR naming a folder without lessons and scenes is on
     fs::create_directories(dir.file("empty"));
     DataFolderVariable variable(dir.file("empty"));
 
-    CHECK_THROWS_AS(cli::data_folder(), io::InputError);
+    CHECK_THROWS_AS(cli::data_folder(), formats::InputError);
     const CliResult r = run_cli({"lesson"});
     CHECK(r.code == 2);
     CHECK(r.err == "impulse-lab: IMPULSE_LAB_DATA_DIR: '" + dir.file("empty").string() +

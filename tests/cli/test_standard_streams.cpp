@@ -88,7 +88,7 @@ TEST_CASE("standard input is read with the same size limit as a file") {
 TEST_CASE("worksheet --out - writes the worksheet as JSON to standard output and its summary to standard error") {
     const CliResult r = run_cli({"worksheet", cases + "ruler.json", "--out", "-"});
     CHECK(r.code == 0);
-    const auto sheet = impulse::io::parse_json_text(r.out);
+    const auto sheet = impulse::formats::parse_json_text(r.out);
     CHECK(sheet["format"] == "impulse-lab-worksheet");
     CHECK(r.err.rfind("worksheet written to standard output: ", 0) == 0);
 }

@@ -51,8 +51,8 @@ TEST_CASE("a signal that arrives while files are being written is delivered only
     sigaction(SIGTERM, &action, &previous);
     terminate_seen = 0;
     {
-        const impulse::io::HeldInterruptions held;
-        impulse::io::StagedFile staged(dir.file("out.txt"), "whole", "--out");
+        const impulse::formats::HeldInterruptions held;
+        impulse::formats::StagedFile staged(dir.file("out.txt"), "whole", "--out");
         std::raise(SIGTERM);  // held back: it would otherwise cut the write short
         CHECK(terminate_seen == 0);
         staged.commit();
@@ -76,8 +76,8 @@ TEST_CASE("a FIFO whose reader goes away gives an error, not a SIGPIPE, and stay
         ::_exit(n > 0 ? 0 : 1);
     }
     const std::string text(1 << 20, 'x');  // far more than the pipe holds
-    CHECK_THROWS_WITH_AS(io::write_file_atomically(fifo, text, "--trace"), doctest::Contains("Broken pipe"),
-                         io::InputError);
+    CHECK_THROWS_WITH_AS(formats::write_file_atomically(fifo, text, "--trace"), doctest::Contains("Broken pipe"),
+                         formats::InputError);
     CHECK(wait_for(child) == 0);
     CHECK(fs::is_fifo(fifo));
 }

@@ -35,7 +35,7 @@
 #include <regex>
 
 using namespace impulse;
-using namespace impulse::coursework;
+using namespace impulse::course;
 
 namespace {
 
@@ -44,24 +44,24 @@ struct NotYet {
     std::string path;
 };
 
-Vec3 vec(const io::json& j) {
+Vec3 vec(const formats::json& j) {
     return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
 }
 
-Mat3 mat(const io::json& j) {
+Mat3 mat(const formats::json& j) {
     Mat3 m;
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) m(r, c) = j[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)].get<double>();
     return m;
 }
 
-io::json json_of(const Vec3& v) {
-    return io::json::array({v.x(), v.y(), v.z()});
+formats::json json_of(const Vec3& v) {
+    return formats::json::array({v.x(), v.y(), v.z()});
 }
 
-io::json json_of(const Mat3& m) {
-    io::json rows = io::json::array();
-    for (int r = 0; r < 3; ++r) rows.push_back(io::json::array({m(r, 0), m(r, 1), m(r, 2)}));
+formats::json json_of(const Mat3& m) {
+    formats::json rows = formats::json::array();
+    for (int r = 0; r < 3; ++r) rows.push_back(formats::json::array({m(r, 0), m(r, 1), m(r, 2)}));
     return rows;
 }
 
@@ -71,7 +71,7 @@ std::string name(const NameTable<Enum, N>& table, Enum value) {
 }
 
 template <typename Enum, std::size_t N>
-Enum named(const NameTable<Enum, N>& table, const io::json& text) {
+Enum named(const NameTable<Enum, N>& table, const formats::json& text) {
     for (const auto& [value, word] : table)
         if (word == text.get<std::string>()) return value;
     FAIL("no such name: " << text.dump());
@@ -79,18 +79,18 @@ Enum named(const NameTable<Enum, N>& table, const io::json& text) {
 }
 
 std::string at(const std::string& path, const std::string& key) {
-    return io::json_path_child(path, key);
+    return formats::json_path_child(path, key);
 }
 
 std::string at(const std::string& path, std::size_t index) {
-    return io::json_path_index(path, index);
+    return formats::json_path_index(path, index);
 }
 
 class HandWorker {
 public:
-    HandWorker(const io::json& sheet, const io::json& reference) : sheet_(sheet), reference_(reference) {
-        for (const io::json& step : sheet["steps"])
-            for (const io::json& input : step["inputs"]) known_[input["path"].get<std::string>()] = input["value"];
+    HandWorker(const formats::json& sheet, const formats::json& reference) : sheet_(sheet), reference_(reference) {
+        for (const formats::json& step : sheet["steps"])
+            for (const formats::json& input : step["inputs"]) known_[input["path"].get<std::string>()] = input["value"];
     }
 
     // Fills every cell it can; returns the steps it could not do and what each waited for.
@@ -101,7 +101,7 @@ public:
             progress = false;
             for (std::size_t s = 0; s < done.size(); ++s) {
                 if (done[s]) continue;
-                const io::json& step = sheet_["steps"][s];
+                const formats::json& step = sheet_["steps"][s];
                 try {
                     out_.clear();
                     work_step(step);
@@ -109,7 +109,7 @@ public:
                     waiting[s] = missing.path;
                     continue;
                 }
-                for (const io::json& cell : step["cells"]) {
+                for (const formats::json& cell : step["cells"]) {
                     const std::string path = cell["path"].get<std::string>();
                     const auto found = out_.find(path);
                     CAPTURE(step["place"].get<std::string>());
@@ -127,10 +127,10 @@ public:
     }
 
     // The sheet with every cell filled as worked out.
-    io::json filled() const {
-        io::json sheet = sheet_;
-        for (io::json& step : sheet["steps"])
-            for (io::json& cell : step["cells"]) {
+    formats::json filled() const {
+        formats::json sheet = sheet_;
+        for (formats::json& step : sheet["steps"])
+            for (formats::json& cell : step["cells"]) {
                 const auto found = known_.find(cell["path"].get<std::string>());
                 if (found != known_.end()) cell["value"] = found->second;
             }
@@ -140,7 +140,7 @@ public:
 private:
     // A value the sheet gives or that was worked out (in an earlier step, or earlier in this one: an update
     // starts from the one before it).
-    const io::json& k(const std::string& path) const {
+    const formats::json& k(const std::string& path) const {
         if (const auto here = out_.find(path); here != out_.end()) return here->second;
         const auto found = known_.find(path);
         if (found == known_.end()) throw NotYet{path};
@@ -151,26 +151,26 @@ private:
     // The sheet's settings block names the sliding model (the trace names it only when it is not the
     // reference engine's).
     SlidingFriction sliding_friction() const {
-        const io::json& settings = sheet_["settings"];
+        const formats::json& settings = sheet_["settings"];
         return settings.contains("sliding_friction") ? named(sliding_friction_names, settings["sliding_friction"])
                                                      : SlidingFriction::reference;
     }
 
-    void put(const std::string& path, io::json value) { out_[path] = std::move(value); }
+    void put(const std::string& path, formats::json value) { out_[path] = std::move(value); }
 
     // The contact `contact` as the frame's contacts list holds it (shipped runs record every contact, so the
     // contact numbered c is contacts[c]).
-    std::string contact_path(const io::json& contact) const {
+    std::string contact_path(const formats::json& contact) const {
         return at(at(frame_, "contacts"), contact.get<std::size_t>());
     }
 
-    MassProperties mass(const io::json& body) const {
+    MassProperties mass(const formats::json& body) const {
         const auto b = body.get<std::size_t>();
         return {number(at(at("scene.bodies", b), "inverse_mass")),
                 mat(k(at(at(at(frame_, "bodies_before"), b), "inverse_inertia_world")))};
     }
 
-    PerBody<MassProperties> masses(const io::json& bodies) const {
+    PerBody<MassProperties> masses(const formats::json& bodies) const {
         PerBody<MassProperties> m;
         for (std::size_t i = 0; i < 2; ++i)
             if (!bodies[i].is_null()) m[i] = mass(bodies[i]);
@@ -178,7 +178,7 @@ private:
     }
 
     // What accelerated the body last frame: the scene's, or gravity for a simulated frame's movable body.
-    Vec3 acceleration(const io::json& body) const {
+    Vec3 acceleration(const formats::json& body) const {
         const auto b = body.get<std::size_t>();
         const std::string own = at(at("scene.bodies", b), "last_frame_acceleration");
         if (has(own)) return vec(k(own));
@@ -186,21 +186,21 @@ private:
         return mass(body).inverse_mass > 0.0 ? vec(k("scene.gravity")) : Vec3::Zero();
     }
 
-    PerBody<BodyMotion> accelerations(const io::json& bodies) const {
+    PerBody<BodyMotion> accelerations(const formats::json& bodies) const {
         PerBody<BodyMotion> motion;
         for (std::size_t i = 0; i < 2; ++i)
             if (!bodies[i].is_null()) motion[i] = BodyMotion{Vec3::Zero(), Vec3::Zero(), acceleration(bodies[i])};
         return motion;
     }
 
-    PerBody<Vec3> relative_positions(const std::string& contact, const io::json& bodies) const {
+    PerBody<Vec3> relative_positions(const std::string& contact, const formats::json& bodies) const {
         PerBody<Vec3> q;
         for (std::size_t i = 0; i < 2; ++i)
             if (!bodies[i].is_null()) q[i] = vec(k(at(at(contact, "relative_position"), i)));
         return q;
     }
 
-    Basis basis_of(const io::json& matrix) const {
+    Basis basis_of(const formats::json& matrix) const {
         Basis b;
         b.contact_to_world = mat(matrix);
         b.normal = b.contact_to_world.col(0);
@@ -212,10 +212,10 @@ private:
 
     // Where contact `contact`'s `key` ("penetration", "contact_velocity", "desired_delta_velocity") stood before
     // update `update` of iteration `iteration` (npos: before the iteration): the rule of the update tables.
-    std::string current(const std::string& phase, std::size_t iteration, std::size_t update, const io::json& contact,
-                        const std::string& key, const std::string& after) const {
+    std::string current(const std::string& phase, std::size_t iteration, std::size_t update,
+                        const formats::json& contact, const std::string& key, const std::string& after) const {
         const std::string iterations = at(phase, "iterations");
-        const io::json& recorded = *value_at(reference_, parse_json_path(iterations, ""));
+        const formats::json& recorded = *value_at(reference_, parse_json_path(iterations, ""));
         const auto last_update = [&](std::size_t i, std::size_t before) -> std::optional<std::string> {
             const std::size_t count = recorded[i]["updates"].size();
             for (std::size_t u = std::min(before, count); u-- > 0;) {
@@ -233,7 +233,7 @@ private:
         return at(contact_path(contact), key);
     }
 
-    void work_step(const io::json& step) {
+    void work_step(const formats::json& step) {
         static const std::regex item_pattern(
             R"(^(frames\[(\d+)\])\.(contacts\[\d+\]|phases\[(\d+)\]\.iterations\[(\d+)\]))");
         const std::string first = step["cells"][0]["path"].get<std::string>();
@@ -257,7 +257,7 @@ private:
 
     // --- a prepared contact: steps 1-5 ------------------------------------------------------------------
     void contact_step(const std::string& c, const std::string& step) {
-        const io::json& bodies = k(at(c, "bodies"));
+        const formats::json& bodies = k(at(c, "bodies"));
         if (step == "basis") {
             const Basis b = basis(vec(k(at(c, "normal"))));  // step 1
             put(at(c, "basis"), json_of(b.contact_to_world));
@@ -309,7 +309,7 @@ private:
 
     // Step 5 on a separating velocity, written under `out` (an item).
     DesiredDeltaVelocity desired(const std::string& out, const std::string& settings_item, double separating,
-                                 double restitution, const Vec3& normal, const io::json& bodies,
+                                 double restitution, const Vec3& normal, const formats::json& bodies,
                                  const std::string& refinements_item) {
         VelocityRefinements refinements{};
         refinements.restitution_cutoff = number(at(refinements_item, "restitution_cutoff"));
@@ -328,9 +328,9 @@ private:
 
     // --- a position iteration: the choice, then step 8 -----------------------------------------------------
     void position_step(const std::string& p, const std::string& phase, std::size_t iteration, const std::string& step) {
-        const io::json& chosen = k(at(p, "contact"));
+        const formats::json& chosen = k(at(p, "contact"));
         const std::string c = contact_path(chosen);
-        const io::json& bodies = k(at(c, "bodies"));
+        const formats::json& bodies = k(at(c, "bodies"));
         const Vec3 normal = vec(k(at(c, "normal")));
         const auto chain = [&] {
             return delta_velocity_per_unit_impulse(normal, relative_positions(c, bodies), masses(bodies));
@@ -446,7 +446,7 @@ private:
             const std::string updates = at(p, "updates");
             for (std::size_t u = 0; has(at(at(updates, u), "contact")); ++u) {
                 const std::string update = at(updates, u);
-                const io::json& other = k(at(update, "contact"));
+                const formats::json& other = k(at(update, "contact"));
                 const auto slot = k(at(update, "slot")).get<std::size_t>();
                 const std::size_t moved = bodies[0] == k(at(update, "body")) ? 0 : 1;
                 const std::string o = contact_path(other);
@@ -464,9 +464,9 @@ private:
 
     // --- a velocity iteration: the choice, then steps 4-7 -------------------------------------------------
     void velocity_step(const std::string& v, const std::string& phase, std::size_t iteration, const std::string& step) {
-        const io::json& chosen = k(at(v, "contact"));
+        const formats::json& chosen = k(at(v, "contact"));
         const std::string c = contact_path(chosen);
-        const io::json& bodies = k(at(c, "bodies"));
+        const formats::json& bodies = k(at(c, "bodies"));
         if (step == "contact_velocity") {
             put(at(v, "contact_velocity"),
                 k(current(phase, iteration, std::string::npos, chosen, "contact_velocity", "after")));
@@ -491,7 +491,7 @@ private:
                 put(at(f, "cone_limit"), s.cone_limit);
                 if (s.sliding_direction)
                     put(at(f, "sliding_direction"),
-                        io::json::array({s.sliding_direction->x(), s.sliding_direction->y()}));
+                        formats::json::array({s.sliding_direction->x(), s.sliding_direction->y()}));
                 if (s.sliding_normal_response) put(at(f, "sliding_normal_response"), *s.sliding_normal_response);
             }
             put(at(v, "impulse"), json_of(g.impulse));
@@ -509,7 +509,7 @@ private:
             const std::string updates = at(v, "updates");
             for (std::size_t u = 0; has(at(at(updates, u), "contact")); ++u) {
                 const std::string update = at(updates, u);
-                const io::json& other = k(at(update, "contact"));
+                const formats::json& other = k(at(update, "contact"));
                 const auto slot = k(at(update, "slot")).get<std::size_t>();
                 const std::size_t moved = bodies[0] == k(at(update, "body")) ? 0 : 1;
                 const std::string o = contact_path(other);
@@ -531,17 +531,17 @@ private:
         }
     }
 
-    const io::json& sheet_;
-    const io::json& reference_;
-    std::map<std::string, io::json> known_;
-    std::map<std::string, io::json> out_;  // the step being worked out
+    const formats::json& sheet_;
+    const formats::json& reference_;
+    std::map<std::string, formats::json> known_;
+    std::map<std::string, formats::json> out_;  // the step being worked out
     std::string frame_;
 };
 
 // Works the sheet out by hand and grades the answers as diff grades a student's.
-void check_by_hand(const std::string& what, const io::json& reference, const Worksheet& sheet) {
+void check_by_hand(const std::string& what, const formats::json& reference, const Worksheet& sheet) {
     CAPTURE(what);
-    const io::json document = worksheet_json(sheet);
+    const formats::json document = worksheet_json(sheet);
     HandWorker worker(document, reference);
     const std::vector<std::string> undone = worker.work();
     for (const std::string& step : undone) CHECK_MESSAGE(false, step);
@@ -556,10 +556,10 @@ void check_by_hand(const std::string& what, const io::json& reference, const Wor
 }  // namespace
 
 TEST_CASE("every blank of every shipped lesson's worksheet can be worked out by hand from the inputs it gives") {
-    for (const std::filesystem::path& file : lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons")) {
-        const lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(file));
-        const io::json reference = io::trace_json(lesson.session.trace());
-        const std::vector<inspect::Cursor> places = places_with_cells(lesson.session, lesson.places, &reference);
+    for (const std::filesystem::path& file : course::lesson_files(IMPULSE_SOURCE_DIR "/lessons")) {
+        const course::PreparedLesson lesson = course::prepare_lesson(course::read_lesson(file));
+        const formats::json reference = formats::trace_json(lesson.session.trace());
+        const std::vector<model::Cursor> places = places_with_cells(lesson.session, lesson.places, &reference);
         REQUIRE_FALSE(places.empty());
         check_by_hand(file.filename().string(), reference, make_worksheet(lesson.session, places, &reference));
     }
@@ -568,8 +568,9 @@ TEST_CASE("every blank of every shipped lesson's worksheet can be worked out by 
 TEST_CASE("every blank of every shipped case's default worksheet can be worked out by hand from the inputs it gives") {
     for (const auto& entry : std::filesystem::directory_iterator(IMPULSE_SOURCE_DIR "/scenes/cases")) {
         const std::string name = "cases/" + entry.path().stem().string();
-        const inspect::Session session = test::opened_session(name);
-        check_by_hand(name, io::trace_json(session.trace()), make_worksheet(session, default_places(session.trace())));
+        const model::Session session = test::opened_session(name);
+        check_by_hand(name, formats::trace_json(session.trace()),
+                      make_worksheet(session, default_places(session.trace())));
     }
 }
 
@@ -583,5 +584,6 @@ TEST_CASE("an input is rounded to the shortest decimal within a thousandth of di
     // 12 digits would be 4.2e-13 off, over the 1.4e-13 allowed; 13 digits are 1.7e-14 off.
     CHECK(rounded_for_hand_work(0.1407367320754168) == 0.1407367320754);
     CHECK(rounded_for_hand_work(2.5e-14) == 2.5e-14);  // a small value that is not noise keeps its digits
-    CHECK(rounded_for_hand_work(io::json::array({1.0000000000000002, "x", true})) == io::json::array({1.0, "x", true}));
+    CHECK(rounded_for_hand_work(formats::json::array({1.0000000000000002, "x", true})) ==
+          formats::json::array({1.0, "x", true}));
 }

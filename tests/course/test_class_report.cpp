@@ -6,7 +6,7 @@
 #include "course/diff.hpp"
 #include "course/json_path.hpp"
 #include "course/worksheet.hpp"
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 #include "formats/json_text.hpp"
 #include "formats/trace_json.hpp"
 #include "course/lesson.hpp"
@@ -22,7 +22,7 @@
 #include <sstream>
 
 using namespace impulse;
-using namespace impulse::coursework;
+using namespace impulse::course;
 using impulse::test::CliResult;
 using impulse::test::run_cli;
 using impulse::test::TempDir;
@@ -39,36 +39,37 @@ std::string read_text(const std::filesystem::path& file) {
     return text.str();
 }
 
-std::vector<explain::CsvRow> read_csv(const std::filesystem::path& file) {
-    return explain::parse_csv(read_text(file));
+std::vector<formats::CsvRow> read_csv(const std::filesystem::path& file) {
+    return formats::parse_csv(read_text(file));
 }
 
 // A CSV worksheet of `source` (a lesson or case) as `worksheet` writes it, each cell row's value set by `fill`
 // from the reference's value (return nullopt to leave the row out of the file).
-std::string filled_csv(const std::string& source, const io::json& reference,
-                       const std::function<std::optional<std::string>(const std::string&, const io::json&)>& fill) {
+std::string filled_csv(
+    const std::string& source, const formats::json& reference,
+    const std::function<std::optional<std::string>(const std::string&, const formats::json&)>& fill) {
     TempDir dir;
     const std::string sheet = dir.file("sheet.csv").string();
     REQUIRE(run_cli({"worksheet", source, "--out", sheet}).code == 0);
     std::string text;
-    for (explain::CsvRow& row : read_csv(sheet)) {
+    for (formats::CsvRow& row : read_csv(sheet)) {
         if (row.fields[0] == "cell") {
             const std::optional<std::string> value =
                 fill(row.fields[1], *value_at(reference, parse_json_path(row.fields[1], "")));
             if (!value) continue;
             row.fields[4] = *value;
         }
-        text += explain::csv_row(row.fields);
+        text += formats::csv_row(row.fields);
     }
     return text;
 }
 
-std::optional<std::string> exact(const std::string&, const io::json& value) {
+std::optional<std::string> exact(const std::string&, const formats::json& value) {
     return scalar_text(value);
 }
 
-io::json lesson_reference() {
-    return io::trace_json(lessons::prepare_lesson(lessons::read_lesson(lesson_7)).session.trace());
+formats::json lesson_reference() {
+    return formats::trace_json(course::prepare_lesson(course::read_lesson(lesson_7)).session.trace());
 }
 
 std::size_t lines_with(const std::string& text, const std::string& part) {
@@ -81,7 +82,7 @@ std::size_t lines_with(const std::string& text, const std::string& part) {
 
 TEST_CASE("a lesson is a reference as worksheet runs it: its sheet filled in matches, and a row left out is blank") {
     TempDir dir;
-    const io::json reference = lesson_reference();
+    const formats::json reference = lesson_reference();
     const std::string all = dir.write("all.csv", filled_csv(lesson_7, reference, exact)).string();
     const CliResult r = run_cli({"diff", lesson_7, all});
     CHECK(r.code == 0);
@@ -91,7 +92,7 @@ TEST_CASE("a lesson is a reference as worksheet runs it: its sheet filled in mat
     // A student who deletes the rows they could not do is not graded on fewer cells: the lesson's sheet asks for
     // them, so they count as blank.
     const std::string part = dir.write("part.csv", filled_csv(lesson_7, reference,
-                                                              [](const std::string& path, const io::json& value) {
+                                                              [](const std::string& path, const formats::json& value) {
                                                                   return path.find(".updates[") == std::string::npos
                                                                              ? std::optional(scalar_text(value))
                                                                              : std::nullopt;
@@ -99,7 +100,7 @@ TEST_CASE("a lesson is a reference as worksheet runs it: its sheet filled in mat
                                  .string();
     const CliResult p = run_cli({"diff", lesson_7, part, "--format", "json"});
     CHECK(p.code == 1);
-    const io::json report = io::parse_json_text(p.out);
+    const formats::json report = formats::parse_json_text(p.out);
     CHECK(report["blank"] == 14);  // two updates: delta (3), after (3), desired_delta_velocity_after (1)
     CHECK(report["matched"] == 53);
     CHECK(report["score_percent"].get<double>() == doctest::Approx(100.0 * 53 / 67));
@@ -114,23 +115,23 @@ TEST_CASE("a lesson is a reference as worksheet runs it: its sheet filled in mat
 
 TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feedback page per student") {
     TempDir dir;
-    const io::json reference = lesson_reference();
+    const formats::json reference = lesson_reference();
     std::filesystem::create_directories(dir.file("class/drafts"));
     // Ada: every number right, written to six significant figures as a student would.
-    dir.write("class/ada.csv", filled_csv(lesson_7, reference, [](const std::string&, const io::json& v) {
+    dir.write("class/ada.csv", filled_csv(lesson_7, reference, [](const std::string&, const formats::json& v) {
                   if (!v.is_number_float()) return std::optional(scalar_text(v));
                   char text[32];
                   std::snprintf(text, sizeof text, "%.6g", v.get<double>());
                   return std::optional<std::string>(text);
               }));
     // Ben: d without its angular part, so g = Δv / d and everything after it are off.
-    dir.write("class/ben.csv", filled_csv(lesson_7, reference, [&](const std::string& path, const io::json& v) {
+    dir.write("class/ben.csv", filled_csv(lesson_7, reference, [&](const std::string& path, const formats::json& v) {
                   if (path == "frames[0].contacts[0].delta_velocity_per_unit_impulse")
                       return std::optional<std::string>("1.33333");
                   return std::optional(scalar_text(v));
               }));
     // Cy: the last step left blank.
-    dir.write("class/cy.csv", filled_csv(lesson_7, reference, [](const std::string& path, const io::json& v) {
+    dir.write("class/cy.csv", filled_csv(lesson_7, reference, [](const std::string& path, const formats::json& v) {
                   return std::optional<std::string>(path.find(".updates[") == std::string::npos ? scalar_text(v) : "");
               }));
     dir.write("class/dee.xlsx", "PK\x03\x04 a spreadsheet in its own format");
@@ -147,7 +148,7 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
     CHECK(r.out.find("class report written to " + out + ": summary.csv, cells.csv and 4 feedback pages in feedback/") !=
           std::string::npos);
 
-    const std::vector<explain::CsvRow> summary = read_csv(dir.file("report/summary.csv"));
+    const std::vector<formats::CsvRow> summary = read_csv(dir.file("report/summary.csv"));
     REQUIRE(summary.size() == 5);
     CHECK(summary[1].fields == std::vector<std::string>{dir.file("class/ada.csv").string(), "worksheet", "67", "67",
                                                         "0", "0", "100.0", "", "", ""});
@@ -163,11 +164,11 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
     CHECK(summary[4].fields[9].starts_with("not a worksheet or trace"));
 
     // cells.csv: a row for every number of every sheet read, one for the file that was not.
-    const std::vector<explain::CsvRow> cells = read_csv(dir.file("report/cells.csv"));
+    const std::vector<formats::CsvRow> cells = read_csv(dir.file("report/cells.csv"));
     CHECK(cells[0].fields == std::vector<std::string>{"file", "place", "quantity", "unit", "expected", "found",
                                                       "relative_error", "verdict", "first_divergence", "path"});
     CHECK(cells.size() == 1 + 3 * 67 + 1);
-    const auto ben_d = std::find_if(cells.begin(), cells.end(), [&](const explain::CsvRow& row) {
+    const auto ben_d = std::find_if(cells.begin(), cells.end(), [&](const formats::CsvRow& row) {
         return row.fields[0] == dir.file("class/ben.csv").string() &&
                row.fields[9] == "frames[0].contacts[0].delta_velocity_per_unit_impulse";
     });
@@ -199,9 +200,9 @@ TEST_CASE("a class report is written as a set: summary.csv, cells.csv and a feed
 TEST_CASE("the class summary in the terminal shows each file's wrong cells in the worksheet's words") {
     TempDir dir;
     std::filesystem::create_directory(dir.file("class"));
-    const io::json reference = io::trace_json(test::opened("cases/ruler"));
+    const formats::json reference = formats::trace_json(test::opened("cases/ruler"));
     dir.write("class/ada.csv", filled_csv(ruler, reference, exact));
-    dir.write("class/ben.csv", filled_csv(ruler, reference, [](const std::string& path, const io::json& v) {
+    dir.write("class/ben.csv", filled_csv(ruler, reference, [](const std::string& path, const formats::json& v) {
                   return std::optional<std::string>(
                       path == "frames[0].phases[1].iterations[0].impulse_world[1]" ? "0.15" : scalar_text(v));
               }));
@@ -220,13 +221,13 @@ TEST_CASE("the class summary in the terminal shows each file's wrong cells in th
 TEST_CASE("a trace handed in with worksheets gets its row, its score over every value it compared") {
     TempDir dir;
     std::filesystem::create_directory(dir.file("class"));
-    io::json trace = io::trace_json(test::opened("cases/ruler"));
+    formats::json trace = formats::trace_json(test::opened("cases/ruler"));
     trace["frames"][0]["phases"][1]["iterations"][0]["impulse_world"][1] = 0.15;
-    dir.write("class/engine.json", io::format_json(trace));
-    dir.write("class/sheet.csv", filled_csv(ruler, io::trace_json(test::opened("cases/ruler")), exact));
+    dir.write("class/engine.json", formats::format_json(trace));
+    dir.write("class/sheet.csv", filled_csv(ruler, formats::trace_json(test::opened("cases/ruler")), exact));
     const std::string out = dir.file("report").string();
     CHECK(run_cli({"diff", ruler, dir.file("class").string(), "--out", out}).code == 1);
-    const std::vector<explain::CsvRow> summary = read_csv(dir.file("report/summary.csv"));
+    const std::vector<formats::CsvRow> summary = read_csv(dir.file("report/summary.csv"));
     REQUIRE(summary.size() == 3);
     // 299 values match and one differs: 99.7 %.
     CHECK(summary[1].fields == std::vector<std::string>{dir.file("class/engine.json").string(), "trace", "300", "299",
@@ -235,8 +236,8 @@ TEST_CASE("a trace handed in with worksheets gets its row, its score over every 
                                                         "impulse_world[1]",
                                                         "frames[0].phases[1].iterations[0].impulse_world[1]", ""});
     // A trace's rows in cells.csv are its findings only.
-    const std::vector<explain::CsvRow> cells = read_csv(dir.file("report/cells.csv"));
-    CHECK(std::count_if(cells.begin(), cells.end(), [&](const explain::CsvRow& row) {
+    const std::vector<formats::CsvRow> cells = read_csv(dir.file("report/cells.csv"));
+    CHECK(std::count_if(cells.begin(), cells.end(), [&](const formats::CsvRow& row) {
               return row.fields[0] == dir.file("class/engine.json").string();
           }) == 1);
 }
@@ -274,7 +275,7 @@ TEST_CASE(
 TEST_CASE("a class report that cannot be written whole leaves the one before it as it was") {
     TempDir dir;
     std::filesystem::create_directory(dir.file("class"));
-    const io::json reference = io::trace_json(test::opened("cases/ruler"));
+    const formats::json reference = formats::trace_json(test::opened("cases/ruler"));
     dir.write("class/ada.csv", filled_csv(ruler, reference, exact));
     dir.write("class/ben.csv", filled_csv(ruler, reference, exact));
     const std::string out = dir.file("report").string();
@@ -282,7 +283,7 @@ TEST_CASE("a class report that cannot be written whole leaves the one before it 
     const std::string summary = read_text(dir.file("report/summary.csv"));
 
     // Ben hands in again, wrong this time; but his page cannot be replaced (a folder stands in its place).
-    dir.write("class/ben.csv", filled_csv(ruler, reference, [](const std::string& path, const io::json& v) {
+    dir.write("class/ben.csv", filled_csv(ruler, reference, [](const std::string& path, const formats::json& v) {
                   return std::optional<std::string>(
                       path == "frames[0].phases[1].iterations[0].impulse_world[1]" ? "0.15" : scalar_text(v));
               }));

@@ -2,7 +2,7 @@
 // student's engine would) graded cell by cell, a folder of submissions summarised one row per file, and
 // bad input refused in one line.
 
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 #include "course/diff.hpp"
 #include "course/json_path.hpp"
 #include "course/worksheet.hpp"
@@ -21,7 +21,7 @@
 #include <sstream>
 
 using namespace impulse;
-using namespace impulse::coursework;
+using namespace impulse::course;
 using impulse::test::CliResult;
 using impulse::test::run_cli;
 using impulse::test::TempDir;
@@ -38,67 +38,67 @@ std::string read_text(const std::filesystem::path& file) {
     return text.str();
 }
 
-io::json read_json(const std::filesystem::path& file) {
-    return io::parse_json_text(read_text(file));
+formats::json read_json(const std::filesystem::path& file) {
+    return formats::parse_json_text(read_text(file));
 }
 
-std::string write_json(const TempDir& dir, const std::string& name, const io::json& document) {
-    return dir.write(name, io::format_json(document)).string();
+std::string write_json(const TempDir& dir, const std::string& name, const formats::json& document) {
+    return dir.write(name, formats::format_json(document)).string();
 }
 
 // The reference trace of a case, as `resolve --trace` writes it.
-io::json reference_trace(const std::string& file) {
-    return io::trace_json(test::opened(file));
+formats::json reference_trace(const std::string& file) {
+    return formats::trace_json(test::opened(file));
 }
 
 // A trace file edited by `edit`.
-std::string edited_trace(const TempDir& dir, const std::string& name, const std::function<void(io::json&)>& edit) {
-    io::json trace = reference_trace("cases/ruler");
+std::string edited_trace(const TempDir& dir, const std::string& name, const std::function<void(formats::json&)>& edit) {
+    formats::json trace = reference_trace("cases/ruler");
     edit(trace);
     return write_json(dir, name, trace);
 }
 
 // A JSON report of diff REFERENCE OTHER.
-io::json diff_json(const std::string& reference, const std::string& other, int expected_code) {
+formats::json diff_json(const std::string& reference, const std::string& other, int expected_code) {
     const CliResult r = run_cli({"diff", reference, other, "--format", "json"});
     CHECK(r.code == expected_code);
     CHECK(r.err.empty());
-    return io::parse_json_text(r.out);
+    return formats::parse_json_text(r.out);
 }
 
 // A worksheet of the case with every cell filled from the reference trace, as a student's engine would fill it.
-io::json filled_worksheet(const std::string& file) {
-    const io::json trace = reference_trace(file);
+formats::json filled_worksheet(const std::string& file) {
+    const formats::json trace = reference_trace(file);
     TempDir dir;
     const std::string sheet = dir.file("sheet.json").string();
     REQUIRE(run_cli({"worksheet", IMPULSE_SOURCE_DIR "/scenes/" + file + ".json", "--out", sheet}).code == 0);
-    io::json document = read_json(sheet);
-    for (io::json& step : document["steps"])
-        for (io::json& cell : step["cells"])
+    formats::json document = read_json(sheet);
+    for (formats::json& step : document["steps"])
+        for (formats::json& cell : step["cells"])
             cell["value"] = *value_at(trace, parse_json_path(cell["path"].get<std::string>(), ""));
     return document;
 }
 
 // The same as CSV: each cell row's value written from the reference.
 std::string filled_csv(const std::string& file, const std::vector<std::string>& steps) {
-    const io::json trace = reference_trace(file);
+    const formats::json trace = reference_trace(file);
     TempDir dir;
     const std::string sheet = dir.file("sheet.csv").string();
     std::vector<std::string> args{"worksheet", IMPULSE_SOURCE_DIR "/scenes/" + file + ".json", "--out", sheet};
     for (const std::string& s : steps) args.insert(args.end(), {"--steps", s});
     REQUIRE(run_cli(args).code == 0);
     std::string text;
-    for (explain::CsvRow& row : explain::parse_csv(read_text(sheet))) {
+    for (formats::CsvRow& row : formats::parse_csv(read_text(sheet))) {
         if (row.fields[0] == "cell") row.fields[4] = scalar_text(*value_at(trace, parse_json_path(row.fields[1], "")));
-        text += explain::csv_row(row.fields);
+        text += formats::csv_row(row.fields);
     }
     return text;
 }
 
 // The cell of a filled worksheet at `path` (a whole cell), for editing.
-io::json& cell_at(io::json& sheet, const std::string& path) {
-    for (io::json& step : sheet["steps"])
-        for (io::json& cell : step["cells"])
+formats::json& cell_at(formats::json& sheet, const std::string& path) {
+    for (formats::json& step : sheet["steps"])
+        for (formats::json& cell : step["cells"])
             if (cell["path"] == path) return cell["value"];
     FAIL("no cell " << path);
     return sheet;
@@ -108,12 +108,12 @@ io::json& cell_at(io::json& sheet, const std::string& path) {
 
 TEST_CASE("diff of a trace with itself matches everything and exits 0") {
     TempDir dir;
-    const std::string trace = edited_trace(dir, "same.json", [](io::json&) {});
+    const std::string trace = edited_trace(dir, "same.json", [](formats::json&) {});
     const CliResult r = run_cli({"diff", ruler, trace});
     CHECK(r.code == 0);
     CHECK(r.err.empty());
     CHECK(r.out.find("0 mismatched, 0 blank: all match") != std::string::npos);
-    const io::json report = diff_json(trace, trace, 0);
+    const formats::json report = diff_json(trace, trace, 0);
     CHECK(report["mismatched"] == 0);
     CHECK(report["matched"].get<int>() > 200);
     CHECK(report["findings"].empty());
@@ -123,13 +123,13 @@ TEST_CASE("diff of a trace with itself matches everything and exits 0") {
 TEST_CASE("one perturbed value is reported at exactly its path as the first divergence") {
     TempDir dir;
     // g_y = 0.1407367320754168 N·s in the ruler's velocity iteration; 0.15 is off by 6.58 %.
-    const std::string other = edited_trace(dir, "perturbed.json", [](io::json& t) {
+    const std::string other = edited_trace(dir, "perturbed.json", [](formats::json& t) {
         t["frames"][0]["phases"][1]["iterations"][0]["impulse_world"][1] = 0.15;
     });
-    const io::json report = diff_json(ruler, other, 1);
+    const formats::json report = diff_json(ruler, other, 1);
     CHECK(report["mismatched"] == 1);
     REQUIRE(report["findings"].size() == 1);
-    const io::json& f = report["findings"][0];
+    const formats::json& f = report["findings"][0];
     CHECK(f["kind"] == "value");
     CHECK(f["path"] == "frames[0].phases[1].iterations[0].impulse_world[1]");
     CHECK(f["expected"].get<double>() == 0.1407367320754168);
@@ -157,17 +157,17 @@ TEST_CASE("one perturbed value is reported at exactly its path as the first dive
 
 TEST_CASE("a difference within the tolerance matches, and the tolerance is a flag") {
     TempDir dir;
-    const std::string other = edited_trace(dir, "close.json", [](io::json& t) {
+    const std::string other = edited_trace(dir, "close.json", [](formats::json& t) {
         t["frames"][0]["contacts"][0]["desired_delta_velocity"] = 4.5 * (1 + 1e-11);
     });
     CHECK(diff_json(ruler, other, 0)["mismatched"] == 0);
     CHECK(run_cli({"diff", ruler, other, "--rtol", "0", "--atol", "0"}).code == 1);
     // An expected 0 is matched by rounding noise below atol, and its relative error is the absolute one.
-    const std::string noisy = edited_trace(dir, "noisy.json", [](io::json& t) {
+    const std::string noisy = edited_trace(dir, "noisy.json", [](formats::json& t) {
         t["frames"][0]["contacts"][0]["contact_velocity"][1] = 1e-13;
         t["frames"][0]["contacts"][0]["contact_velocity"][2] = 1e-6;
     });
-    const io::json report = diff_json(ruler, noisy, 1);
+    const formats::json report = diff_json(ruler, noisy, 1);
     REQUIRE(report["findings"].size() == 1);
     CHECK(report["findings"][0]["path"] == "frames[0].contacts[0].contact_velocity[2]");
     CHECK(report["findings"][0]["relative_error"].get<double>() == 1e-6);
@@ -175,18 +175,18 @@ TEST_CASE("a difference within the tolerance matches, and the tolerance is a fla
 
 TEST_CASE("a missing iteration and an extra contact are reported as such, once each") {
     TempDir dir;
-    const std::string other = edited_trace(dir, "reshaped.json", [](io::json& t) {
-        io::json& frame = t["frames"][0];
-        frame["phases"][1]["iterations"] = io::json::array();
+    const std::string other = edited_trace(dir, "reshaped.json", [](formats::json& t) {
+        formats::json& frame = t["frames"][0];
+        frame["phases"][1]["iterations"] = formats::json::array();
         frame["phases"][1]["iterations_used"] = 0;
-        io::json extra = frame["contacts"][0];
+        formats::json extra = frame["contacts"][0];
         extra["contact"] = 1;
         frame["contacts"].push_back(extra);
         frame["contact_count"] = 2;
     });
-    const io::json report = diff_json(ruler, other, 1);
+    const formats::json report = diff_json(ruler, other, 1);
     std::vector<std::pair<std::string, std::string>> found;
-    for (const io::json& f : report["findings"]) found.emplace_back(f["kind"], f["path"]);
+    for (const formats::json& f : report["findings"]) found.emplace_back(f["kind"], f["path"]);
     CHECK(found == std::vector<std::pair<std::string, std::string>>{
                        {"value", "frames[0].contact_count"},
                        {"extra", "frames[0].contacts[1]"},
@@ -201,9 +201,9 @@ TEST_CASE("a changed setting is reported as a setting, before anything it change
     TempDir dir;
     const std::string chapter = dir.file("chapter.json").string();
     REQUIRE(run_cli({"resolve", ruler, "--set", "restitution_cutoff=0.3", "--trace", chapter}).code == 0);
-    const io::json report = diff_json(ruler, chapter, 1);
+    const formats::json report = diff_json(ruler, chapter, 1);
     REQUIRE(report["findings"].size() >= 1);
-    const io::json& first = report["findings"][0];
+    const formats::json& first = report["findings"][0];
     CHECK(first["kind"] == "setting");
     CHECK(first["path"] == "settings.restitution_cutoff");
     CHECK(first["expected"] == 0.25);
@@ -214,10 +214,11 @@ TEST_CASE("a changed setting is reported as a setting, before anything it change
 
 TEST_CASE("a malformed file or a bad flag gets one line, exit code 2 and no report") {
     TempDir dir;
-    const std::string good = edited_trace(dir, "good.json", [](io::json&) {});
+    const std::string good = edited_trace(dir, "good.json", [](formats::json&) {});
     const std::string broken = dir.write("broken.json", "{\"format\": \"impulse-lab-trace\",").string();
-    const std::string wrong = edited_trace(
-        dir, "wrong.json", [](io::json& t) { t["frames"][0]["phases"][1]["iterations"][0]["impulse_world"] = "up"; });
+    const std::string wrong = edited_trace(dir, "wrong.json", [](formats::json& t) {
+        t["frames"][0]["phases"][1]["iterations"][0]["impulse_world"] = "up";
+    });
     const std::string sheet = dir.write("sheet.json", R"({"format": "impulse-lab-worksheet", "version": 1,
         "steps": [{"cells": [{"path": "frames[0].basis[", "value": 1}]}]})")
                                   .string();
@@ -261,7 +262,7 @@ TEST_CASE("a worksheet filled from the reference matches every cell and writes t
     const std::string report = dir.file("report.json").string();
     const CliResult r = run_cli({"diff", ruler, sheet, "--format", "json", "--out", report});
     CHECK(r.code == 0);
-    const io::json written = read_json(report);
+    const formats::json written = read_json(report);
     CHECK(r.out == read_text(report));
     CHECK(written["other_kind"] == "worksheet");
     CHECK(written["matched"] == 89);  // every number of the ruler's 47 cells
@@ -273,23 +274,23 @@ TEST_CASE("a worksheet filled from the reference matches every cell and writes t
 
 TEST_CASE("one wrong cell of a worksheet is reported alone, and a blank one as blank") {
     TempDir dir;
-    io::json document = filled_worksheet("cases/sliding_box");
+    formats::json document = filled_worksheet("cases/sliding_box");
     // Two of the sliding box's values: the first impulse's normal part, and body 0's rotation change.
     cell_at(document, "frames[0].phases[1].iterations[0].impulse")[0] = 0.5;
     cell_at(document, "frames[0].phases[1].iterations[0].rotation_change[0]")[2] = nullptr;
     const std::string sheet = write_json(dir, "student.json", document);
-    const io::json report = diff_json(cases + "sliding_box.json", sheet, 1);
+    const formats::json report = diff_json(cases + "sliding_box.json", sheet, 1);
     CHECK(report["mismatched"] == 1);
     CHECK(report["blank"] == 1);
     REQUIRE(report["findings"].size() == 2);
-    const io::json& wrong = report["findings"][0];
+    const formats::json& wrong = report["findings"][0];
     CHECK(wrong["kind"] == "value");
     CHECK(wrong["path"] == "frames[0].phases[1].iterations[0].impulse[0]");
     CHECK(wrong["expected"].get<double>() == doctest::Approx(0.45291949485020394));
     CHECK(wrong["found"] == 0.5);
     CHECK(wrong["equation"] == "(14.3)");
     CHECK(wrong["first_divergence"] == true);
-    const io::json& blank = report["findings"][1];
+    const formats::json& blank = report["findings"][1];
     CHECK(blank["kind"] == "blank");
     CHECK(blank["path"] == "frames[0].phases[1].iterations[0].rotation_change[0][2]");
     CHECK(blank["first_divergence"] == false);
@@ -299,7 +300,7 @@ TEST_CASE("a CSV worksheet is graded the same way, one row per number") {
     TempDir dir;
     const std::vector<std::string> steps{"phase=velocity,iteration=0,step=impulse", "phase=position,iteration=0"};
     const std::string perfect = dir.write("perfect.csv", filled_csv("cases/ruler", steps)).string();
-    const io::json all = diff_json(ruler, perfect, 0);
+    const formats::json all = diff_json(ruler, perfect, 0);
     CHECK(all["mismatched"] == 0);
     CHECK(all["matched"].get<int>() > 10);
 
@@ -313,7 +314,7 @@ TEST_CASE("a CSV worksheet is graded the same way, one row per number") {
     const std::size_t blank_at = text.find(blank_row);
     REQUIRE(blank_at != std::string::npos);
     text.erase(blank_at + blank_row.size(), text.find(',', blank_at + blank_row.size()) - blank_at - blank_row.size());
-    const io::json report = diff_json(ruler, dir.write("student.csv", text).string(), 1);
+    const formats::json report = diff_json(ruler, dir.write("student.csv", text).string(), 1);
     REQUIRE(report["findings"].size() == 2);
     // In trace order: the position phase ran first.
     CHECK(report["findings"][0]["kind"] == "blank");
@@ -327,9 +328,9 @@ TEST_CASE("a CSV worksheet is graded the same way, one row per number") {
 TEST_CASE("a folder of filled worksheets is summarised one row per file, a malformed one included") {
     TempDir dir;
     std::filesystem::create_directory(dir.file("class"));
-    io::json perfect = filled_worksheet("cases/ruler");
+    formats::json perfect = filled_worksheet("cases/ruler");
     write_json(dir, "class/ada.json", perfect);
-    io::json wrong = perfect;
+    formats::json wrong = perfect;
     cell_at(wrong, "frames[0].phases[1].iterations[0].impulse_world")[1] = 0.15;
     write_json(dir, "class/ben.json", wrong);
     dir.write("class/cy.json", "{\"format\": \"impulse-lab-worksheet\", \"version\": 2, \"steps\": []}");
@@ -338,7 +339,7 @@ TEST_CASE("a folder of filled worksheets is summarised one row per file, a malfo
     CHECK(r.code == 1);
     const std::string cy = dir.file("class/cy.json").string();
     CHECK(r.err == "impulse-lab: " + cy + ": version: must be 1, got 2\n");
-    const std::vector<explain::CsvRow> rows = explain::parse_csv(r.out);
+    const std::vector<formats::CsvRow> rows = formats::parse_csv(r.out);
     REQUIRE(rows.size() == 4);
     CHECK(rows[0].fields == std::vector<std::string>{"file", "kind", "cells", "matched", "mismatched", "blank",
                                                      "score_percent", "first_divergence", "first_divergence_path",
@@ -356,7 +357,7 @@ TEST_CASE("a folder of filled worksheets is summarised one row per file, a malfo
 TEST_CASE("several files that all match exit 0 with a text summary") {
     TempDir dir;
     const std::string a = write_json(dir, "a.json", filled_worksheet("cases/ruler"));
-    const std::string b = edited_trace(dir, "b.json", [](io::json&) {});
+    const std::string b = edited_trace(dir, "b.json", [](formats::json&) {});
     const CliResult r = run_cli({"diff", ruler, a, b});
     CHECK(r.code == 0);
     CHECK(r.err.empty());
@@ -373,12 +374,12 @@ TEST_CASE("a CSV answer that is not a number is graded wrong, and a row cut shor
                                         "cell,frames[0].contacts[0].desired_delta_velocity\n"
                                         "cell,frames[0].contacts[3].penetration,0.02\n")
                                   .string();
-    const io::json report = diff_json(ruler, sheet, 1);
+    const formats::json report = diff_json(ruler, sheet, 1);
     CHECK(report["matched"] == 2);
     CHECK(report["mismatched"] == 2);
     CHECK(report["blank"] == 1);
     std::vector<std::pair<std::string, std::string>> found;
-    for (const io::json& f : report["findings"]) found.emplace_back(f["kind"], f["path"]);
+    for (const formats::json& f : report["findings"]) found.emplace_back(f["kind"], f["path"]);
     CHECK(found == std::vector<std::pair<std::string, std::string>>{
                        {"value", "frames[0].contacts[0].separating_velocity"},
                        {"blank", "frames[0].contacts[0].desired_delta_velocity"},
@@ -392,10 +393,10 @@ TEST_CASE("a velocity iteration's wrong contact velocity is the first divergence
     // The iteration's record writes desired_delta_velocity before contact_velocity; the derivation computes
     // them the other way round, and so must the first divergence be chosen.
     TempDir dir;
-    io::json document = filled_worksheet("cases/ruler");
+    formats::json document = filled_worksheet("cases/ruler");
     cell_at(document, "frames[0].phases[1].iterations[0].contact_velocity")[0] = -2.9;
     cell_at(document, "frames[0].phases[1].iterations[0].desired_delta_velocity") = 4.35;  // −(1 + 0.5)·(−2.9)
-    const io::json report = diff_json(ruler, write_json(dir, "student.json", document), 1);
+    const formats::json report = diff_json(ruler, write_json(dir, "student.json", document), 1);
     REQUIRE(report["findings"].size() == 2);
     CHECK(report["findings"][0]["path"] == "frames[0].phases[1].iterations[0].contact_velocity[0]");
     CHECK(report["findings"][0]["first_divergence"] == true);

@@ -1,5 +1,5 @@
 // Every input the fuzz targets found a bug with (tests/fuzz_regressions/<target>/, docs/fuzzing.md) goes
-// through the same loader again: it must load or be rejected as bad input (io::InputError), nothing else.
+// through the same loader again: it must load or be rejected as bad input (formats::InputError), nothing else.
 // Under the sanitize preset this also checks that none of them crashes, leaks or reads out of bounds again.
 
 #include "fuzz_loaders.hpp"
@@ -36,7 +36,7 @@ TEST_CASE("every fuzz regression input loads or is rejected as bad input") {
             const std::string text = file_text(file);
             try {
                 loader.load(text);
-            } catch (const impulse::io::InputError& e) {
+            } catch (const impulse::formats::InputError& e) {
                 // Bad input, said in one line: where and what.
                 CHECK(!e.problem().empty());
             } catch (const std::exception& e) {
@@ -68,7 +68,7 @@ std::string rejection(std::string_view target, const std::string& name) {
         if (loader.target != target) continue;
         try {
             loader.load(file_text(file));
-        } catch (const impulse::io::InputError& e) {
+        } catch (const impulse::formats::InputError& e) {
             return e.where() + ": " + e.problem();
         }
     }

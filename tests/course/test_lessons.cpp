@@ -2,7 +2,7 @@
 // text names what it shows; malformed lesson files are rejected with one line naming the place; progress
 // survives a corrupt file.
 
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "formats/input_error.hpp"
 #include "course/lesson.hpp"
 #include "course/lesson_run.hpp"
@@ -42,8 +42,8 @@ std::string lesson_error(const std::string& text, const std::string& name = "01-
     TempDir dir;
     const auto file = dir.write(name, text);
     try {
-        lessons::prepare_lesson(lessons::read_lesson(file));
-    } catch (const cli::FileError& e) {
+        course::prepare_lesson(course::read_lesson(file));
+    } catch (const formats::FileError& e) {
         return e.where + ": " + e.problem;
     }
     return "no error";
@@ -60,50 +60,50 @@ bool mentions(const std::string& text, const std::string& word) {
 TEST_CASE(
     "the course has thirteen lessons that run with the engine, name what each step shows, and take the engine's "
     "answers") {
-    const std::vector<std::filesystem::path> files = lessons::lesson_files(course);
+    const std::vector<std::filesystem::path> files = course::lesson_files(course);
     REQUIRE(files.size() == 13);
     for (std::size_t n = 0; n < files.size(); ++n) {
         const std::string name = files[n].filename().string();
         INFO(name);
-        const lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(files[n]));
+        const course::PreparedLesson prepared = course::prepare_lesson(course::read_lesson(files[n]));
         CHECK(prepared.lesson.number == static_cast<int>(n) + 1);
         CHECK(prepared.places.size() == prepared.lesson.steps.size());
         CHECK(prepared.lesson.steps.size() >= 3);
         int questions = 0;
         for (std::size_t i = 0; i < prepared.places.size(); ++i) {
-            const lessons::Step& step = prepared.lesson.steps[i];
+            const course::Step& step = prepared.lesson.steps[i];
             INFO("step " << step.id);
 
             // Its text names, in backticks, the step or a quantity its place shows.
-            const inspect::Cursor& place = prepared.places[i];
+            const model::Cursor& place = prepared.places[i];
             const explain::StepTable table =
-                inspect::step_tables(prepared.session.trace(), place)[static_cast<std::size_t>(place.step)];
+                model::step_tables(prepared.session.trace(), place)[static_cast<std::size_t>(place.step)];
             bool named = mentions(step.text, table.step);
             for (const explain::Row& r : table.rows)
                 named = named || mentions(step.text, r.quantity.substr(0, r.quantity.find('[')));
             if (step.question)
-                named = named || mentions(step.text, lessons::question_quantity(*step.question, place.stage));
+                named = named || mentions(step.text, course::question_quantity(*step.question, place.stage));
             CHECK(named);
 
             // Its question is right at the engine's value and wrong well away from it.
             if (!step.question) continue;
             ++questions;
-            const lessons::Question& q = *step.question;
-            const lessons::Answer& a = *prepared.answers[i];
-            if (q.kind == lessons::Question::Kind::predict) {
+            const course::Question& q = *step.question;
+            const course::Answer& a = *prepared.answers[i];
+            if (q.kind == course::Question::Kind::predict) {
                 const double value = a.value.get<double>();
                 char exact[64];
                 std::snprintf(exact, sizeof exact, "%.17g", value);
-                CHECK(lessons::check_answer(q, a, exact).correct);
+                CHECK(course::check_answer(q, a, exact).correct);
                 // Off by ten tolerances (or by 1 when the value is 0 and only a relative tolerance is given).
                 const double allowed =
                     std::max(q.tolerance.relative.value_or(0) * std::abs(value), q.tolerance.absolute.value_or(0));
                 char wrong[64];
                 std::snprintf(wrong, sizeof wrong, "%.17g", value + (allowed > 0 ? 10 * allowed : 1.0));
-                CHECK_FALSE(lessons::check_answer(q, a, wrong).correct);
+                CHECK_FALSE(course::check_answer(q, a, wrong).correct);
             } else {
                 for (std::size_t o = 0; o < q.options.size(); ++o)
-                    CHECK(lessons::check_answer(q, a, std::to_string(o + 1)).correct ==
+                    CHECK(course::check_answer(q, a, std::to_string(o + 1)).correct ==
                           (static_cast<int>(o) == a.correct_option));
             }
         }
@@ -120,7 +120,7 @@ TEST_CASE("a lesson written with a step's name from before trace format 2 opens 
     const auto file = dir.write("01-test.md", lesson_text(steps,
                                                           "## closing\nThe `delta_velocity_per_unit_impulse`.\n\n"
                                                           "## desired\nThe `desired_delta_velocity`.\n"));
-    const lessons::PreparedLesson p = lessons::prepare_lesson(lessons::read_lesson(file));
+    const course::PreparedLesson p = course::prepare_lesson(course::read_lesson(file));
     CHECK(p.lesson.steps[0].at == "phase=preparation,contact=0,step=delta_velocity_per_unit_impulse");
     REQUIRE(p.lesson.notes.size() == 1);
     CHECK(p.lesson.notes[0] ==
@@ -130,18 +130,18 @@ TEST_CASE("a lesson written with a step's name from before trace format 2 opens 
 TEST_CASE("a predict answer is right within its tolerance and says how far off it was") {
     TempDir dir;
     const auto file = dir.write("01-test.md", lesson_text(good_steps, good_sections));
-    const lessons::PreparedLesson p = lessons::prepare_lesson(lessons::read_lesson(file));
+    const course::PreparedLesson p = course::prepare_lesson(course::read_lesson(file));
     // The ball falls at 5 m/s with c = 0.5: Δv = (1 + 0.5) 5 = 7.5 m/s.
     REQUIRE(p.answers[1]->value.get<double>() == doctest::Approx(7.5));
     CHECK(p.answers[1]->shown == "7.5 m/s");
-    const lessons::Question& q = *p.lesson.steps[1].question;
-    CHECK(lessons::check_answer(q, *p.answers[1], "7.6").correct);  // 1.3 % off, 2 % allowed
-    const lessons::Verdict wrong = lessons::check_answer(q, *p.answers[1], "5");
+    const course::Question& q = *p.lesson.steps[1].question;
+    CHECK(course::check_answer(q, *p.answers[1], "7.6").correct);  // 1.3 % off, 2 % allowed
+    const course::AnswerVerdict wrong = course::check_answer(q, *p.answers[1], "5");
     CHECK_FALSE(wrong.correct);
     CHECK(wrong.feedback == "not quite: 33.3 % too low; try again, or skip to see the engine's value");
-    CHECK(lessons::check_answer(q, *p.answers[1], "7.6").feedback ==
+    CHECK(course::check_answer(q, *p.answers[1], "7.6").feedback ==
           "right: the engine has 7.5 m/s (you were 1.33 % off)");
-    CHECK_THROWS_AS(lessons::check_answer(q, *p.answers[1], "seven"), io::InputError);
+    CHECK_THROWS_AS(course::check_answer(q, *p.answers[1], "seven"), formats::InputError);
 }
 
 TEST_CASE("malformed lessons are rejected with the place of the problem") {
@@ -198,13 +198,13 @@ TEST_CASE("malformed lessons are rejected with the place of the problem") {
 TEST_CASE("progress survives a round trip and a corrupt file is kept aside and reported") {
     TempDir dir;
     const auto file = dir.file("cfg/impulse-lab/progress.json");
-    CHECK(lessons::load_progress(file).progress.lessons.empty());  // none yet
+    CHECK(course::load_progress(file).progress.lessons.empty());  // none yet
 
-    lessons::Progress progress;
+    course::Progress progress;
     progress.lessons["01-test"].last_step = 2;
     progress.lessons["01-test"].answers["desired"] = {"7.6", true, 2};
-    lessons::save_progress(file, progress);
-    const lessons::LoadedProgress back = lessons::load_progress(file);
+    course::save_progress(file, progress);
+    const course::LoadedProgress back = course::load_progress(file);
     CHECK(back.note.empty());
     CHECK(back.progress.lessons.at("01-test").last_step == 2);
     CHECK(back.progress.lessons.at("01-test").answers.at("desired").answer == "7.6");
@@ -212,7 +212,7 @@ TEST_CASE("progress survives a round trip and a corrupt file is kept aside and r
 
     dir.write("cfg/impulse-lab/progress.json",
               "{\"format\": \"impulse-lab-progress\", \"version\": 1, \"lessons\": {\"x\": 3}");
-    const lessons::LoadedProgress corrupt = lessons::load_progress(file);
+    const course::LoadedProgress corrupt = course::load_progress(file);
     CHECK(corrupt.progress.lessons.empty());
     CHECK(corrupt.note.find("is unreadable") != std::string::npos);
     CHECK(corrupt.note.find("kept as progress.json.corrupt-") != std::string::npos);
@@ -229,55 +229,55 @@ TEST_CASE(
     // As the previous version wrote it: no "skipped".
     const auto file = dir.write("progress.json", R"({"format": "impulse-lab-progress", "version": 1, "lessons": {
         "01-test": {"last_step": 1, "answers": {"desired": {"answer": "7.5", "correct": true, "tries": 1}}}}})");
-    const lessons::LoadedProgress old = lessons::load_progress(file);
+    const course::LoadedProgress old = course::load_progress(file);
     REQUIRE(old.note.empty());
-    const lessons::AnswerRecord& desired = old.progress.lessons.at("01-test").answers.at("desired");
+    const course::AnswerRecord& desired = old.progress.lessons.at("01-test").answers.at("desired");
     CHECK(desired.correct);
     CHECK_FALSE(desired.skipped);
 
-    lessons::Progress progress = old.progress;
-    lessons::LessonProgress& p = progress.lessons.at("01-test");
+    course::Progress progress = old.progress;
+    course::LessonProgress& p = progress.lessons.at("01-test");
     p.answers["retried"] = {"3", true, 3, false};
     p.answers["given-up"] = {"", false, 2, true};
     p.answers["still-open"] = {"9", false, 1, false};
-    lessons::save_progress(file, progress);
-    const lessons::Progress back = lessons::load_progress(file).progress;
+    course::save_progress(file, progress);
+    const course::Progress back = course::load_progress(file).progress;
     CHECK(back.lessons.at("01-test").answers.at("given-up").skipped);
-    const lessons::Tally t = lessons::tally(back.lessons.at("01-test"));
+    const course::Tally t = course::tally(back.lessons.at("01-test"));
     CHECK(t.first_try == 1);
     CHECK(t.after_retries == 1);
     CHECK(t.skipped == 1);
     CHECK(t.open == 1);
-    CHECK(lessons::tally_text(t) ==
+    CHECK(course::tally_text(t) ==
           "1 right at the first try, 1 right after retries, 1 skipped, 1 tried, not yet right");
     // A "skipped" that is not true or false is an error naming it.
     dir.write("bad.json", R"({"format": "impulse-lab-progress", "version": 1, "lessons": {"x": {"last_step": 0,
         "answers": {"a": {"answer": "", "correct": false, "tries": 0, "skipped": "yes"}}}}})");
-    CHECK_THROWS_WITH_AS(lessons::read_progress_text(cli::read_input_file(dir.file("bad.json").string())),
-                         doctest::Contains("skipped"), io::InputError);
+    CHECK_THROWS_WITH_AS(course::read_progress_text(formats::read_input_file(dir.file("bad.json").string())),
+                         doctest::Contains("skipped"), formats::InputError);
 }
 
 TEST_CASE("a lesson run resumes each question as it stood, and a skip is saved as skipped") {
     TempDir dir;
     const auto file = dir.write("01-test.md", lesson_text(good_steps, good_sections));
-    const lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(file));
+    const course::PreparedLesson prepared = course::prepare_lesson(course::read_lesson(file));
     const auto saved = dir.file("cfg/progress.json");
-    lessons::Progress progress;
+    course::Progress progress;
     {
-        lessons::LessonRun run(prepared, &progress, saved);
+        course::LessonRun run(prepared, &progress, saved);
         run.go_to(1);
         CHECK(run.waiting());
         CHECK_FALSE(run.answer("6").correct);
         run.skip();
-        CHECK(run.state(1) == lessons::QuestionState::skipped);
+        CHECK(run.state(1) == course::QuestionState::skipped);
         CHECK(run.feedback(1) == "skipped: the engine's answer is 7.5 m/s");
     }
-    lessons::Progress reloaded = lessons::load_progress(saved).progress;
-    lessons::LessonRun again(prepared, &reloaded, saved);
+    course::Progress reloaded = course::load_progress(saved).progress;
+    course::LessonRun again(prepared, &reloaded, saved);
     CHECK(again.step() == 1);
-    CHECK(again.state(1) == lessons::QuestionState::skipped);
+    CHECK(again.state(1) == course::QuestionState::skipped);
     CHECK(again.open() == std::vector<bool>{false, false});
-    const lessons::AnswerRecord& r = reloaded.lessons.at("01-test").answers.at("desired");
+    const course::AnswerRecord& r = reloaded.lessons.at("01-test").answers.at("desired");
     CHECK(r.skipped);
     CHECK(r.tries == 1);
 }
@@ -285,7 +285,7 @@ TEST_CASE("a lesson run resumes each question as it stood, and a skip is saved a
 TEST_CASE("a progress file larger than any we write is kept aside unread, and progress starts afresh") {
     TempDir dir;
     const auto file = dir.write("progress.json", std::string((4u << 20) + 1, ' '));
-    const lessons::LoadedProgress loaded = lessons::load_progress(file);
+    const course::LoadedProgress loaded = course::load_progress(file);
     CHECK(loaded.progress.lessons.empty());
     CHECK(loaded.note.find("is unreadable (is 4194305 bytes, over the limit of 4 MiB") != std::string::npos);
     CHECK(loaded.note.find("kept as progress.json.corrupt-") != std::string::npos);
@@ -298,9 +298,9 @@ TEST_CASE("impulse-lab lesson lists the lessons with the progress kept in the co
     std::filesystem::create_directories(lessons_dir);
     std::ofstream(lessons_dir / "01-test.md") << lesson_text(good_steps, good_sections);
     ::setenv("XDG_CONFIG_HOME", dir.file("cfg").c_str(), 1);
-    lessons::Progress progress;
+    course::Progress progress;
     progress.lessons["01-test"].answers["desired"] = {"7.6", true, 1};
-    lessons::save_progress(*lessons::progress_file(), progress);
+    course::save_progress(*course::progress_file(), progress);
 
     const CliResult r = run_cli({"lesson", "--lessons", lessons_dir.string()});
     CHECK(r.code == 0);
@@ -334,23 +334,23 @@ namespace impulse::test {
 TEST_CASE("an open question hides its quantity until the student answers it") {
     TempDir dir;
     const auto file = dir.write("01-test.md", lesson_text(good_steps, good_sections));
-    const lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(file));
+    const course::PreparedLesson prepared = course::prepare_lesson(course::read_lesson(file));
     const Trace& trace = prepared.session.trace();
-    const auto reaches = lessons::question_reaches(prepared, trace);
-    lessons::LessonRun run(prepared, nullptr, std::nullopt);
+    const auto reaches = course::question_reaches(prepared, trace);
+    course::LessonRun run(prepared, nullptr, std::nullopt);
     // The desired Δv row of the velocity iteration (step 1's place), and of the contact as prepared.
     explain::Row desired;
     desired.key = "desired_delta_velocity";
-    const inspect::Cursor iteration = prepared.places[1], preparation{0, inspect::Stage::preparation, 0, 4};
-    const lessons::Mask open(reaches, run.open(), trace);
+    const model::Cursor iteration = prepared.places[1], preparation{0, model::Stage::preparation, 0, 4};
+    const course::Mask open(reaches, run.open(), trace);
     CHECK(open.hides_row(iteration, desired));
     CHECK(open.hides_row(preparation, desired));
     CHECK(open.hides_value(preparation, 0, "desired_delta_velocity", 7.5));
     run.go_to(1);
     CHECK_FALSE(run.answer("5").correct);  // a wrong answer leaves it hidden
-    CHECK(lessons::Mask(reaches, run.open(), trace).hides_row(iteration, desired));
+    CHECK(course::Mask(reaches, run.open(), trace).hides_row(iteration, desired));
     CHECK(run.answer("7.5").correct);
-    CHECK_FALSE(lessons::Mask(reaches, run.open(), trace).hides_row(iteration, desired));
+    CHECK_FALSE(course::Mask(reaches, run.open(), trace).hides_row(iteration, desired));
 }
 
 }  // namespace impulse::test

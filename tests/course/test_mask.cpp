@@ -19,15 +19,14 @@ namespace impulse::test {
 
 namespace {
 
-using inspect::Cursor;
-using inspect::Stage;
+using model::Cursor;
+using model::Stage;
 
 const std::filesystem::path course = IMPULSE_SOURCE_DIR "/lessons";
 
-lessons::PreparedLesson lesson_number(int n) {
-    for (const std::filesystem::path& file : lessons::lesson_files(course))
-        if (std::atoi(file.filename().string().c_str()) == n)
-            return lessons::prepare_lesson(lessons::read_lesson(file));
+course::PreparedLesson lesson_number(int n) {
+    for (const std::filesystem::path& file : course::lesson_files(course))
+        if (std::atoi(file.filename().string().c_str()) == n) return course::prepare_lesson(course::read_lesson(file));
     FAIL("no lesson " << n);
     throw std::logic_error("unreachable");
 }
@@ -54,8 +53,8 @@ std::vector<double> numbers_in(const std::string& text) {
 std::vector<Cursor> all_items(const Trace& trace) {
     std::vector<Cursor> items;
     for (int f = 0; f < static_cast<int>(trace.frames.size()); ++f)
-        for (Stage stage : inspect::stages(trace.frames[static_cast<std::size_t>(f)]))
-            for (int i = 0; i < inspect::item_count(trace.frames[static_cast<std::size_t>(f)], stage); ++i)
+        for (Stage stage : model::stages(trace.frames[static_cast<std::size_t>(f)]))
+            for (int i = 0; i < model::item_count(trace.frames[static_cast<std::size_t>(f)], stage); ++i)
                 items.push_back(Cursor{f, stage, i, 0});
     return items;
 }
@@ -118,18 +117,18 @@ Cells all_cells(const Trace& trace, const std::vector<Cursor>& places) {
         });
         if (!near_a_place && item.stage != Stage::preparation && n % tables_every != 0) continue;
         const std::string at = "frame " + std::to_string(trace.frames[static_cast<std::size_t>(item.frame)].frame) +
-                               " · " + std::string(inspect::stage_name(item.stage)) + " item " +
+                               " · " + std::string(model::stage_name(item.stage)) + " item " +
                                std::to_string(item.item);
-        for (const explain::StepTable& table : inspect::step_tables(trace, item))
+        for (const explain::StepTable& table : model::step_tables(trace, item))
             for (const explain::Row& row : table.rows) cells.rows.push_back({item, at + " · " + row.quantity, row});
         if (!near_a_place && n % every != 0) continue;
-        for (const inspect::ContactRow& c : inspect::contact_rows(trace, item)) {
+        for (const model::ContactRow& c : model::contact_rows(trace, item)) {
             const std::string where = at + " · contacts list, contact " + std::to_string(c.contact);
             cells.contacts.push_back({item, where, c.contact, "penetration", c.penetration});
             cells.contacts.push_back({item, where, c.contact, "desired_delta_velocity", c.desired_delta_velocity});
             cells.contacts.push_back({item, where, c.contact, "impulse_world", c.impulse_so_far.norm()});
         }
-        const inspect::BodiesAtCursor bodies = inspect::bodies_at(trace, item);
+        const model::BodiesAtCursor bodies = model::bodies_at(trace, item);
         for (std::size_t b = 0; b < bodies.after.size(); ++b)
             for (const bool after : {false, true})
                 cells.bodies.push_back({item,
@@ -141,7 +140,7 @@ Cells all_cells(const Trace& trace, const std::vector<Cursor>& places) {
 
 // Calls `visit(where, key, unit, value)` for every number the panels show through the mask.
 template <typename Visit>
-void for_each_shown(const Cells& cells, const lessons::Mask& mask, Visit visit) {
+void for_each_shown(const Cells& cells, const course::Mask& mask, Visit visit) {
     for (const Cells::TableRow& r : cells.rows) {
         if (mask.hides_row(r.item, r.row)) continue;
         const std::string_view unit = explain::annotation(r.row.key).unit;
@@ -164,26 +163,26 @@ void for_each_shown(const Cells& cells, const lessons::Mask& mask, Visit visit) 
 }  // namespace
 
 TEST_CASE("at every step of every lesson no value shown anywhere equals an open question's answer, but its inputs") {
-    for (const std::filesystem::path& file : lessons::lesson_files(course)) {
-        const lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(file));
+    for (const std::filesystem::path& file : course::lesson_files(course)) {
+        const course::PreparedLesson prepared = course::prepare_lesson(course::read_lesson(file));
         const Trace& trace = prepared.session.trace();
-        const auto reaches = lessons::question_reaches(prepared, trace);
+        const auto reaches = course::question_reaches(prepared, trace);
         const Cells cells = all_cells(trace, prepared.places);
-        lessons::LessonRun run(prepared, nullptr, std::nullopt);
+        course::LessonRun run(prepared, nullptr, std::nullopt);
         for (int k = 0; k < run.step_count(); ++k) {
             run.answered_before(k);
-            const lessons::Mask mask(reaches, run.open(), trace);
+            const course::Mask mask(reaches, run.open(), trace);
             struct Open {
                 int step;
-                const lessons::Answer* answer;
+                const course::Answer* answer;
                 double value, allowed;
                 std::set<std::string> inputs;
             };
             std::vector<Open> open;
             for (int q = k; q < run.step_count(); ++q) {
-                const lessons::Step& step = prepared.lesson.steps[static_cast<std::size_t>(q)];
-                if (!step.question || step.question->kind != lessons::Question::Kind::predict) continue;
-                const lessons::Answer& answer = *prepared.answers[static_cast<std::size_t>(q)];
+                const course::Step& step = prepared.lesson.steps[static_cast<std::size_t>(q)];
+                if (!step.question || step.question->kind != course::Question::Kind::predict) continue;
+                const course::Answer& answer = *prepared.answers[static_cast<std::size_t>(q)];
                 const double value = answer.value.get<double>();
                 const double allowed = std::max(step.question->tolerance.relative.value_or(0) * std::abs(value),
                                                 step.question->tolerance.absolute.value_or(0));
@@ -207,10 +206,10 @@ TEST_CASE("at every step of every lesson no value shown anywhere equals an open 
 }
 
 TEST_CASE("lesson 1's giveaways stay hidden until their questions are answered") {
-    const lessons::PreparedLesson prepared = lesson_number(1);
+    const course::PreparedLesson prepared = lesson_number(1);
     const Trace& trace = prepared.session.trace();
-    const auto reaches = lessons::question_reaches(prepared, trace);
-    lessons::LessonRun run(prepared, nullptr, std::nullopt);
+    const auto reaches = course::question_reaches(prepared, trace);
+    course::LessonRun run(prepared, nullptr, std::nullopt);
     const Cursor preparation{0, Stage::preparation, 0, 0}, iteration{0, Stage::velocity, 0, 0};
     const auto row = [](const char* key) {
         explain::Row r;
@@ -219,7 +218,7 @@ TEST_CASE("lesson 1's giveaways stay hidden until their questions are answered")
     };
     // At step 1 the contacts list showed Δv 7.5 (step 5's answer); three presses of → showed the impulse
     // 15 N·s (step 6's) and the ball's velocity after (step 8's).
-    const lessons::Mask first(reaches, run.open(), trace);
+    const course::Mask first(reaches, run.open(), trace);
     CHECK(first.hides_value(preparation, 0, "desired_delta_velocity", 7.5));
     CHECK(first.hides_row(iteration, row("impulse")));
     CHECK(first.hides_row(iteration, row("impulse_world")));
@@ -228,24 +227,24 @@ TEST_CASE("lesson 1's giveaways stay hidden until their questions are answered")
     CHECK_FALSE(first.hides_body(iteration, 0, false));  // the ball as it comes in is what the lesson starts from
     // At step 5, with Δv open and d answered: g = Δv / d would give Δv away in one multiplication.
     run.answered_before(4);
-    const lessons::Mask fifth(reaches, run.open(), trace);
+    const course::Mask fifth(reaches, run.open(), trace);
     CHECK(fifth.hides_row(preparation, row("desired_delta_velocity")));
     CHECK_FALSE(fifth.hides_row(preparation, row("delta_velocity_per_unit_impulse")));
     CHECK(fifth.hides_row(iteration, row("impulse")));
     CHECK_FALSE(fifth.hides_row(preparation, row("separating_velocity")));  // what Δv is computed from
     // All answered: nothing hidden.
     run.answered_before(run.step_count());
-    const lessons::Mask none(reaches, run.open(), trace);
+    const course::Mask none(reaches, run.open(), trace);
     CHECK_FALSE(none.hides_row(iteration, row("impulse")));
     CHECK_FALSE(none.hides_body(iteration, 0, true));
 }
 
 TEST_CASE("lesson 3's first question hides the normal its swap reversed, and its bodies' order") {
-    const lessons::PreparedLesson prepared = lesson_number(3);
+    const course::PreparedLesson prepared = lesson_number(3);
     const Trace& trace = prepared.session.trace();
-    const auto reaches = lessons::question_reaches(prepared, trace);
-    lessons::LessonRun run(prepared, nullptr, std::nullopt);
-    const lessons::Mask mask(reaches, run.open(), trace);
+    const auto reaches = course::question_reaches(prepared, trace);
+    course::LessonRun run(prepared, nullptr, std::nullopt);
+    const course::Mask mask(reaches, run.open(), trace);
     explain::Row normal;
     normal.key = "normal";
     CHECK(mask.hides_row(Cursor{0, Stage::preparation, 0, 0}, normal));
@@ -254,9 +253,9 @@ TEST_CASE("lesson 3's first question hides the normal its swap reversed, and its
 }
 
 TEST_CASE("lesson 3's last answer, the same bounce at every contact, is hidden at the other two contacts too") {
-    const lessons::PreparedLesson prepared = lesson_number(3);
+    const course::PreparedLesson prepared = lesson_number(3);
     const Trace& trace = prepared.session.trace();
-    const auto reaches = lessons::question_reaches(prepared, trace);
+    const auto reaches = course::question_reaches(prepared, trace);
     const std::size_t last = prepared.lesson.steps.size() - 1;
     REQUIRE(reaches[last]);
     // The three contacts (light 0, ruler 1, dumbbell 2) all leave at −c·v_s = 1 m/s.
@@ -265,7 +264,7 @@ TEST_CASE("lesson 3's last answer, the same bounce at every contact, is hidden a
     update.key = "velocity_update";
     std::vector<bool> open(prepared.lesson.steps.size(), false);
     open[last] = true;
-    const lessons::Mask mask(reaches, open, trace);
+    const course::Mask mask(reaches, open, trace);
     CHECK(mask.hides_row(Cursor{0, Stage::velocity, 0, 0}, update));
 }
 

@@ -46,8 +46,8 @@ struct Course {
     std::map<std::string, std::optional<std::string>> env() const {
         return {{"XDG_CONFIG_HOME", config.string()}, {"DISPLAY", std::nullopt}, {"WAYLAND_DISPLAY", std::nullopt}};
     }
-    lessons::LessonProgress progress() const {
-        return lessons::load_progress(config / "impulse-lab" / "progress.json").progress.lessons.at("01-ball");
+    course::LessonProgress progress() const {
+        return course::load_progress(config / "impulse-lab" / "progress.json").progress.lessons.at("01-ball");
     }
 };
 
@@ -81,12 +81,12 @@ TEST_CASE("a lesson in a terminal hides the answer, says how far off a wrong one
     t.expect("Lesson 1: 1 right after retries, 1 skipped.");
     CHECK(t.wait() == 0);
 
-    const lessons::LessonProgress p = course.progress();
+    const course::LessonProgress p = course.progress();
     CHECK(p.answers.at("desired").correct);
     CHECK(p.answers.at("desired").tries == 2);  // "seven" was not an answer
     CHECK(p.answers.at("impulse").skipped);
     CHECK_FALSE(p.answers.at("impulse").correct);
-    const lessons::Tally tally = lessons::tally(p);
+    const course::Tally tally = course::tally(p);
     CHECK(tally.first_try == 0);
     CHECK(tally.after_retries == 1);
     CHECK(tally.skipped == 1);
@@ -116,7 +116,7 @@ TEST_CASE("a student who quits a lesson in a terminal midway comes back to the s
     t.send("");
     t.expect("Lesson 1: 2 right at the first try.");
     CHECK(t.wait() == 0);
-    CHECK(lessons::tally(course.progress()).first_try == 2);
+    CHECK(course::tally(course.progress()).first_try == 2);
 }
 
 // Every shipped lesson taken to its end in a terminal, each question answered with the engine's value: before
@@ -125,12 +125,12 @@ TEST_CASE("a student who quits a lesson in a terminal midway comes back to the s
 // seconds; the whole course well under a minute.
 TEST_CASE("every shipped lesson can be taken to its end in a terminal without seeing an answer before answering") {
     const std::filesystem::path course = IMPULSE_SOURCE_DIR "/lessons";
-    const std::vector<std::filesystem::path> files = lessons::lesson_files(course);
+    const std::vector<std::filesystem::path> files = course::lesson_files(course);
     REQUIRE(files.size() == 13);
     for (const std::filesystem::path& file : files) {
         INFO(file.filename().string());
-        const lessons::PreparedLesson prepared = lessons::prepare_lesson(lessons::read_lesson(file));
-        const std::vector<lessons::Step>& steps = prepared.lesson.steps;
+        const course::PreparedLesson prepared = course::prepare_lesson(course::read_lesson(file));
+        const std::vector<course::Step>& steps = prepared.lesson.steps;
         TempDir config;
         Terminal t({program, "lesson", std::to_string(prepared.lesson.number), "--text", "--lessons", course.string()},
                    {{"XDG_CONFIG_HOME", config.file("cfg").string()},
@@ -139,10 +139,10 @@ TEST_CASE("every shipped lesson can be taken to its end in a terminal without se
         for (std::size_t k = 0; k < steps.size(); ++k) {
             t.expect("Step " + std::to_string(k + 1) + " of " + std::to_string(steps.size()));
             if (const auto& q = steps[k].question) {
-                const lessons::Answer& answer = *prepared.answers[k];
+                const course::Answer& answer = *prepared.answers[k];
                 const std::string shown = t.expect("Your answer");
                 std::string typed;
-                if (q->kind == lessons::Question::Kind::predict) {
+                if (q->kind == course::Question::Kind::predict) {
                     const double value = answer.value.get<double>();
                     const double allowed = std::max(q->tolerance.relative.value_or(0) * std::abs(value),
                                                     q->tolerance.absolute.value_or(0));
@@ -163,7 +163,7 @@ TEST_CASE("every shipped lesson can be taken to its end in a terminal without se
             t.expect(k + 1 == steps.size() ? "That was the last step" : "Enter: next step");
             t.send("");
         }
-        const int questions = lessons::question_count(prepared.lesson);
+        const int questions = course::question_count(prepared.lesson);
         t.expect("Lesson " + std::to_string(prepared.lesson.number) + ": " + std::to_string(questions) +
                  " right at the first try.");
         CHECK(t.wait() == 0);

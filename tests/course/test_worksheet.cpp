@@ -2,7 +2,7 @@
 // shipped cases write under every method), the inputs and cells of a step, the places --steps names, the
 // files `impulse-lab worksheet` writes, and the paths and CSV they are written in.
 
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 #include "course/json_path.hpp"
 #include "course/step_keys.hpp"
 #include "course/worksheet.hpp"
@@ -24,7 +24,7 @@
 #include <sstream>
 
 using namespace impulse;
-using namespace impulse::coursework;
+using namespace impulse::course;
 using impulse::test::opened;
 using impulse::test::opened_session;
 
@@ -40,14 +40,14 @@ std::string read_text(const std::filesystem::path& file) {
 }
 
 // Every key of an item object in StepKey's form: nested keys joined by '.', "[]" after an array of objects.
-void collect_keys(const io::json& object, const std::string& prefix, std::set<std::string>& keys) {
+void collect_keys(const formats::json& object, const std::string& prefix, std::set<std::string>& keys) {
     for (auto it = object.begin(); it != object.end(); ++it) {
         const std::string key = prefix.empty() ? it.key() : prefix + "." + it.key();
-        const io::json& value = it.value();
+        const formats::json& value = it.value();
         if (value.is_object()) {
             collect_keys(value, key, keys);
         } else if (value.is_array() && !value.empty() && value[0].is_object()) {
-            for (const io::json& element : value) collect_keys(element, key + "[]", keys);
+            for (const formats::json& element : value) collect_keys(element, key + "[]", keys);
         } else {
             keys.insert(key);
         }
@@ -61,18 +61,18 @@ std::vector<Trace> every_kind_of_trace() {
     for (const char* name :
          {"ruler", "sphere_ground", "three_objects", "two_body_oblique", "sliding_box", "deep_corner"})
         for (const char* method : {"nonlinear_projection", "linear_projection", "velocity_based", "relaxation"}) {
-            inspect::OpenOptions options;
+            model::OpenOptions options;
             options.settings = {std::string("position_method=") + method};
             traces.push_back(opened(std::string("cases/") + name, options));
             options.preset = "chapter";
             traces.push_back(opened(std::string("cases/") + name, options));
         }
-    inspect::OpenOptions scene;
+    model::OpenOptions scene;
     scene.frames = 3;
     traces.push_back(opened("box_tipping", scene));
     // The sweeping methods' words: sweeps, accumulated totals, the split impulse's push, Baumgarte's bias.
     for (const char* preset : {"sweep", "pgs", "pgs_split", "soft_step"}) {
-        inspect::OpenOptions options;
+        model::OpenOptions options;
         options.preset = preset;
         traces.push_back(opened("cases/tilted_box", options));
         options.settings = {"baumgarte=true"};
@@ -96,11 +96,11 @@ bool has(const std::vector<std::string>& names, const std::string& name) {
 TEST_CASE("every key a trace writes into a contact or an iteration belongs to a derivation step") {
     std::set<std::string> seen[3];
     for (const Trace& trace : every_kind_of_trace()) {
-        const io::json document = io::trace_json(trace);
-        for (const io::json& frame : document["frames"]) {
-            for (const io::json& contact : frame["contacts"]) collect_keys(contact, "", seen[0]);
-            for (const io::json& phase : frame["phases"])
-                for (const io::json& iteration : phase["iterations"])
+        const formats::json document = formats::trace_json(trace);
+        for (const formats::json& frame : document["frames"]) {
+            for (const formats::json& contact : frame["contacts"]) collect_keys(contact, "", seen[0]);
+            for (const formats::json& phase : frame["phases"])
+                for (const formats::json& iteration : phase["iterations"])
                     collect_keys(iteration, "", seen[phase["phase"] == "position" ? 1 : 2]);
         }
     }
@@ -124,9 +124,9 @@ TEST_CASE("every key a trace writes into a contact or an iteration belongs to a 
 TEST_CASE("every step of the inspector's tables has its cells in the table, and every key says what it means") {
     std::set<std::string> steps[3];
     for (const Trace& trace : every_kind_of_trace())
-        for (std::optional<inspect::Cursor> c = inspect::first_cursor(trace); c; c = inspect::next_step(trace, *c)) {
-            const auto tables = inspect::step_tables(trace, *c);
-            const int kind = c->stage == inspect::Stage::preparation ? 0 : c->stage == inspect::Stage::position ? 1 : 2;
+        for (std::optional<model::Cursor> c = model::first_cursor(trace); c; c = model::next_step(trace, *c)) {
+            const auto tables = model::step_tables(trace, *c);
+            const int kind = c->stage == model::Stage::preparation ? 0 : c->stage == model::Stage::position ? 1 : 2;
             steps[kind].insert(tables[static_cast<std::size_t>(c->step)].step);
         }
     for (const StepKey& key : step_keys()) {
@@ -150,8 +150,8 @@ TEST_CASE("every step of the inspector's tables has its cells in the table, and 
 }
 
 TEST_CASE("a worksheet step's cells are the values it computes and its inputs what it starts from") {
-    const inspect::Session session = opened_session("cases/ruler");
-    const std::vector<inspect::Cursor> places =
+    const model::Session session = opened_session("cases/ruler");
+    const std::vector<model::Cursor> places =
         places_from_specs(session.trace(), {"phase=velocity,iteration=0,step=impulse"}, "--steps");
     REQUIRE(places.size() == 1);
     const Worksheet sheet = make_worksheet(session, places);
@@ -183,7 +183,7 @@ TEST_CASE("a worksheet step's cells are the values it computes and its inputs wh
 }
 
 TEST_CASE("a value asked for on the worksheet is not given away as another step's input") {
-    const inspect::Session session = opened_session("cases/ruler");
+    const model::Session session = opened_session("cases/ruler");
     const Worksheet sheet = make_worksheet(session, default_places(session.trace()));
     std::set<std::string> cells;
     for (const WorksheetStep& s : sheet.steps)
@@ -196,10 +196,10 @@ TEST_CASE("a value asked for on the worksheet is not given away as another step'
 
 TEST_CASE("the default worksheet has every step with something to fill in of the first frame, in trace order") {
     const Trace trace = opened("cases/ruler");
-    const std::vector<inspect::Cursor> places = default_places(trace);
+    const std::vector<model::Cursor> places = default_places(trace);
     std::vector<std::string> names;
-    for (const inspect::Cursor& c : places)
-        names.push_back(inspect::step_tables(trace, c)[static_cast<std::size_t>(c.step)].step);
+    for (const model::Cursor& c : places)
+        names.push_back(model::step_tables(trace, c)[static_cast<std::size_t>(c.step)].step);
     // The ruler: one contact, one position iteration, one velocity iteration (whose choice is all given).
     CHECK(names == std::vector<std::string>{"basis", "relative_position", "delta_velocity_per_unit_impulse",
                                             "contact_velocity", "desired_delta_velocity", "choice",
@@ -207,17 +207,17 @@ TEST_CASE("the default worksheet has every step with something to fill in of the
                                             "contact_velocity", "desired_delta_velocity", "impulse", "velocity_change",
                                             "updates"});
     CHECK(std::is_sorted(places.begin(), places.end(),
-                         [](const inspect::Cursor& a, const inspect::Cursor& b) { return a.frame < b.frame; }));
+                         [](const model::Cursor& a, const model::Cursor& b) { return a.frame < b.frame; }));
 }
 
 TEST_CASE("a --steps place without step= takes every step of its item that computes something") {
     const Trace trace = opened("cases/sliding_box");
     const auto all = places_from_specs(trace, {"phase=preparation,contact=2"}, "--steps");
     CHECK(all.size() == 5);
-    for (const inspect::Cursor& c : all) CHECK(inspect::contact_at(trace, c) == 2);
+    for (const model::Cursor& c : all) CHECK(model::contact_at(trace, c) == 2);
     const auto one = places_from_specs(trace, {"phase=velocity,iteration=1,step=impulse_world"}, "--steps");
     REQUIRE(one.size() == 1);
-    CHECK(inspect::step_tables(trace, one[0])[static_cast<std::size_t>(one[0].step)].step == "impulse");
+    CHECK(model::step_tables(trace, one[0])[static_cast<std::size_t>(one[0].step)].step == "impulse");
 }
 
 TEST_CASE("a step that computes nothing cannot be put on a worksheet") {
@@ -225,14 +225,14 @@ TEST_CASE("a step that computes nothing cannot be put on a worksheet") {
     try {
         places_from_specs(trace, {"phase=velocity,iteration=0,step=choice"}, "--steps");
         FAIL("expected an error");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         CHECK(e.where() == "--steps");
         CHECK(e.problem() ==
               "\"phase=velocity,iteration=0,step=choice\": step choice computes nothing to fill in "
               "(steps that do here: contact_velocity, desired_delta_velocity, impulse, "
               "velocity_change, updates)");
     }
-    CHECK_THROWS_AS(places_from_specs(trace, {"phase=velocity,iteration=7"}, "--steps"), io::InputError);
+    CHECK_THROWS_AS(places_from_specs(trace, {"phase=velocity,iteration=7"}, "--steps"), formats::InputError);
 }
 
 TEST_CASE("worksheet writes JSON that its schema accepts, with every cell blank") {
@@ -242,16 +242,16 @@ TEST_CASE("worksheet writes JSON that its schema accepts, with every cell blank"
     CHECK(r.code == 0);
     CHECK(r.err.empty());
     CHECK(r.out == "worksheet written to " + out + ": 15 steps, 47 cells (89 values to fill in), 189 inputs given\n");
-    const io::json sheet = io::parse_json_text(read_text(out));
+    const formats::json sheet = formats::parse_json_text(read_text(out));
     CHECK_NOTHROW(course::validate_worksheet_document(sheet));
     CHECK(sheet["format"] == "impulse-lab-worksheet");
     CHECK(sheet["settings"]["preset"] == "book");
     CHECK(sheet["reference"]["run"]["mode"] == "resolve");
-    for (const io::json& step : sheet["steps"])
-        for (const io::json& cell : step["cells"])
-            for_each_scalar(cell["value"], "", [](const std::string&, const io::json& v) { CHECK(v.is_null()); });
+    for (const formats::json& step : sheet["steps"])
+        for (const formats::json& cell : step["cells"])
+            for_each_scalar(cell["value"], "", [](const std::string&, const formats::json& v) { CHECK(v.is_null()); });
     // A vector cell keeps its shape.
-    CHECK(sheet["steps"][1]["cells"][0]["value"] == io::json::array({nullptr, nullptr, nullptr}));
+    CHECK(sheet["steps"][1]["cells"][0]["value"] == formats::json::array({nullptr, nullptr, nullptr}));
 }
 
 TEST_CASE("worksheet writes CSV with one row per number, each input once") {
@@ -261,9 +261,9 @@ TEST_CASE("worksheet writes CSV with one row per number, each input once") {
                                              "phase=velocity,iteration=0,step=impulse", "--steps",
                                              "phase=velocity,iteration=0,step=velocity_change"});
     CHECK(r.code == 0);
-    const std::vector<explain::CsvRow> rows = explain::parse_csv(read_text(out));
+    const std::vector<formats::CsvRow> rows = formats::parse_csv(read_text(out));
     REQUIRE(rows.size() > 1);
-    CHECK(explain::csv_row(rows[0].fields) == std::string(worksheet_csv_header) + "\n");
+    CHECK(formats::csv_row(rows[0].fields) == std::string(worksheet_csv_header) + "\n");
     std::size_t cells = 0;
     std::set<std::string> paths;
     for (auto row = rows.begin() + 1; row != rows.end(); ++row) {
@@ -285,13 +285,13 @@ TEST_CASE("worksheet writes CSV with one row per number, each input once") {
 
 TEST_CASE("a worksheet's reference re-runs to the trace it was made from") {
     for (const char* name : {"cases/ruler", "cases/sliding_box", "box_tipping"}) {
-        inspect::OpenOptions options;
+        model::OpenOptions options;
         if (std::string(name) == "box_tipping") {
             // Three frames simulated, the second recorded: the run's length is what must be kept.
             options.frames = 3;
             options.record = {"frames=1..1"};
         }
-        const inspect::Session session = opened_session(name, options);
+        const model::Session session = opened_session(name, options);
         const Worksheet sheet = make_worksheet(session, default_places(session.trace()));
         CAPTURE(name);
         CHECK(rerun_reference(worksheet_json(sheet)) == session.trace());
@@ -328,7 +328,7 @@ TEST_CASE("worksheet refuses a bad --out or --steps in one line, exit code 2 and
 }
 
 TEST_CASE("a path reads back as json_path_child and json_path_index wrote it") {
-    using io::json_path_child, io::json_path_index;
+    using formats::json_path_child, formats::json_path_index;
     const std::string path = json_path_index(
         json_path_child(
             json_path_index(json_path_child(json_path_index(json_path_child(json_path_index("frames", 0), "phases"), 1),
@@ -344,9 +344,9 @@ TEST_CASE("a path reads back as json_path_child and json_path_index wrote it") {
     CHECK(std::get<std::size_t>(tokens[7]) == 1);
     for (const char* bad : {"", "frames[", "frames[x]", ".frames", "frames..x", "frames[0]x", "frames.", "a b"}) {
         CAPTURE(bad);
-        CHECK_THROWS_AS(parse_json_path(bad, "here"), io::InputError);
+        CHECK_THROWS_AS(parse_json_path(bad, "here"), formats::InputError);
     }
-    const io::json document = io::json::parse(R"({"a": {"b": [1, [2, 3]]}, "c": 4})");
+    const formats::json document = formats::json::parse(R"({"a": {"b": [1, [2, 3]]}, "c": 4})");
     CHECK(*value_at(document, parse_json_path("a.b[1][0]", "")) == 2);
     CHECK(value_at(document, parse_json_path("a.b[2]", "")) == nullptr);
     CHECK(value_at(document, parse_json_path("c.d", "")) == nullptr);
@@ -357,19 +357,19 @@ TEST_CASE("a path reads back as json_path_child and json_path_index wrote it") {
 
 TEST_CASE("CSV fields round trip through quoting, CRLF line ends and a byte-order mark") {
     const std::vector<std::string> fields{"plain", "a, b", "say \"hi\"", "two\nlines", ""};
-    const std::string text = "\xEF\xBB\xBF" + explain::csv_row(fields) + "x,y\r\n\r\nz\n";
-    const std::vector<explain::CsvRow> rows = explain::parse_csv(text);
+    const std::string text = "\xEF\xBB\xBF" + formats::csv_row(fields) + "x,y\r\n\r\nz\n";
+    const std::vector<formats::CsvRow> rows = formats::parse_csv(text);
     REQUIRE(rows.size() == 3);
     CHECK(rows[0].fields == fields);
     CHECK(rows[1].line == 3);
     CHECK(rows[1].fields == std::vector<std::string>{"x", "y"});
     CHECK(rows[2].line == 5);
-    CHECK_THROWS_AS(explain::parse_csv("a,\"open\n"), io::InputError);
-    CHECK_THROWS_AS(explain::parse_csv("\"closed\"x\n"), io::InputError);
+    CHECK_THROWS_AS(formats::parse_csv("a,\"open\n"), formats::InputError);
+    CHECK_THROWS_AS(formats::parse_csv("\"closed\"x\n"), formats::InputError);
 }
 
 TEST_CASE("velocity_from_acceleration is given what it needs: the frame's duration and each body's last acceleration") {
-    const inspect::Session session = opened_session("cases/desired_velocity");
+    const model::Session session = opened_session("cases/desired_velocity");
     const Worksheet sheet = make_worksheet(
         session,
         places_from_specs(session.trace(), {"phase=preparation,contact=2,step=desired_delta_velocity"}, "--steps"));
@@ -378,23 +378,23 @@ TEST_CASE("velocity_from_acceleration is given what it needs: the frame's durati
         for (const WorksheetEntry& e : sheet.steps[0].inputs)
             if (e.path == path) return e.value;
         FAIL("no input " << path);
-        return io::json();
+        return formats::json();
     };
     // 'landing' (body 2) was accelerated by (0, −9.81, 0) m/s² for one frame of 1/60 s against the ground
     // (body 1, the world): (a₀ − a₁)·n·Δt = −9.81 · 1 / 60 = −0.1635 m/s, which the trace records.
     const double duration = input("settings.duration").get<double>();
-    const io::json a = input("scene.bodies[2].last_frame_acceleration");
+    const formats::json a = input("scene.bodies[2].last_frame_acceleration");
     CHECK(duration == doctest::Approx(1.0 / 60));
-    CHECK(a == io::json::array({0.0, -9.81, 0.0}));
+    CHECK(a == formats::json::array({0.0, -9.81, 0.0}));
     CHECK(a[1].get<double>() * duration == doctest::Approx(-0.1635));
-    CHECK(input("frames[0].contacts[2].contact_velocity") == io::json::array({-3.0, 0.0, 0.0}));
+    CHECK(input("frames[0].contacts[2].contact_velocity") == formats::json::array({-3.0, 0.0, 0.0}));
 }
 
 TEST_CASE("a simulated frame gives gravity as the last acceleration of every body that can move") {
-    inspect::OpenOptions options;
+    model::OpenOptions options;
     options.frames = 4;
     options.record = {"frames=3..3"};
-    const inspect::Session session = opened_session("stack_3", options);
+    const model::Session session = opened_session("stack_3", options);
     const Worksheet sheet = make_worksheet(
         session, places_from_specs(session.trace(), {"phase=preparation,contact=0,step=contact_velocity"}, "--steps"));
     const std::vector<std::string> given = quantities(sheet.steps.at(0).inputs);
@@ -405,7 +405,7 @@ TEST_CASE("a simulated frame gives gravity as the last acceleration of every bod
 }
 
 TEST_CASE("an update starts from the value before it, which is not given when the sheet asks for it elsewhere") {
-    const inspect::Session session = opened_session("cases/ruler");
+    const model::Session session = opened_session("cases/ruler");
     const Trace& trace = session.trace();
     // The velocity iteration's updates alone: the contact's velocity before the impulse is the iteration's own
     // contact_velocity, given at that path (and no longer as a copy under updates[0].before).

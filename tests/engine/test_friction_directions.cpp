@@ -40,7 +40,7 @@ const std::vector<Method> methods{{"pgs", {}, true},
                                   {"sweep", {"sliding_friction=against_slip"}, false}};
 
 Scene with(Scene scene, const Method& m) {
-    for (const std::string& s : m.settings) io::apply_setting(scene, s, "--set");
+    for (const std::string& s : m.settings) formats::apply_setting(scene, s, "--set");
     return scene;
 }
 

@@ -86,7 +86,7 @@ ResolverSettings stack_settings(int sweeps, bool warm_start) {
 
 Scene scene_with(const std::string& name, const std::vector<std::string>& settings) {
     Scene scene = test::shipped(name);
-    for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+    for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
     return scene;
 }
 
@@ -208,7 +208,7 @@ TEST_CASE("the split impulse removes penetration without adding kinetic energy")
         std::vector<RigidBody> bodies{test::sphere(1.0, 0.5, {0, 0.45, 0}, {0, -g * h, 0})};
         const Contact contact = test::contact(0, world_body, {0, -0.05, 0}, {0, 1, 0}, 0.05);
         Scene scene;
-        for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+        for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
         ContactMemory memory;
         Recorder nobody;
         resolve_contacts(bodies, std::span(&contact, 1), scene.settings, nobody, 0, &memory);
@@ -259,7 +259,7 @@ TEST_CASE("recorded and unrecorded runs of each method are bit-identical") {
         CAPTURE(settings.front());
         CAPTURE(settings.back());
         Scene scene = test::sliding_box("book");
-        for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+        for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
         World quiet(scene), traced(scene);
         Trace trace;
         trace.scene = scene;
@@ -289,9 +289,9 @@ TEST_CASE("a traced run of each preset and method round-trips through trace JSON
         if (trace.scene.settings.velocity_method == VelocityMethod::projected_gauss_seidel &&
             trace.scene.settings.warm_start)
             CHECK(trace.frames.at(1).velocity.iterations.at(0).sweep->stage == SolverStage::warm_start);
-        const std::string text = io::format_json(io::trace_json(trace));
-        const Trace again = io::read_trace_text(text);  // also checks the schema
+        const std::string text = formats::format_json(formats::trace_json(trace));
+        const Trace again = formats::read_trace_text(text);  // also checks the schema
         CHECK(again == trace);
-        CHECK(io::format_json(io::trace_json(again)) == text);
+        CHECK(formats::format_json(formats::trace_json(again)) == text);
     }
 }

@@ -25,8 +25,8 @@ namespace {
 
 Scene soft_scene(const std::string& name, const std::vector<std::string>& settings = {}) {
     Scene scene = test::shipped(name);
-    io::apply_setting(scene, "preset=soft_step", "--set");
-    for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+    formats::apply_setting(scene, "preset=soft_step", "--set");
+    for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
     return scene;
 }
 
@@ -177,15 +177,15 @@ TEST_CASE("a traced soft-step run round-trips through the trace file and passes 
     // A bounce adds the restitution stage.
     Trace bounce;
     bounce.scene = test::shipped("cases/sphere_ground");
-    io::apply_setting(bounce.scene, "preset=soft_step", "--set");
+    formats::apply_setting(bounce.scene, "preset=soft_step", "--set");
     std::vector<RigidBody> bodies = bounce.scene.bodies;
     TraceRecorder recorder(bounce);
     resolve_contacts(bodies, bounce.scene.contacts, bounce.scene.settings, recorder);
     for (const Trace* t : {&trace, &bounce}) {
-        const std::string text = io::format_json(io::trace_json(*t));
-        const Trace again = io::read_trace_text(text);  // checks the schema first
+        const std::string text = formats::format_json(formats::trace_json(*t));
+        const Trace again = formats::read_trace_text(text);  // checks the schema first
         CHECK(again == *t);
-        CHECK(io::format_json(io::trace_json(again)) == text);
+        CHECK(formats::format_json(formats::trace_json(again)) == text);
     }
     std::set<SolverStage> stages;
     for (const Trace* t : {&trace, &bounce})

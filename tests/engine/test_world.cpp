@@ -20,7 +20,7 @@ namespace {
 
 Scene shipped_scene(const std::string& name, const std::vector<std::string>& settings = {}) {
     Scene scene = test::shipped(name);
-    for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+    for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
     return scene;
 }
 
@@ -168,7 +168,7 @@ TEST_CASE("running a scene twice gives byte-identical traces") {
         World world(trace.scene);
         TraceRecorder recorder(trace);
         for (int frame = 0; frame < 60; ++frame) world.step(recorder);
-        return io::format_json(io::trace_json(trace));
+        return formats::format_json(formats::trace_json(trace));
     };
     const std::string first = trace_text();
     CHECK(first == trace_text());
@@ -190,7 +190,7 @@ TEST_CASE("a trace of a run records why each contact exists and reads back equal
         CHECK(c.origin.features[0].kind == FeatureKind::vertex);
         CHECK(c.origin.features[1].kind == FeatureKind::plane);
     }
-    CHECK(io::read_trace_text(io::format_json(io::trace_json(trace))) == trace);
+    CHECK(formats::read_trace_text(formats::format_json(formats::trace_json(trace))) == trace);
 }
 
 TEST_CASE("the contact blamed for a body is the last one resolved on it, whichever phase") {

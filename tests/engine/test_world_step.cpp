@@ -20,7 +20,7 @@ namespace {
 
 Scene scene_with(const std::string& name, const std::string& preset) {
     Scene scene = test::shipped(name);
-    io::apply_setting(scene, "preset=" + preset, "--set");
+    formats::apply_setting(scene, "preset=" + preset, "--set");
     return scene;
 }
 
@@ -105,7 +105,7 @@ TEST_CASE("warm_start=false makes a world's second frame the same as a cold one"
     // The memory is still filled (the trace shows the totals), but nothing recalls it: the switch is the
     // settings', not the caller's.
     Scene scene = scene_with("box_resting", "pgs");
-    io::apply_setting(scene, "warm_start=false", "--set");
+    formats::apply_setting(scene, "warm_start=false", "--set");
     World world(scene);
     std::vector<RigidBody> cold = scene.bodies;
     Recorder nobody;

@@ -50,7 +50,7 @@ struct Run {
 
 Run run(const std::string& name, int frames, WorstFirstSearch search, const std::vector<std::string>& settings) {
     Scene scene = test::shipped(name);
-    for (const std::string& s : settings) io::apply_setting(scene, s, "--set");
+    for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
     scene.settings.worst_first_search = search;
     Run r;
     World world(scene);

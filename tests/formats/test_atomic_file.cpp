@@ -39,7 +39,7 @@ TEST_CASE("a reader of the old file keeps seeing all of it while the new one rep
     TempDir dir;
     const auto path = dir.write("trace.json", "old contents");
     std::ifstream reader(path);
-    io::write_file_atomically(path, "new contents, longer than the old", "--trace");
+    formats::write_file_atomically(path, "new contents, longer than the old", "--trace");
     CHECK(contents(reader) == "old contents");
     std::ifstream fresh(path);
     CHECK(contents(fresh) == "new contents, longer than the old");
@@ -50,8 +50,8 @@ TEST_CASE("a write that fails leaves the target as it was and no temporary behin
     // The target is a directory, so the final rename fails after the text was written.
     TempDir dir;
     std::filesystem::create_directory(dir.file("taken"));
-    CHECK_THROWS_WITH_AS(io::write_file_atomically(dir.file("taken"), "text", "--trace"),
-                         doctest::Contains("--trace: cannot write '"), io::InputError);
+    CHECK_THROWS_WITH_AS(formats::write_file_atomically(dir.file("taken"), "text", "--trace"),
+                         doctest::Contains("--trace: cannot write '"), formats::InputError);
     CHECK(std::filesystem::is_directory(dir.file("taken")));
     CHECK(dir.entries() == 1);
 }
@@ -59,7 +59,7 @@ TEST_CASE("a write that fails leaves the target as it was and no temporary behin
 TEST_CASE("a new file gets the permissions a normally created file would have, not the temporary's 0600") {
     TempDir dir;
     const mode_t previous = ::umask(022);
-    io::write_file_atomically(dir.file("out.json"), "{}", "--trace");
+    formats::write_file_atomically(dir.file("out.json"), "{}", "--trace");
     ::umask(previous);
     namespace fs = std::filesystem;
     CHECK(fs::status(dir.file("out.json")).permissions() ==
@@ -107,11 +107,11 @@ int wait_for(pid_t child) {
 
 TEST_CASE("a missing file is created whole, and a regular one replaced, both through a temporary") {
     TempDir dir;
-    CHECK(io::output_target(dir.file("new.json"), "--trace").kind == io::OutputKind::replaced);
-    io::write_file_atomically(dir.file("new.json"), "first", "--trace");
+    CHECK(formats::output_target(dir.file("new.json"), "--trace").kind == formats::OutputKind::replaced);
+    formats::write_file_atomically(dir.file("new.json"), "first", "--trace");
     CHECK(read_all(dir.file("new.json")) == "first");
-    CHECK(io::output_target(dir.file("new.json"), "--trace").kind == io::OutputKind::replaced);
-    io::write_file_atomically(dir.file("new.json"), "second", "--trace");
+    CHECK(formats::output_target(dir.file("new.json"), "--trace").kind == formats::OutputKind::replaced);
+    formats::write_file_atomically(dir.file("new.json"), "second", "--trace");
     CHECK(read_all(dir.file("new.json")) == "second");
     CHECK(dir.entries() == 1);
 }
@@ -125,11 +125,11 @@ TEST_CASE("a symlink given as an output stays a link and its target, in another 
     std::ofstream(dir.file("elsewhere/trace.json")) << "old";
     fs::create_symlink("../elsewhere/trace.json", dir.file("here/chain.json"));
     fs::create_symlink("chain.json", dir.file("here/out.json"));
-    const io::OutputTarget target = io::output_target(dir.file("here/out.json"), "--trace");
-    CHECK(target.kind == io::OutputKind::replaced);
+    const formats::OutputTarget target = formats::output_target(dir.file("here/out.json"), "--trace");
+    CHECK(target.kind == formats::OutputKind::replaced);
     CHECK(fs::equivalent(target.path.parent_path(), dir.file("elsewhere")));
 
-    io::write_file_atomically(dir.file("here/out.json"), "new trace", "--trace");
+    formats::write_file_atomically(dir.file("here/out.json"), "new trace", "--trace");
     CHECK(is_link(dir.file("here/out.json")));
     CHECK(is_link(dir.file("here/chain.json")));
     CHECK(fs::read_symlink(dir.file("here/out.json")) == "chain.json");
@@ -142,8 +142,8 @@ TEST_CASE("a dangling symlink into an existing folder creates its target and sta
     TempDir dir;
     fs::create_directory(dir.file("results"));
     fs::create_symlink(dir.file("results/trace.json"), dir.file("latest.json"));
-    CHECK_NOTHROW(io::check_writable(dir.file("latest.json"), "--trace"));
-    io::write_file_atomically(dir.file("latest.json"), "made", "--trace");
+    CHECK_NOTHROW(formats::check_writable(dir.file("latest.json"), "--trace"));
+    formats::write_file_atomically(dir.file("latest.json"), "made", "--trace");
     CHECK(is_link(dir.file("latest.json")));
     CHECK(read_all(dir.file("results/trace.json")) == "made");
 }
@@ -151,13 +151,13 @@ TEST_CASE("a dangling symlink into an existing folder creates its target and sta
 TEST_CASE("a dangling symlink into a missing folder and a loop of links are refused before anything is written") {
     TempDir dir;
     fs::create_symlink(dir.file("gone/trace.json"), dir.file("dangling.json"));
-    CHECK_THROWS_WITH_AS(io::check_writable(dir.file("dangling.json"), "--trace"),
-                         doctest::Contains("': No such file or directory"), io::InputError);
+    CHECK_THROWS_WITH_AS(formats::check_writable(dir.file("dangling.json"), "--trace"),
+                         doctest::Contains("': No such file or directory"), formats::InputError);
     fs::create_symlink("b.json", dir.file("a.json"));
     fs::create_symlink("a.json", dir.file("b.json"));
-    CHECK_THROWS_WITH_AS(io::check_writable(dir.file("a.json"), "--trace"),
-                         doctest::Contains("Too many levels of symbolic links"), io::InputError);
-    CHECK_THROWS_AS(io::write_file_atomically(dir.file("a.json"), "x", "--trace"), io::InputError);
+    CHECK_THROWS_WITH_AS(formats::check_writable(dir.file("a.json"), "--trace"),
+                         doctest::Contains("Too many levels of symbolic links"), formats::InputError);
+    CHECK_THROWS_AS(formats::write_file_atomically(dir.file("a.json"), "x", "--trace"), formats::InputError);
     CHECK(is_link(dir.file("a.json")));
     CHECK(dir.entries() == 3);
 }
@@ -168,13 +168,13 @@ TEST_CASE("a FIFO given as an output stays a FIFO and its reader receives the wh
     TempDir dir;
     const fs::path fifo = dir.file("trace.fifo");
     REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
-    REQUIRE(io::output_target(fifo, "--trace").kind == io::OutputKind::in_place);
-    CHECK_NOTHROW(io::check_writable(fifo, "--trace"));
+    REQUIRE(formats::output_target(fifo, "--trace").kind == formats::OutputKind::in_place);
+    CHECK_NOTHROW(formats::check_writable(fifo, "--trace"));
     std::string text;
     for (int i = 0; text.size() < 300'000; ++i) text += "line " + std::to_string(i) + "\n";
     const pid_t reader = start_reader(fifo, dir.file("received"));
     REQUIRE(reader > 0);
-    io::write_file_atomically(fifo, text, "--trace");
+    formats::write_file_atomically(fifo, text, "--trace");
     CHECK(wait_for(reader) == 0);
     CHECK(fs::is_fifo(fifo));
     CHECK(read_all(dir.file("received")) == text);
@@ -188,11 +188,11 @@ TEST_CASE("a FIFO staged with a file is written when the set commits, and the fi
     const pid_t reader = start_reader(fifo, dir.file("received"));
     REQUIRE(reader > 0);
     {
-        const io::HeldInterruptions held;  // a set of files: committed together
-        std::vector<io::StagedFile> files;
+        const formats::HeldInterruptions held;  // a set of files: committed together
+        std::vector<formats::StagedFile> files;
         files.emplace_back(dir.file("trace.json"), "trace", "--trace");
         files.emplace_back(fifo, "states", "--states");
-        for (io::StagedFile& f : files) f.commit();
+        for (formats::StagedFile& f : files) f.commit();
     }
     CHECK(wait_for(reader) == 0);
     CHECK(read_all(dir.file("received")) == "states");
@@ -203,9 +203,9 @@ TEST_CASE("a FIFO staged with a file is written when the set commits, and the fi
 TEST_CASE("/dev/null is written in place and stays the null device") {
     // Checked to be written in place before anything is written: were it replaced, as root, /dev/null would
     // become a regular file for the whole machine.
-    const io::OutputTarget target = io::output_target("/dev/null", "--trace");
-    REQUIRE(target.kind == io::OutputKind::in_place);
-    io::write_file_atomically("/dev/null", "discarded", "--trace");
+    const formats::OutputTarget target = formats::output_target("/dev/null", "--trace");
+    REQUIRE(target.kind == formats::OutputKind::in_place);
+    formats::write_file_atomically("/dev/null", "discarded", "--trace");
     CHECK(fs::is_character_file("/dev/null"));
 }
 
@@ -217,8 +217,8 @@ TEST_CASE("a terminal is written in place") {
         return;
     }
     const std::string terminal = ::ptsname(master);
-    REQUIRE(io::output_target(terminal, "--trace").kind == io::OutputKind::in_place);
-    io::write_file_atomically(terminal, "on screen", "--trace");
+    REQUIRE(formats::output_target(terminal, "--trace").kind == formats::OutputKind::in_place);
+    formats::write_file_atomically(terminal, "on screen", "--trace");
     char buffer[64] = {};
     const ssize_t n = ::read(master, buffer, sizeof buffer);
     CHECK(std::string(buffer, static_cast<std::size_t>(std::max<ssize_t>(n, 0))) == "on screen");
@@ -230,11 +230,12 @@ TEST_CASE("a directory as an output is one clear error before anything is writte
     TempDir dir;
     fs::create_directory(dir.file("results"));
     const std::string expected = "--trace: cannot write '" + dir.file("results").string() + "': Is a directory";
-    CHECK_THROWS_WITH_AS(io::check_writable(dir.file("results"), "--trace"), expected.c_str(), io::InputError);
+    CHECK_THROWS_WITH_AS(formats::check_writable(dir.file("results"), "--trace"), expected.c_str(),
+                         formats::InputError);
     fs::create_symlink("results", dir.file("link"));
-    CHECK_THROWS_WITH_AS(io::check_writable(dir.file("link"), "--trace"), doctest::Contains("Is a directory"),
-                         io::InputError);
-    CHECK_THROWS_AS(io::StagedFile(dir.file("results"), "x", "--trace"), io::InputError);
+    CHECK_THROWS_WITH_AS(formats::check_writable(dir.file("link"), "--trace"), doctest::Contains("Is a directory"),
+                         formats::InputError);
+    CHECK_THROWS_AS(formats::StagedFile(dir.file("results"), "x", "--trace"), formats::InputError);
     CHECK(dir.entries() == 2);
 }
 
@@ -246,9 +247,9 @@ TEST_CASE("an output in a folder the user cannot write is refused before anythin
     TempDir dir;
     fs::create_directory(dir.file("locked"));
     fs::permissions(dir.file("locked"), fs::perms::owner_read | fs::perms::owner_exec);
-    CHECK_THROWS_WITH_AS(io::check_writable(dir.file("locked/trace.json"), "--trace"),
-                         doctest::Contains("': Permission denied"), io::InputError);
-    CHECK_THROWS_AS(io::write_file_atomically(dir.file("locked/trace.json"), "x", "--trace"), io::InputError);
+    CHECK_THROWS_WITH_AS(formats::check_writable(dir.file("locked/trace.json"), "--trace"),
+                         doctest::Contains("': Permission denied"), formats::InputError);
+    CHECK_THROWS_AS(formats::write_file_atomically(dir.file("locked/trace.json"), "x", "--trace"), formats::InputError);
     fs::permissions(dir.file("locked"), fs::perms::owner_all);
     CHECK(fs::is_empty(dir.file("locked")));
 }
@@ -257,6 +258,6 @@ TEST_CASE("a replaced file keeps its permissions") {
     TempDir dir;
     const auto path = dir.write("shared.json", "old");
     fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
-    io::write_file_atomically(path, "new", "--trace");
+    formats::write_file_atomically(path, "new", "--trace");
     CHECK(fs::status(path).permissions() == (fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read));
 }

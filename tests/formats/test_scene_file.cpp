@@ -16,7 +16,7 @@ using namespace impulse;
 using namespace impulse::test;
 
 TEST_CASE("a minimal case fills every default") {
-    const Scene c = io::read_scene_text(R"({
+    const Scene c = formats::read_scene_text(R"({
         "bodies": [{"inertia": [[1, 0, 0], [0, 2, 0], [0, 0, 4]]}],
         "contacts": [{"bodies": [0, null], "point": [0, 0, 0], "normal": [0, 2, 0]}]})");
     REQUIRE(c.bodies.size() == 1);
@@ -38,7 +38,7 @@ TEST_CASE("a minimal case fills every default") {
 }
 
 TEST_CASE("shapes give the exact solid inertia: 2/5 m r^2 for a sphere, m (b^2 + c^2) / 3 for a box") {
-    const Scene c = io::read_scene_text(R"({
+    const Scene c = formats::read_scene_text(R"({
         "bodies": [{"mass": 2, "shape": {"type": "sphere", "radius": 0.5}},
                    {"mass": 3, "shape": {"type": "box", "half_size": [1, 0.5, 0.25]}},
                    {"name": "ground", "inverse_mass": 0}],
@@ -50,7 +50,7 @@ TEST_CASE("shapes give the exact solid inertia: 2/5 m r^2 for a sphere, m (b^2 +
 }
 
 TEST_CASE("orientation is [w, x, y, z] and orientation_deg turns about X, then Y, then Z") {
-    const Scene c = io::read_scene_text(R"({
+    const Scene c = formats::read_scene_text(R"({
         "bodies": [{"inverse_mass": 0, "orientation": [0.7071067811865476, 0, 0, 0.7071067811865476]},
                    {"inverse_mass": 0, "orientation_deg": [0, 0, 90]},
                    {"inverse_mass": 0, "orientation_deg": [90, 90, 0]}],
@@ -62,21 +62,21 @@ TEST_CASE("orientation is [w, x, y, z] and orientation_deg turns about X, then Y
 }
 
 TEST_CASE("a case written out in full reads back to the same bodies, contacts and settings") {
-    const Scene c = io::read_scene_text(R"({
+    const Scene c = formats::read_scene_text(R"({
         "bodies": [{"name": "a", "mass": 2, "orientation_deg": [10, 20, 30], "velocity": [1, 2, 3],
                     "shape": {"type": "box", "half_size": [1, 0.5, 0.25]}},
                    {"name": "b", "mass": 1, "shape": {"type": "sphere", "radius": 0.3}}],
         "contacts": [{"bodies": [null, "a"], "point": [0, 0.1, 0], "normal": [0.3, -1, 0.2], "penetration": 0.01}],
         "settings": {"preset": "chapter", "angular_limit": {"policy": "angle"}, "position_iterations": 7}})");
-    const Scene again = io::read_scene(io::scene_json(c, true));
+    const Scene again = formats::read_scene(formats::scene_json(c, true));
     CHECK(again == c);
     CHECK(again.settings.angular_limit.factor == 45.0);
     CHECK(again.settings.position_iterations == 7);
 }
 
 TEST_CASE("a scene needs only shapes and positions: every other value is a documented default") {
-    const Scene s =
-        io::read_scene_text(R"({"ground": {}, "bodies": [{"shape": {"type": "box", "half_size": [1, 0.5, 0.5]}}]})");
+    const Scene s = formats::read_scene_text(
+        R"({"ground": {}, "bodies": [{"shape": {"type": "box", "half_size": [1, 0.5, 0.5]}}]})");
     CHECK(s.world.gravity == Vec3(0, -9.81, 0));
     CHECK(s.world.frames == 600);
     CHECK(s.world.linear_damping == 1.0);
@@ -93,7 +93,7 @@ TEST_CASE("a scene needs only shapes and positions: every other value is a docum
 }
 
 TEST_CASE("given inertia overrides the inertia a shape would give, and the shape still collides") {
-    const Scene s = io::read_scene_text(
+    const Scene s = formats::read_scene_text(
         R"({"bodies": [{"shape": {"type": "sphere", "radius": 1}, "inertia": [[2, 0, 0], [0, 2, 0], [0, 0, 2]]}]})");
     CHECK(s.shapes[0].has_value());
     CHECK_CLOSE(s.bodies[0].inverse_inertia_body, (Mat3::Identity() * 0.5).eval());
@@ -113,8 +113,8 @@ TEST_CASE("every shipped scene reads, and writes out to a scene that reads back 
         std::ifstream in(entry.path());
         std::stringstream text;
         text << in.rdbuf();
-        const Scene s = io::read_scene_text(text.str());
-        CHECK(io::read_scene(io::scene_json(s, true)) == s);
+        const Scene s = formats::read_scene_text(text.str());
+        CHECK(formats::read_scene(formats::scene_json(s, true)) == s);
     }
 }
 
@@ -123,15 +123,15 @@ TEST_CASE("a scene naming the old position method baumgarte is refused with what
     const std::string scene =
         R"({"bodies": [{"shape": {"type": "sphere", "radius": 0.5}}], "settings": {"position_method": "baumgarte"}})";
     try {
-        io::read_scene_text(scene);
+        formats::read_scene_text(scene);
         FAIL("read");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         CHECK(e.where() == "settings.position_method");
         CHECK(std::string(e.problem()) ==
               "\"baumgarte\" is no longer a position method: Baumgarte's bias is now a term of step 5 (did you "
               "mean \"position_method\": \"none\" with \"baumgarte\": true?)");
     }
-    Scene fixed = io::read_scene_text(
+    Scene fixed = formats::read_scene_text(
         R"({"bodies": [{"shape": {"type": "sphere", "radius": 0.5}}],
             "settings": {"position_method": "none", "baumgarte": true}})");
     CHECK(fixed.settings.position_method == PositionMethod::none);
@@ -141,10 +141,10 @@ TEST_CASE("a scene naming the old position method baumgarte is refused with what
 TEST_CASE("a misspelt settings value is told the value it is closest to, a wrong one only the choices") {
     const auto problem = [](const std::string& value) {
         try {
-            io::read_scene_text(
+            formats::read_scene_text(
                 R"({"bodies": [{"shape": {"type": "sphere", "radius": 0.5}}], "settings": {"sliding_friction": ")" +
                 value + R"("}})");
-        } catch (const io::InputError& e) {
+        } catch (const formats::InputError& e) {
             return std::string(e.problem());
         }
         return std::string("read");
@@ -157,13 +157,13 @@ TEST_CASE("a misspelt settings value is told the value it is closest to, a wrong
 TEST_CASE("settings added after trace format 1 are written only when they differ from what it implied") {
     // A trace of the book's defaults must stay the bytes older versions wrote (and could read).
     ResolverSettings s = *preset("book");
-    const io::json plain = io::settings_json(s, WorldSettings{});
+    const formats::json plain = formats::settings_json(s, WorldSettings{});
     CHECK_FALSE(plain.contains("baumgarte"));
     CHECK_FALSE(plain.contains("sliding_friction"));
     s.baumgarte = true;
     s.sliding_friction = SlidingFriction::against_slip;
-    const io::json changed = io::settings_json(s, WorldSettings{});
+    const formats::json changed = formats::settings_json(s, WorldSettings{});
     CHECK(changed["baumgarte"] == true);
     CHECK(changed["sliding_friction"] == "against_slip");
-    CHECK(io::settings_json(*preset("pgs"), WorldSettings{})["baumgarte"] == true);
+    CHECK(formats::settings_json(*preset("pgs"), WorldSettings{})["baumgarte"] == true);
 }

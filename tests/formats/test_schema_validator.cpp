@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-using impulse::io::InputError;
-using impulse::io::SchemaValidator;
+using impulse::formats::InputError;
+using impulse::formats::SchemaValidator;
 using json = nlohmann::ordered_json;
 
 namespace {

@@ -25,7 +25,7 @@ namespace {
 Trace resolved(const Scene& c, const std::vector<std::string>& settings = {}) {
     Trace trace;
     trace.scene = c;
-    for (const std::string& s : settings) io::apply_setting(trace.scene, s, "--set");
+    for (const std::string& s : settings) formats::apply_setting(trace.scene, s, "--set");
     std::vector<RigidBody> bodies = c.bodies;
     TraceRecorder recorder(trace);
     resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
@@ -33,7 +33,7 @@ Trace resolved(const Scene& c, const std::vector<std::string>& settings = {}) {
 }
 
 std::string written(const Trace& t) {
-    return io::format_json(io::trace_json(t));
+    return formats::format_json(formats::trace_json(t));
 }
 
 }  // namespace
@@ -59,7 +59,7 @@ TEST_CASE("a trace written and read back is equal to the last bit, for every met
         CAPTURE(case_name);
         const Trace trace = resolved(test::shipped("cases/" + name), settings);
         const std::string text = written(trace);
-        const Trace again = io::read_trace_text(text);  // also checks the schema
+        const Trace again = formats::read_trace_text(text);  // also checks the schema
         CHECK(again == trace);
         CHECK(written(again) == text);
     }
@@ -72,11 +72,11 @@ TEST_CASE("a filtered trace round-trips with its filter") {
     std::vector<RigidBody> bodies = trace.scene.bodies;
     TraceRecorder recorder(trace);
     resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
-    CHECK(io::read_trace_text(written(trace)) == trace);
+    CHECK(formats::read_trace_text(written(trace)) == trace);
 }
 
 TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the order of the steps") {
-    const io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
+    const formats::json j = formats::trace_json(resolved(test::shipped("cases/ruler")));
     std::vector<std::string> keys;
     for (const auto& [key, value] : j["frames"][0]["contacts"][0].items()) keys.push_back(key);
     const std::vector<std::string> expected{"contact",
@@ -109,90 +109,90 @@ TEST_CASE("a contact's keys in the trace are the derivation vocabulary, in the o
                                             "velocity_from_acceleration",
                                             "desired_delta_velocity"};
     CHECK(keys == expected);
-    const io::json& position = j["frames"][0]["phases"][0]["iterations"][0];
+    const formats::json& position = j["frames"][0]["phases"][0]["iterations"][0];
     for (const char* key : {"linear_inertia", "angular_inertia", "penetration_inertia", "move_split", "angular_limit",
                             "position_change", "updates"})
         CHECK_MESSAGE(position.contains(key), key);
-    const io::json& velocity = j["frames"][0]["phases"][1]["iterations"][0];
+    const formats::json& velocity = j["frames"][0]["phases"][1]["iterations"][0];
     for (const char* key : {"contact_velocity", "desired_delta_velocity", "impulse", "impulse_world", "velocity_change",
                             "rotation_change", "updates"})
         CHECK_MESSAGE(velocity.contains(key), key);
 }
 
 TEST_CASE("the header says what ran: format, version, conventions, full settings and the scene") {
-    const io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
+    const formats::json j = formats::trace_json(resolved(test::shipped("cases/ruler")));
     CHECK(j["format"] == "impulse-lab-trace");
     CHECK(j["version"] == 2);
     CHECK(j["conventions"]["quaternion"] == "[w, x, y, z], unit, body to world");
-    CHECK(j["settings"] == io::settings_json(*preset("book"), WorldSettings{}));
+    CHECK(j["settings"] == formats::settings_json(*preset("book"), WorldSettings{}));
     CHECK(j["scene"]["bodies"][0]["name"] == "ruler");
     CHECK(j["scene"]["bodies"][0].contains("inverse_inertia"));
 }
 
 TEST_CASE("a trace whose indices point outside its scene is rejected with the path") {
-    io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
+    formats::json j = formats::trace_json(resolved(test::shipped("cases/ruler")));
     j["frames"][0]["phases"][1]["iterations"][0]["contact"] = 5;
     try {
-        io::read_trace(j);
+        formats::read_trace(j);
         FAIL("accepted a trace with an iteration on contact 5");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         CHECK(std::string(e.what()) ==
               "frames[0].phases[1].iterations[0].contact: no contact 5 in this frame (it has 1)");
     }
 }
 
 TEST_CASE("a trace from a future format version is refused") {
-    io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
+    formats::json j = formats::trace_json(resolved(test::shipped("cases/ruler")));
     j["version"] = 3;
-    CHECK_THROWS_WITH_AS(io::read_trace(j), "version: must be 2, got 3", io::InputError);
+    CHECK_THROWS_WITH_AS(formats::read_trace(j), "version: must be 2, got 3", formats::InputError);
 }
 
 TEST_CASE("a misspelt derivation key in a trace is named with its path") {
-    io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
-    io::json& contact = j["frames"][0]["contacts"][0];
+    formats::json j = formats::trace_json(resolved(test::shipped("cases/ruler")));
+    formats::json& contact = j["frames"][0]["contacts"][0];
     contact["relative_positon"] = contact["relative_position"];
     contact.erase("relative_position");
-    CHECK_THROWS_WITH_AS(io::read_trace(j),
+    CHECK_THROWS_WITH_AS(formats::read_trace(j),
                          "frames[0].contacts[0].relative_positon: unknown field (did you mean \"relative_position\"?)",
-                         io::InputError);
+                         formats::InputError);
 }
 
 TEST_CASE("a trace whose states or records cannot describe a body or a contact is rejected with the path") {
     struct Broken {
         const char* what;
-        std::function<void(io::json&)> change;
+        std::function<void(formats::json&)> change;
         std::string message;
     };
     const std::vector<Broken> table{
         {"a quaternion of length 2 before",
-         [](io::json& f) {
+         [](formats::json& f) {
              f["bodies_before"][0]["orientation"] = {2, 0, 0, 0};
          },
          "frames[0].bodies_before[0].orientation: must be a unit quaternion [w, x, y, z] (length 1 within 1e-6), got "
          "length 2"},
         {"a zero quaternion after",
-         [](io::json& f) {
+         [](formats::json& f) {
              f["bodies_after"][0]["orientation"] = {0, 0, 0, 0};
          },
          "frames[0].bodies_after[0].orientation: must be a unit quaternion [w, x, y, z] (length 1 within 1e-6), got "
          "length 0"},
         {"an inverse inertia that is not symmetric",
-         [](io::json& f) { f["bodies_before"][0]["inverse_inertia_world"][0][1] = 1.0; },
+         [](formats::json& f) { f["bodies_before"][0]["inverse_inertia_world"][0][1] = 1.0; },
          "frames[0].bodies_before[0].inverse_inertia_world: must be symmetric (row i, column j equal to row j, column "
          "i)"},
         {"a negative inverse inertia",
-         [](io::json& f) {
+         [](formats::json& f) {
              f["bodies_before"][0]["inverse_inertia_world"] = {{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
          },
          "frames[0].bodies_before[0].inverse_inertia_world: must be positive semi-definite (zero = cannot rotate), "
          "but its eigenvalues are -1, 1, 1"},
         {"a zero normal",
-         [](io::json& f) {
+         [](formats::json& f) {
              f["contacts"][0]["normal"] = {0, 0, 0};
          },
          "frames[0].contacts[0].normal: must be a unit vector (length 1 within 1e-6), got length 0"},
         {"a basis that is not a rotation",
-         [](io::json& f) {
+         [](formats::json& f) {
              f["contacts"][0]["basis"] = {{1, 0, 0}, {0, 1, 0}, {0, 1, 0}};
          },
          "frames[0].contacts[0].basis: must have unit columns at right angles (within 1e-6); its columns' dot "
@@ -200,9 +200,9 @@ TEST_CASE("a trace whose states or records cannot describe a body or a contact i
     };
     for (const Broken& b : table) {
         CAPTURE(b.what);
-        io::json j = io::trace_json(resolved(test::shipped("cases/ruler")));
+        formats::json j = formats::trace_json(resolved(test::shipped("cases/ruler")));
         b.change(j["frames"][0]);
-        CHECK_THROWS_WITH_AS(io::read_trace(j), b.message.c_str(), io::InputError);
+        CHECK_THROWS_WITH_AS(formats::read_trace(j), b.message.c_str(), formats::InputError);
     }
 }
 
@@ -223,7 +223,7 @@ TEST_CASE("the recorder's size estimate stays within a third of the written trac
                 std::stringstream text;
                 text << in.rdbuf();
                 Trace trace;
-                trace.scene = io::read_scene_text(text.str(), std::string(preset));
+                trace.scene = formats::read_scene_text(text.str(), std::string(preset));
                 if (filtered) trace.recording.contacts = std::vector<int>{0, 1};
                 std::vector<RigidBody> bodies = trace.scene.bodies;
                 TraceRecorder recorder(trace, SIZE_MAX);
@@ -234,7 +234,7 @@ TEST_CASE("the recorder's size estimate stays within a third of the written trac
                     World world(trace.scene);
                     for (int frame = 0; frame < trace.scene.world.frames; ++frame) world.step(recorder);
                 }
-                const double written = static_cast<double>(io::format_json(io::trace_json(trace)).size());
+                const double written = static_cast<double>(formats::format_json(formats::trace_json(trace)).size());
                 const double ratio = static_cast<double>(recorder.estimated_bytes()) / written;
                 CHECK(ratio > 0.75);
                 CHECK(ratio < 1.33);

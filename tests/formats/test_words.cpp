@@ -36,7 +36,7 @@ std::string file_text(const std::string& path) {
 using KeyKinds = std::map<std::string, words::Kind>;
 
 // The kind the schema gives a property: its $ref's definition, or its type.
-words::Kind schema_kind(const io::json& property) {
+words::Kind schema_kind(const formats::json& property) {
     if (property.contains("$ref")) {
         const std::string ref = property["$ref"].get<std::string>();
         const std::string name = ref.substr(ref.rfind('/') + 1);
@@ -49,17 +49,17 @@ words::Kind schema_kind(const io::json& property) {
         return words::Kind::object;  // rewind, angular_limit, friction_solve, origin: objects of words
     }
     if (property.contains("enum")) {
-        const io::json& first = property["enum"][0];
+        const formats::json& first = property["enum"][0];
         return first.is_string() ? words::Kind::word : first.is_boolean() ? words::Kind::boolean : words::Kind::integer;
     }
-    const io::json& type = property["type"];
+    const formats::json& type = property["type"];
     if (type == "integer") return words::Kind::integer;
     if (type == "number") return words::Kind::number;
     if (type == "boolean") return words::Kind::boolean;
     if (type == "string") return words::Kind::word;
     if (type == "object") return words::Kind::object;
     if (type == "array") {
-        const io::json& items = property.contains("items") ? property["items"] : io::json();
+        const formats::json& items = property.contains("items") ? property["items"] : formats::json();
         if (items.contains("$ref") || items.contains("type")) {
             const bool objects = items.contains("$ref") || items["type"] == "object";
             if (objects) return words::Kind::list;
@@ -69,14 +69,14 @@ words::Kind schema_kind(const io::json& property) {
     return words::Kind::none;
 }
 
-const io::json& resolved(const io::json& schema, const io::json& property) {
+const formats::json& resolved(const formats::json& schema, const formats::json& property) {
     if (!property.contains("$ref")) return property;
     const std::string ref = property["$ref"].get<std::string>();
     return schema["$defs"][ref.substr(ref.rfind('/') + 1)];
 }
 
 // Every key of an item's schema, nested ones by their path ("rewind.time", "updates[].after").
-void schema_keys(const io::json& schema, const io::json& object, const std::string& prefix, KeyKinds& out) {
+void schema_keys(const formats::json& schema, const formats::json& object, const std::string& prefix, KeyKinds& out) {
     for (const auto& [key, property] : object["properties"].items()) {
         const std::string path = prefix + key;
         const words::Kind kind = schema_kind(property);
@@ -94,14 +94,14 @@ KeyKinds word_keys(char item) {
 }
 
 // The kind of a written value, as the word list names kinds (per body: two elements, one maybe null).
-bool value_is(const io::json& v, words::Kind kind) {
-    const auto vec = [](const io::json& x, std::size_t n) {
+bool value_is(const formats::json& v, words::Kind kind) {
+    const auto vec = [](const formats::json& x, std::size_t n) {
         return x.is_array() && x.size() == n &&
-               std::all_of(x.begin(), x.end(), [](const io::json& e) { return e.is_number(); });
+               std::all_of(x.begin(), x.end(), [](const formats::json& e) { return e.is_number(); });
     };
     const auto per_body = [&v](auto element) {
         return v.is_array() && v.size() == 2 &&
-               std::all_of(v.begin(), v.end(), [&](const io::json& e) { return e.is_null() || element(e); });
+               std::all_of(v.begin(), v.end(), [&](const formats::json& e) { return e.is_null() || element(e); });
     };
     switch (kind) {
         case words::Kind::integer:
@@ -118,15 +118,15 @@ bool value_is(const io::json& v, words::Kind kind) {
             return vec(v, 3);
         case words::Kind::mat3:
             return v.is_array() && v.size() == 3 &&
-                   std::all_of(v.begin(), v.end(), [&](const io::json& r) { return vec(r, 3); });
+                   std::all_of(v.begin(), v.end(), [&](const formats::json& r) { return vec(r, 3); });
         case words::Kind::per_body_number:
-            return per_body([](const io::json& e) { return e.is_number(); });
+            return per_body([](const formats::json& e) { return e.is_number(); });
         case words::Kind::per_body_vec3:
-            return per_body([&](const io::json& e) { return vec(e, 3); });
+            return per_body([&](const formats::json& e) { return vec(e, 3); });
         case words::Kind::per_body_bool:
-            return per_body([](const io::json& e) { return e.is_boolean(); });
+            return per_body([](const formats::json& e) { return e.is_boolean(); });
         case words::Kind::bodies:
-            return per_body([](const io::json& e) { return e.is_number_integer(); });
+            return per_body([](const formats::json& e) { return e.is_number_integer(); });
         case words::Kind::object:
             return v.is_object();
         case words::Kind::list:
@@ -137,7 +137,7 @@ bool value_is(const io::json& v, words::Kind kind) {
     return false;
 }
 
-void check_item(const io::json& item, char kind, const std::string& prefix, std::set<std::string>& seen) {
+void check_item(const formats::json& item, char kind, const std::string& prefix, std::set<std::string>& seen) {
     for (const auto& [key, value] : item.items()) {
         const std::string path = prefix + key;
         const words::Word* w = words::find(path, kind);
@@ -148,15 +148,15 @@ void check_item(const io::json& item, char kind, const std::string& prefix, std:
         seen.insert(path);
         if (w->kind == words::Kind::object) check_item(value, kind, path + ".", seen);
         if (w->kind == words::Kind::list)
-            for (const io::json& element : value) check_item(element, kind, path + "[].", seen);
+            for (const formats::json& element : value) check_item(element, kind, path + "[].", seen);
     }
 }
 
 Trace resolved_case(const std::string& name, const std::string& preset, const std::vector<std::string>& set = {}) {
     Trace trace;
-    trace.scene =
-        io::read_scene(io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/scenes/" + name + ".json")), preset);
-    for (const std::string& s : set) io::apply_setting(trace.scene, s, "--set");
+    trace.scene = formats::read_scene(
+        formats::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/scenes/" + name + ".json")), preset);
+    for (const std::string& s : set) formats::apply_setting(trace.scene, s, "--set");
     std::vector<RigidBody> bodies = trace.scene.bodies;
     TraceRecorder recorder(trace);
     resolve_contacts(bodies, trace.scene.contacts, trace.scene.settings, recorder);
@@ -166,7 +166,7 @@ Trace resolved_case(const std::string& name, const std::string& preset, const st
 }  // namespace
 
 TEST_CASE("the committed trace schema and the word list name the same keys, of the same kinds") {
-    const io::json schema = io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/schemas/trace.schema.json"));
+    const formats::json schema = formats::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/schemas/trace.schema.json"));
     CHECK(schema["properties"]["version"]["const"] == words::format_version);
     for (const auto& entry :
          {std::pair{'C', "contact"}, std::pair{'P', "position_iteration"}, std::pair{'V', "velocity_iteration"}}) {
@@ -198,11 +198,11 @@ TEST_CASE("every key a trace writes is a word of its item, its value of the word
         for (std::string_view preset : preset_names())
             for (const std::vector<std::string>& set :
                  {std::vector<std::string>{}, std::vector<std::string>{"position_method=velocity_based"}}) {
-                const io::json document = io::trace_json(resolved_case(name, std::string(preset), set));
-                for (const io::json& frame : document["frames"]) {
-                    for (const io::json& contact : frame["contacts"]) check_item(contact, 'C', "", seen);
-                    for (const io::json& phase : frame["phases"])
-                        for (const io::json& it : phase["iterations"])
+                const formats::json document = formats::trace_json(resolved_case(name, std::string(preset), set));
+                for (const formats::json& frame : document["frames"]) {
+                    for (const formats::json& contact : frame["contacts"]) check_item(contact, 'C', "", seen);
+                    for (const formats::json& phase : frame["phases"])
+                        for (const formats::json& it : phase["iterations"])
                             check_item(it, phase["phase"] == "position" ? 'P' : 'V', "", seen);
                 }
             }
@@ -240,13 +240,13 @@ TEST_CASE("docs/trace-format.md lists the words as the word list has them") {
     // IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*' writes the section from the list.
     const std::string path = IMPULSE_SOURCE_DIR "/docs/trace-format.md";
     const std::string committed = file_text(path);
-    const std::string generated = io::with_trace_word_docs(committed, io::trace_word_docs());
+    const std::string generated = formats::with_trace_word_docs(committed, formats::trace_word_docs());
     if (generated != committed && std::getenv("IMPULSE_WRITE_DOCS")) {
         std::ofstream(path, std::ios::binary) << generated;
         MESSAGE("wrote the word tables of " << path);
         return;
     }
-    REQUIRE(committed.find(io::trace_docs_begin) != std::string::npos);
+    REQUIRE(committed.find(formats::trace_docs_begin) != std::string::npos);
     CHECK_MESSAGE(generated == committed,
                   "docs/trace-format.md's word tables differ from engine/record/word_table.hpp; regenerate them with "
                   "IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*'");
@@ -256,7 +256,7 @@ namespace {
 
 // A committed trace of format 1 (tests/data/format1, written by the last format-1 build) and the same run today.
 struct Format1Pair {
-    io::json old_document;
+    formats::json old_document;
     Trace read;     // the format-1 file read
     Trace current;  // the same case and settings resolved now
 };
@@ -264,8 +264,8 @@ struct Format1Pair {
 Format1Pair format1_pair(const std::string& file, const std::string& name, const std::string& preset,
                          const std::vector<std::string>& set = {}) {
     Format1Pair pair;
-    pair.old_document = io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/tests/data/format1/" + file));
-    pair.read = io::read_trace(pair.old_document);
+    pair.old_document = formats::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/tests/data/format1/" + file));
+    pair.read = formats::read_trace(pair.old_document);
     pair.current = resolved_case(name, preset, set);
     return pair;
 }
@@ -281,16 +281,16 @@ TEST_CASE("a format-1 trace opens: every value where format 2 keeps it, and the 
     CHECK(velocity_based.read.version == 1);
     CHECK(velocity_based.read.frames == velocity_based.current.frames);
     // Written again, it is format 2, key for key what today's run writes.
-    CHECK(io::trace_json(velocity_based.read) == io::trace_json(velocity_based.current));
+    CHECK(formats::trace_json(velocity_based.read) == formats::trace_json(velocity_based.current));
 
     // The split impulse's push was `amount` in format 1: it is read as push_impulse, in N·s.
     const Format1Pair split = format1_pair("tilted_box.pgs_split.trace.json", "cases/tilted_box", "pgs_split");
     CHECK(split.read.frames == split.current.frames);
-    CHECK(io::trace_json(split.read) == io::trace_json(split.current));
-    const io::json upgraded = io::trace_json(split.read);
+    CHECK(formats::trace_json(split.read) == formats::trace_json(split.current));
+    const formats::json upgraded = formats::trace_json(split.read);
     bool pushed = false;
-    for (const io::json& phase : upgraded["frames"][0]["phases"])
-        for (const io::json& it : phase["iterations"])
+    for (const formats::json& phase : upgraded["frames"][0]["phases"])
+        for (const formats::json& it : phase["iterations"])
             if (it.contains("method") && it["method"] == "split_impulse") {
                 CHECK(it.contains("push_impulse"));
                 CHECK_FALSE(it.contains("amount"));
@@ -300,16 +300,16 @@ TEST_CASE("a format-1 trace opens: every value where format 2 keeps it, and the 
 }
 
 TEST_CASE("upgrading a format-1 document moves exactly the renamed keys and sets the version") {
-    io::json document =
-        io::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/tests/data/format1/tilted_box.velocity_based.trace.json"));
-    const io::json& old_position = document["frames"][0]["phases"][0]["iterations"][0];
-    const io::json linear_move = old_position["linear_move"];
-    const io::json total = old_position["total_inertia"];
-    const io::json impulse = document["frames"][0]["phases"][1]["iterations"][0]["impulse_contact"];
-    const io::json point_velocity = document["frames"][0]["contacts"][0]["velocity_per_unit_impulse"];
-    REQUIRE(io::upgrade_trace_document(document) == std::optional<int>(1));
+    formats::json document = formats::parse_json_text(
+        file_text(IMPULSE_SOURCE_DIR "/tests/data/format1/tilted_box.velocity_based.trace.json"));
+    const formats::json& old_position = document["frames"][0]["phases"][0]["iterations"][0];
+    const formats::json linear_move = old_position["linear_move"];
+    const formats::json total = old_position["total_inertia"];
+    const formats::json impulse = document["frames"][0]["phases"][1]["iterations"][0]["impulse_contact"];
+    const formats::json point_velocity = document["frames"][0]["contacts"][0]["velocity_per_unit_impulse"];
+    REQUIRE(formats::upgrade_trace_document(document) == std::optional<int>(1));
     CHECK(document["version"] == trace_format_version);
-    const io::json& position = document["frames"][0]["phases"][0]["iterations"][0];
+    const formats::json& position = document["frames"][0]["phases"][0]["iterations"][0];
     CHECK(position["move_split"]["linear_move"] == linear_move);
     CHECK(position["penetration_inertia"] == total);
     CHECK_FALSE(position.contains("linear_move"));
@@ -318,27 +318,27 @@ TEST_CASE("upgrading a format-1 document moves exactly the renamed keys and sets
     CHECK(document["frames"][0]["phases"][1]["iterations"][0]["impulse"] == impulse);
     CHECK(document["frames"][0]["contacts"][0]["point_velocity_per_unit_impulse"] == point_velocity);
     // A current document is left alone.
-    CHECK_FALSE(io::upgrade_trace_document(document).has_value());
+    CHECK_FALSE(formats::upgrade_trace_document(document).has_value());
     // The note names the file and the two formats in one line.
-    const std::string note = io::format1_note("old.json");
+    const std::string note = formats::format1_note("old.json");
     CHECK(note.find("old.json") != std::string::npos);
     CHECK(note.find("format 1") != std::string::npos);
     CHECK(note.find('\n') == std::string::npos);
 }
 
 TEST_CASE("a format-2 trace that records a split impulse's push as amount is refused with the path") {
-    io::json document = io::trace_json(resolved_case("cases/tilted_box", "pgs_split"));
-    for (io::json& phase : document["frames"][0]["phases"])
-        for (io::json& it : phase["iterations"])
+    formats::json document = formats::trace_json(resolved_case("cases/tilted_box", "pgs_split"));
+    for (formats::json& phase : document["frames"][0]["phases"])
+        for (formats::json& it : phase["iterations"])
             if (it.contains("push_impulse")) {
                 it["amount"] = it["push_impulse"];
                 it.erase("push_impulse");
                 break;
             }
     try {
-        io::read_trace(document);
+        formats::read_trace(document);
         FAIL("read");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         CHECK(e.where().find("frames[0].phases[") == 0);
         CHECK(e.problem().find("push_impulse") != std::string::npos);
     }

@@ -117,7 +117,7 @@ TEST_CASE("a changed setting re-runs the case and the screenshot shows the new r
     const CliResult r = run_cli({"inspect", ruler, "--headless", "--script", script.string()});
     INFO(r.err);
     REQUIRE(r.code == 0);
-    const Trace free = io::read_trace_text(read(dir.file("free.json")));
+    const Trace free = formats::read_trace_text(read(dir.file("free.json")));
     CHECK(free.scene.settings.angular_limit.policy == AngularLimitPolicy::none);
     CHECK(differing_pixels(load_png(dir.file("limited.png")), load_png(dir.file("free.png"))) > 0);
 }
@@ -193,10 +193,10 @@ TEST_CASE("a scene is simulated first, then inspected frame by frame") {
                                  "--script", script.string()});
     INFO(r.err);
     REQUIRE(r.code == 0);
-    const Trace trace = io::read_trace_text(read(dir.file("t.json")));
+    const Trace trace = formats::read_trace_text(read(dir.file("t.json")));
     CHECK(trace.frames.size() == 3);
-    const Scene scene = io::read_scene_text(read(IMPULSE_SOURCE_DIR "/scenes/stack_3.json"));
-    CHECK(trace == inspect::run_frames(scene, TraceFilter{}, 3));
+    const Scene scene = formats::read_scene_text(read(IMPULSE_SOURCE_DIR "/scenes/stack_3.json"));
+    CHECK(trace == model::run_frames(scene, TraceFilter{}, 3));
 }
 
 TEST_CASE("--bench-frames prints frame-time percentiles and the time the file took to open") {
@@ -215,10 +215,10 @@ namespace impulse::test {
 TEST_CASE("every lesson runs headless: annotated text, its trace and one screenshot per step") {
     TempDir dir;
     ::setenv("XDG_CONFIG_HOME", dir.file("cfg").c_str(), 1);
-    const std::vector<std::filesystem::path> files = lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
+    const std::vector<std::filesystem::path> files = course::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
     REQUIRE(files.size() == 13);
     for (const std::filesystem::path& file : files) {
-        const lessons::Lesson lesson = lessons::read_lesson(file);
+        const course::Lesson lesson = course::read_lesson(file);
         const std::string number = std::to_string(lesson.number);
         const auto out = dir.file("lesson-" + number);
         const CliResult r = run_cli({"lesson", number, "--headless", "--out", out.string(), "--size", "640x400"});
@@ -234,7 +234,7 @@ TEST_CASE("every lesson runs headless: annotated text, its trace and one screens
                 CHECK(distinct_colours(image) > 100);
             }
         CHECK(pictures == lesson.steps.size());
-        CHECK(io::read_trace_text(read(out / "trace.json")).frames.size() >= 1);
+        CHECK(formats::read_trace_text(read(out / "trace.json")).frames.size() >= 1);
     }
     // Showing answers in text does not count as answering: no progress is written.
     CHECK_FALSE(std::filesystem::exists(dir.file("cfg/impulse-lab/progress.json")));

@@ -11,11 +11,11 @@
 namespace impulse::test {
 
 TEST_CASE("every step of every lesson fits the lesson panel at 1024x768, 1280x800 and 1920x1080") {
-    const std::vector<std::filesystem::path> files = lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
+    const std::vector<std::filesystem::path> files = course::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
     REQUIRE(files.size() == 13);
     int states = 0, items = 0;
     for (const std::filesystem::path& file : files) {
-        lessons::PreparedLesson lesson = lessons::prepare_lesson(lessons::read_lesson(file));
+        course::PreparedLesson lesson = course::prepare_lesson(course::read_lesson(file));
         for (const std::pair<int, int>& size : {std::pair{1024, 768}, std::pair{1280, 800}, std::pair{1920, 1080}}) {
             const int width = size.first, height = size.second;  // named, not bound: INFO captures them
             const gui::LayoutReport report = gui::check_lesson_layout(lesson, width, height);
@@ -34,12 +34,12 @@ TEST_CASE("every step of every lesson fits the lesson panel at 1024x768, 1280x80
 namespace impulse::test {
 
 TEST_CASE("dragging the border beside the lesson widens its panel, and the layout keeps the new width") {
-    lessons::PreparedLesson lesson =
-        lessons::prepare_lesson(lessons::read_lesson(lessons::lesson_files(IMPULSE_SOURCE_DIR "/lessons").front()));
+    course::PreparedLesson lesson =
+        course::prepare_lesson(course::read_lesson(course::lesson_files(IMPULSE_SOURCE_DIR "/lessons").front()));
     gui::OffscreenLayout layout(1280, 800);
     gui::UiState state;
     state.lesson.emplace(
-        gui::LessonState{lessons::LessonRun(lesson, nullptr, std::nullopt), {}, -1, true, {}, -1, true});
+        gui::LessonState{course::LessonRun(lesson, nullptr, std::nullopt), {}, -1, true, {}, -1, true});
     state.record_layout = true;
     layout.frame(lesson.session, state);
     // The default: 36 % of 1280 px.

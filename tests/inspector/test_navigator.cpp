@@ -16,7 +16,7 @@
 #include <vector>
 
 using namespace impulse;
-using namespace impulse::inspect;
+using namespace impulse::model;
 
 namespace {
 
@@ -92,24 +92,24 @@ std::string step_at(const Trace& trace, const Cursor& cursor) {
 }
 
 // The error resolve_goto (or parse_goto) raises for `text`; fails the test when there is none.
-io::InputError goto_error(const Trace& trace, const std::string& text) {
+formats::InputError goto_error(const Trace& trace, const std::string& text) {
     try {
         resolve_goto(trace, parse_goto(text, "--goto"), "--goto");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         return e;
     }
     FAIL("--goto " << text << " was accepted");
-    return io::InputError("", "");
+    return formats::InputError("", "");
 }
 
-io::InputError parse_error(const std::string& text, const std::string& where) {
+formats::InputError parse_error(const std::string& text, const std::string& where) {
     try {
         parse_goto(text, where);
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         return e;
     }
     FAIL("\"" << text << "\" parsed");
-    return io::InputError("", "");
+    return formats::InputError("", "");
 }
 
 bool contains(const std::string& text, const std::string& part) {
@@ -325,7 +325,7 @@ TEST_CASE("a malformed goto spec is an input error at the place it came from") {
     for (const char* bad : {"", "frame", "fram=1", "frame=x", "frame=-1", "iteration=1.5", "contact=2x",
                             "phase=friction", "step=", "frame=0,,phase=velocity"}) {
         CAPTURE(bad);
-        const io::InputError e = parse_error(bad, where);
+        const formats::InputError e = parse_error(bad, where);
         CHECK(e.where() == where);
         CHECK_FALSE(e.problem().empty());
     }
@@ -336,7 +336,7 @@ TEST_CASE("a malformed goto spec is an input error at the place it came from") {
 
 TEST_CASE("a goto names what the trace does not have") {
     const Trace trace = opened("cases/ruler");
-    const io::InputError frame = goto_error(trace, "frame=5");
+    const formats::InputError frame = goto_error(trace, "frame=5");
     CHECK(frame.where() == "--goto");
     CHECK(contains(frame.problem(), "frame 5 is not in the trace"));
     CHECK(contains(frame.problem(), "recorded frames: 0..0"));

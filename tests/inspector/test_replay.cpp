@@ -16,7 +16,7 @@
 #include <vector>
 
 using namespace impulse;
-using namespace impulse::inspect;
+using namespace impulse::model;
 
 namespace {
 

@@ -2,7 +2,7 @@
 // with a changed setting while keeping the cursor's place, and --script lines parsed, performed and exported
 // exactly as the window's keys and buttons do them.
 
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 #include "formats/trace_json.hpp"
@@ -24,7 +24,7 @@
 #include <vector>
 
 using namespace impulse;
-using namespace impulse::inspect;
+using namespace impulse::model;
 
 namespace {
 
@@ -41,44 +41,44 @@ std::string read_text(const std::filesystem::path& path) {
     return text.str();
 }
 
-io::InputError open_error(const std::string& path, const OpenOptions& options) {
+formats::InputError open_error(const std::string& path, const OpenOptions& options) {
     try {
         Session::open(path, options);
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         return e;
     }
     FAIL(path << " opened");
-    return io::InputError("", "");
+    return formats::InputError("", "");
 }
 
-cli::FileError file_error(const std::string& path) {
+formats::FileError file_error(const std::string& path) {
     try {
         Session::open(path, {});
-    } catch (const cli::FileError& e) {
+    } catch (const formats::FileError& e) {
         return e;
     }
     FAIL(path << " opened");
     return {};
 }
 
-io::InputError script_error(const std::string& text) {
+formats::InputError script_error(const std::string& text) {
     try {
         parse_script(text);
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         return e;
     }
     FAIL("the script parsed:\n" << text);
-    return io::InputError("", "");
+    return formats::InputError("", "");
 }
 
-io::InputError perform_error(Session& session, const std::string& action, ActionHost* host = nullptr) {
+formats::InputError perform_error(Session& session, const std::string& action, ActionHost* host = nullptr) {
     try {
         perform(session, parse_action(action, 0), "test action", host);
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         return e;
     }
     FAIL("\"" << action << "\" was performed");
-    return io::InputError("", "");
+    return formats::InputError("", "");
 }
 
 void act(Session& session, const std::string& action, ActionHost* host = nullptr) {
@@ -144,14 +144,15 @@ TEST_CASE("a scene file opens as a scene, simulated for the first second or the 
 TEST_CASE("a case is resolved once: --frames is refused") {
     OpenOptions options;
     options.frames = 3;
-    const io::InputError e = open_error(scenes + "cases/ruler.json", options);
+    const formats::InputError e = open_error(scenes + "cases/ruler.json", options);
     CHECK(e.where() == "--frames");
 }
 
 TEST_CASE("a trace file opens as the trace it holds, equal value for value") {
     test::TempDir dir;
     const Trace recorded = opened("cases/sliding_box").trace();
-    const std::string path = dir.write("sliding_box.trace.json", io::format_json(io::trace_json(recorded))).string();
+    const std::string path =
+        dir.write("sliding_box.trace.json", formats::format_json(formats::trace_json(recorded))).string();
     const Session s = Session::open(path, {});
     CHECK(s.kind() == SourceKind::trace_file);
     CHECK(s.trace() == recorded);
@@ -161,7 +162,8 @@ TEST_CASE("a trace file opens as the trace it holds, equal value for value") {
 TEST_CASE("a trace is shown as recorded: --set, --preset, --frames and --record are refused naming the flag") {
     test::TempDir dir;
     const std::string path =
-        dir.write("ruler.trace.json", io::format_json(io::trace_json(opened("cases/ruler").trace()))).string();
+        dir.write("ruler.trace.json", formats::format_json(formats::trace_json(opened("cases/ruler").trace())))
+            .string();
     OpenOptions set;
     set.settings = {"velocity_epsilon=0.5"};
     CHECK(open_error(path, set).where() == "--set");
@@ -182,7 +184,7 @@ TEST_CASE("a bad file is a file error naming the file and the JSON path of the p
         "bodies": [{"mass": -1}],
         "contacts": [{"bodies": [0, null], "point": [0, 0, 0], "normal": [0, 1, 0]}]})")
                                 .string();
-    const cli::FileError e = file_error(bad);
+    const formats::FileError e = file_error(bad);
     CHECK(e.file == bad);
     CHECK(e.where == "bodies[0].mass");
     CHECK_FALSE(e.problem.empty());
@@ -255,7 +257,7 @@ TEST_CASE("a bad setting changes nothing and names where it came from") {
     try {
         s.set("no_such_setting=1", "line 4");
         FAIL("accepted");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         // The source of the change, then the setting, as "--set velocity_epsilon" names a flag's part.
         CHECK(e.where() == "line 4 no_such_setting");
     }
@@ -340,7 +342,7 @@ TEST_CASE("a line that is not an action is an input error at its line number") {
     for (const auto& [text, where] : bad) {
         const auto& script = text;  // clang 14 cannot capture a structured binding in CAPTURE's lambda
         CAPTURE(script);
-        const io::InputError e = script_error(text);
+        const formats::InputError e = script_error(text);
         CHECK(e.where() == where);
         CHECK_FALSE(e.problem().empty());
     }
@@ -350,7 +352,7 @@ TEST_CASE("a line that is not an action is an input error at its line number") {
     try {
         parse_action("jump", 0);
         FAIL("accepted");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         CHECK(e.where() == "action");
     }
 }
@@ -387,7 +389,7 @@ TEST_CASE("a move past the end of the trace is an error and leaves the cursor wh
     // 16 tables in all (see the navigator's tests): 15 steps forward reach the last, 16 would leave the trace.
     act(s, "next step 4");
     const Cursor before = *s.cursor();
-    const io::InputError e = perform_error(s, "next step 12");
+    const formats::InputError e = perform_error(s, "next step 12");
     CHECK(e.where() == "test action");
     CHECK(contains(e.problem(), "already at the end of the trace"));
     CHECK(s.cursor() == before);
@@ -423,11 +425,11 @@ TEST_CASE("export trace writes the session's trace, which reads back equal") {
     act(s, "export trace " + file.string());
     const std::string text = read_text(file);
     CHECK(text == exported_trace(s));
-    CHECK(io::read_trace_text(text) == s.trace());
+    CHECK(formats::read_trace_text(text) == s.trace());
     // After a re-run the export is the new trace.
     act(s, "set velocity_epsilon 0.5");
     act(s, "export trace " + file.string());
-    CHECK(io::read_trace_text(read_text(file)) == s.trace());
+    CHECK(formats::read_trace_text(read_text(file)) == s.trace());
     CHECK(s.trace().scene.settings.velocity_epsilon == 0.5);
 }
 
@@ -479,7 +481,7 @@ TEST_CASE("moves and exports of a session with nothing recorded are input errors
     try {
         exported_table(s);
         FAIL("exported");
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         CHECK(e.where() == "export table");
     }
     // first and last have nowhere to go and stay without a cursor.

@@ -48,17 +48,17 @@ TEST_CASE("every row of every table of the shipped cases under every preset is a
     for (const char* name : {"cases/ruler", "cases/sliding_box", "cases/tilted_box", "cases/three_objects_drawn",
                              "cases/oblique_friction", "stack_3"}) {
         for (std::string_view preset : preset_names()) {
-            inspect::OpenOptions options;
+            model::OpenOptions options;
             options.preset = std::string(preset);
             options.frames = 2;
             const std::string file(name);
             if (file.starts_with("cases/")) options.frames.reset();
             const Trace trace = opened(file, options);
             for (std::size_t f = 0; f < trace.frames.size(); ++f)
-                for (inspect::Stage stage : inspect::stages(trace.frames[f]))
-                    for (int i = 0; i < inspect::item_count(trace.frames[f], stage); ++i)
+                for (model::Stage stage : model::stages(trace.frames[f]))
+                    for (int i = 0; i < model::item_count(trace.frames[f], stage); ++i)
                         for (const explain::StepTable& t :
-                             inspect::step_tables(trace, inspect::Cursor{static_cast<int>(f), stage, i, 0}))
+                             model::step_tables(trace, model::Cursor{static_cast<int>(f), stage, i, 0}))
                             for (const explain::Row& r : t.rows) {
                                 INFO(name << " " << preset << " " << t.step << " " << r.quantity);
                                 REQUIRE(explain::find_annotation(r.key) != nullptr);

@@ -9,11 +9,11 @@ namespace impulse::test {
 
 inline const std::string shipped_scenes = IMPULSE_SOURCE_DIR "/scenes/";
 
-inline inspect::Session opened_session(const std::string& name, const inspect::OpenOptions& options = {}) {
-    return inspect::Session::open(shipped_scenes + name + ".json", options);
+inline model::Session opened_session(const std::string& name, const model::OpenOptions& options = {}) {
+    return model::Session::open(shipped_scenes + name + ".json", options);
 }
 
-inline Trace opened(const std::string& name, const inspect::OpenOptions& options = {}) {
+inline Trace opened(const std::string& name, const model::OpenOptions& options = {}) {
     return opened_session(name, options).trace();
 }
 

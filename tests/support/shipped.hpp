@@ -14,7 +14,7 @@ inline Scene shipped(const std::string& name) {
     std::ifstream in(IMPULSE_SOURCE_DIR "/scenes/" + name + ".json");
     std::stringstream text;
     text << in.rdbuf();
-    return io::read_scene_text(text.str());
+    return formats::read_scene_text(text.str());
 }
 
 }  // namespace impulse::test

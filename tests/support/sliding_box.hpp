@@ -23,7 +23,7 @@ inline const Vec3 sliding_box_half_size{0.4, 0.25, 0.3};
 // rounding falls), turned `yaw_deg` about +y, moving at `velocity`; the scene's settings are `preset`'s.
 inline Scene sliding_box(const std::string& preset_name, double yaw_deg = 30.0, const Vec3& velocity = {4, 0, 0}) {
     Scene scene;
-    io::apply_setting(scene, "preset=" + preset_name, "--set");
+    formats::apply_setting(scene, "preset=" + preset_name, "--set");
     scene.materials[default_material] = Material{0.0, sliding_box_friction};
     scene.ground = Ground{};
     RigidBody box;

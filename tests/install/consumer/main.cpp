@@ -16,7 +16,7 @@ int main(int argc, char** argv) {
     std::ifstream in(argv[1]);
     std::stringstream text;
     text << in.rdbuf();
-    impulse::Scene scene = impulse::io::read_scene_text(text.str(), std::string("book"));
+    impulse::Scene scene = impulse::formats::read_scene_text(text.str(), std::string("book"));
     std::vector<impulse::RigidBody> bodies = scene.bodies;
     impulse::resolve_contacts(bodies, scene.contacts, scene.settings);
     const auto& v = bodies[0].velocity;

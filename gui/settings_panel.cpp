@@ -14,13 +14,13 @@ namespace impulse::gui {
 
 namespace {
 
-void set(inspect::Session& session, UiState& state, inspect::ActionHost& host, const std::string& name,
+void set(model::Session& session, UiState& state, model::ActionHost& host, const std::string& name,
          const std::string& value) {
-    act(session, state, inspect::Action{inspect::ActionKind::set, name + "=" + value}, host);
+    act(session, state, model::Action{model::ActionKind::set, name + "=" + value}, host);
 }
 
 template <typename Enum, std::size_t N>
-void enum_combo(inspect::Session& session, UiState& state, inspect::ActionHost& host, const char* label,
+void enum_combo(model::Session& session, UiState& state, model::ActionHost& host, const char* label,
                 const std::string& name, const NameTable<Enum, N>& names, Enum current) {
     const std::string shown(name_of(names, current));
     if (!ImGui::BeginCombo(label, shown.c_str())) return;
@@ -31,7 +31,7 @@ void enum_combo(inspect::Session& session, UiState& state, inspect::ActionHost& 
 }
 
 // A number applied when Enter is pressed, so typing does not re-run the scene at every key.
-void number_field(inspect::Session& session, UiState& state, inspect::ActionHost& host, const char* label,
+void number_field(model::Session& session, UiState& state, model::ActionHost& host, const char* label,
                   const std::string& name, double current) {
     double value = current;
     if (ImGui::InputDouble(label, &value, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue) && value != current) {
@@ -41,21 +41,21 @@ void number_field(inspect::Session& session, UiState& state, inspect::ActionHost
     }
 }
 
-void integer_field(inspect::Session& session, UiState& state, inspect::ActionHost& host, const char* label,
+void integer_field(model::Session& session, UiState& state, model::ActionHost& host, const char* label,
                    const std::string& name, int current) {
     int value = current;
     if (ImGui::InputInt(label, &value, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) && value != current)
         set(session, state, host, name, std::to_string(value));
 }
 
-void bool_field(inspect::Session& session, UiState& state, inspect::ActionHost& host, const char* label,
+void bool_field(model::Session& session, UiState& state, model::ActionHost& host, const char* label,
                 const std::string& name, bool current) {
     bool value = current;
     if (ImGui::Checkbox(label, &value)) set(session, state, host, name, value ? "true" : "false");
 }
 
 // The widget of each setting a method may read (methods/method_table.hpp lists which), in the order shown.
-void method_setting(inspect::Session& session, UiState& state, inspect::ActionHost& host, std::string_view key,
+void method_setting(model::Session& session, UiState& state, model::ActionHost& host, std::string_view key,
                     const ResolverSettings& s) {
     const std::string name(key);
     if (key == "position_epsilon") number_field(session, state, host, "position ε (m)", name, s.position_epsilon);
@@ -87,7 +87,7 @@ void method_setting(inspect::Session& session, UiState& state, inspect::ActionHo
 
 }  // namespace
 
-void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHost& host) {
+void draw_settings(model::Session& session, UiState& state, model::ActionHost& host) {
     const ResolverSettings s = session.settings();  // a copy: a change re-runs and replaces the trace
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
     if (ImGui::BeginCombo("preset", s.preset.c_str())) {
@@ -141,14 +141,13 @@ void draw_settings(inspect::Session& session, UiState& state, inspect::ActionHos
     enum_combo(session, state, host, "orientation update", "orientation_update", orientation_update_names,
                s.orientation_update);
     ImGui::PopItemWidth();
-    ImGui::TextDisabled("A change re-runs %s.", session.kind() == inspect::SourceKind::scene_file ? "the scene"
-                                                : session.kind() == inspect::SourceKind::case_file
-                                                    ? "the case"
-                                                    : "the trace's scene");
+    ImGui::TextDisabled("A change re-runs %s.", session.kind() == model::SourceKind::scene_file  ? "the scene"
+                                                : session.kind() == model::SourceKind::case_file ? "the case"
+                                                                                                 : "the trace's scene");
 }
 
-void draw_export(inspect::Session& session, UiState& state, inspect::ActionHost& host) {
-    using inspect::ActionKind;
+void draw_export(model::Session& session, UiState& state, model::ActionHost& host) {
+    using model::ActionKind;
     struct Row {
         const char* button;
         ActionKind kind;

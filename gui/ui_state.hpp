@@ -35,14 +35,14 @@ struct SceneCamera {
 // Everything derived from (trace, cursor), rebuilt only when either changes.
 struct CursorViews {
     int revision = -1;
-    std::optional<inspect::Cursor> cursor;
-    inspect::DerivationView derivation;
-    std::vector<inspect::ContactRow> contacts;
-    inspect::BodiesAtCursor bodies;
+    std::optional<model::Cursor> cursor;
+    model::DerivationView derivation;
+    std::vector<model::ContactRow> contacts;
+    model::BodiesAtCursor bodies;
     std::vector<explain::StepTable> steps;  // of the cursor's item, for the navigator's step list
     // Per frame: the phase curves and the largest impulse, which scales the impulse arrows.
     int frame = -1;
-    std::vector<inspect::PhaseCurve> curves;
+    std::vector<model::PhaseCurve> curves;
     double largest_impulse = 0.0;
     bool scroll_to_cursor = false;  // the panels bring the cursor's rows into view once after a move
 };
@@ -50,12 +50,12 @@ struct CursorViews {
 // A lesson open in the window: the student's run through it, what they are typing or have picked, and what
 // its open questions hide.
 struct LessonState {
-    lessons::LessonRun run;
+    course::LessonRun run;
     std::array<char, 64> typed{};
     int chosen = -1;           // a choose question's option, from 0; -1 none
     bool focus_answer = true;  // give the answer field the keyboard at the next frame
     // Worked out on the session's trace; again when a setting re-runs it.
-    std::vector<std::optional<lessons::QuestionReach>> reaches;
+    std::vector<std::optional<course::QuestionReach>> reaches;
     int reaches_revision = -1;
     // The headless pictures of `lesson --headless`: each step shown with the questions before it answered.
     bool preview = false;
@@ -84,7 +84,7 @@ struct UiState {
     SceneCamera camera;
     PanelSizes sizes;
     std::optional<LessonState> lesson;
-    lessons::Mask mask;  // what the lesson's open questions hide (nothing without a lesson)
+    course::Mask mask;  // what the lesson's open questions hide (nothing without a lesson)
     CursorViews views;
     std::array<char, 512> trace_path{"trace.json"};
     std::array<char, 512> table_path{"table.csv"};
@@ -100,15 +100,15 @@ struct UiState {
 };
 
 // Rebuilds `state.views` (and the lesson's mask) if the session's trace or cursor changed since the last call.
-void refresh_views(const inspect::Session& session, UiState& state);
+void refresh_views(const model::Session& session, UiState& state);
 // Works out the mask again: after an answer or a skip, and when the trace changed.
-void refresh_mask(const inspect::Session& session, UiState& state);
+void refresh_mask(const model::Session& session, UiState& state);
 
 // Goes to step `step` of the open lesson: its place in the trace, and the step's text and question.
-void go_to_lesson_step(inspect::Session& session, UiState& state, int step);
+void go_to_lesson_step(model::Session& session, UiState& state, int step);
 
 // Carries out an action from a key or a button; an error becomes the status message instead of an exit.
-void act(inspect::Session& session, UiState& state, const inspect::Action& action, inspect::ActionHost& host);
+void act(model::Session& session, UiState& state, const model::Action& action, model::ActionHost& host);
 
 // Records the last ImGui item (its rectangle and the window it shows in) while the layout is recorded.
 // `scrolls`: that window scrolls vertically, so the item may lie below its bottom until scrolled to.

@@ -165,7 +165,7 @@ void draw_scale_bar(ImDrawList* draw, ImVec2 at, float scale) {
 
 }  // namespace
 
-void draw_scene_view(const inspect::Session& session, UiState& state) {
+void draw_scene_view(const model::Session& session, UiState& state) {
     SceneCamera& camera = state.camera;
     const char* planes[] = {"Front (x, y)", "Top (x, z)", "Side (z, y)", "3D (drag to turn)"};
     // The view buttons flow onto a second line when the panel is too narrow for one (1024 px wide).
@@ -215,7 +215,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(v.cursor->frame)];
     // A lesson's open question hides the bodies a hidden change moved: each is drawn where it was last
     // shown, without the move or its velocities.
-    const lessons::Mask& mask = state.mask;
+    const course::Mask& mask = state.mask;
     std::vector<BodyState> after = v.bodies.after, before_shown = v.bodies.before;
     std::vector<char> concealed(after.size(), 0);
     for (std::size_t b = 0; b < after.size(); ++b) {
@@ -223,9 +223,9 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
         if (mask.hides_body(*v.cursor, body, false, v.bodies.before[b])) {
             // Where a hidden change left it last shown; a body hidden only for its values (equal to an
             // answer) is drawn where it is, without its values anywhere.
-            const std::optional<inspect::Cursor> until = mask.body_shown_until(*v.cursor, body);
+            const std::optional<model::Cursor> until = mask.body_shown_until(*v.cursor, body);
             const BodyState last = !until                            ? v.bodies.before[b]
-                                   : until->frame == v.cursor->frame ? inspect::bodies_at(trace, *until).before[b]
+                                   : until->frame == v.cursor->frame ? model::bodies_at(trace, *until).before[b]
                                                                      : frame.bodies_before[b];
             after[b] = before_shown[b] = last;
             concealed[b] = 1;
@@ -247,7 +247,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
         low = low.cwiseMin(q - Vec3::Constant(r));
         high = high.cwiseMax(q + Vec3::Constant(r));
     }
-    for (const inspect::ContactRow& row : v.contacts) {
+    for (const model::ContactRow& row : v.contacts) {
         const Vec3 q = project.in_view(row.prepared->point);
         low = low.cwiseMin(q), high = high.cwiseMax(q);
     }
@@ -265,7 +265,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
         // A case's contacts with the world (body 1) touch a surface the file does not describe as a shape:
         // drawn as a plane through each contact point across its normal, once per distinct plane.
         std::vector<HalfSpace> planes;
-        for (const inspect::ContactRow& row : v.contacts) {
+        for (const model::ContactRow& row : v.contacts) {
             if (row.prepared->bodies[1] != world_body || planes.size() >= 8) continue;
             const HalfSpace plane{row.prepared->normal, row.prepared->normal.dot(row.prepared->point)};
             const bool seen = std::any_of(planes.begin(), planes.end(), [&](const HalfSpace& p) {
@@ -280,7 +280,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
     // Bodies: moved ones in orange, with a faint ghost where they were before this item's move.
     std::vector<char> moved(after.size(), 0);
     for (int b : moved_bodies) moved[static_cast<std::size_t>(b)] = 1;
-    const bool position_move = v.cursor->stage == inspect::Stage::position;
+    const bool position_move = v.cursor->stage == model::Stage::position;
     Pen pen(draw);
     for (std::size_t i = 0; i < after.size(); ++i) {
         if (moved[i] && position_move)
@@ -291,7 +291,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
                   moved[i] ? IM_COL32(255, 170, 60, 255) : IM_COL32(150, 170, 205, 255), moved[i] ? 2.0f : 1.0f);
     }
     // Velocity phase: each changed body's velocity before (faint) and after, as the distance it covers in 0.1 s.
-    if (v.cursor->stage == inspect::Stage::velocity)
+    if (v.cursor->stage == model::Stage::velocity)
         for (int b : moved_bodies) {
             const auto i = static_cast<std::size_t>(b);
             arrow(draw, project(after[i].position), project(after[i].position + before_shown[i].velocity * 0.1),
@@ -301,14 +301,14 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
         }
 
     // Contacts: penetration depth in red along -n, impulse so far in violet, status by colour.
-    const int current = inspect::contact_at(trace, *v.cursor);
+    const int current = model::contact_at(trace, *v.cursor);
     const float impulse_pixels = 70.0f;
     // In a crowded frame (the 1000-box grid has 4000 contacts) arrows and dots at every contact hide the
     // bodies: then only the current contact and the contacts sharing one of its bodies get theirs (the
     // contacts list still shows every status).
     constexpr std::size_t crowded = 200;
     std::vector<char> shares_body(after.size() + 1, 0);
-    if (const ContactPreparation* c = inspect::preparation_of(frame, current))
+    if (const ContactPreparation* c = model::preparation_of(frame, current))
         for (int b : c->bodies)
             if (b != world_body) shares_body[static_cast<std::size_t>(b)] = 1;
     const auto near_current = [&](const ContactPreparation& c) {
@@ -317,7 +317,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
         return false;
     };
     double current_penetration = 0.0;
-    for (const inspect::ContactRow& row : v.contacts) {
+    for (const model::ContactRow& row : v.contacts) {
         const ContactPreparation& c = *row.prepared;
         if (c.contact == current) current_penetration = row.penetration;
         const ImVec2 p = project(c.point);
@@ -334,15 +334,15 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
                   ImVec2(p.x + static_cast<float>(direction.x()) * k, p.y - static_cast<float>(direction.y()) * k),
                   IM_COL32(190, 120, 255, 200), 1.0f);
         }
-        const ImU32 colour = row.status == inspect::ContactStatus::chosen    ? IM_COL32(255, 230, 60, 255)
-                             : row.status == inspect::ContactStatus::waiting ? IM_COL32(240, 130, 60, 255)
-                                                                             : IM_COL32(130, 190, 130, 255);
+        const ImU32 colour = row.status == model::ContactStatus::chosen    ? IM_COL32(255, 230, 60, 255)
+                             : row.status == model::ContactStatus::waiting ? IM_COL32(240, 130, 60, 255)
+                                                                           : IM_COL32(130, 190, 130, 255);
         // Small squares: two triangles each, for scenes with thousands of contacts.
-        if (v.contacts.size() <= crowded || row.status == inspect::ContactStatus::chosen || near_current(c))
+        if (v.contacts.size() <= crowded || row.status == model::ContactStatus::chosen || near_current(c))
             pen.dot(p, c.contact == current ? 4.0f : 2.0f, colour);
     }
     // The current contact: ringed, with its normal and, in the velocity phase, this iteration's impulse.
-    if (const ContactPreparation* c = inspect::preparation_of(frame, current)) {
+    if (const ContactPreparation* c = model::preparation_of(frame, current)) {
         const ImVec2 p = project(c->point);
         draw->AddCircle(p, 9.0f, IM_COL32(255, 230, 60, 255), 0, 2.0f);
         // The normal, unless a lesson's open question hides it (which way the engine turned a contact).
@@ -353,7 +353,7 @@ void draw_scene_view(const inspect::Session& session, UiState& state) {
             arrow(draw, p, ImVec2(p.x + static_cast<float>(n.x()) * 45.0f, p.y - static_cast<float>(n.y()) * 45.0f),
                   IM_COL32(90, 225, 120, 255), 2.0f);
         }
-        if (v.cursor->stage == inspect::Stage::velocity) {
+        if (v.cursor->stage == model::Stage::velocity) {
             const VelocityIteration& it = frame.velocity.iterations[static_cast<std::size_t>(v.cursor->item)];
             explain::Row impulse_row;
             impulse_row.key = "impulse_world";

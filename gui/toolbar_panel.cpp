@@ -8,8 +8,8 @@ namespace impulse::gui {
 
 namespace {
 
-using inspect::Action;
-using inspect::ActionKind;
+using model::Action;
+using model::ActionKind;
 
 struct Button {
     const char* label;
@@ -49,7 +49,7 @@ Action key_action(int scancode) {
 
 }  // namespace
 
-void draw_toolbar(inspect::Session& session, UiState& state, inspect::ActionHost& host) {
+void draw_toolbar(model::Session& session, UiState& state, model::ActionHost& host) {
     for (const Button& b : buttons) {
         if (ImGui::Button(b.label)) act(session, state, Action{b.kind}, host);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", b.tip);

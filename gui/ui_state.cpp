@@ -9,22 +9,22 @@
 
 namespace impulse::gui {
 
-void refresh_mask(const inspect::Session& session, UiState& state) {
+void refresh_mask(const model::Session& session, UiState& state) {
     if (!state.lesson) {
-        state.mask = lessons::Mask();
+        state.mask = course::Mask();
         return;
     }
     LessonState& l = *state.lesson;
     if (l.reaches_revision != session.revision()) {
-        l.reaches = lessons::question_reaches(l.run.lesson(), session.trace());
+        l.reaches = course::question_reaches(l.run.lesson(), session.trace());
         l.reaches_revision = session.revision();
     }
-    state.mask = lessons::Mask(l.reaches, l.run.open(), session.trace());
+    state.mask = course::Mask(l.reaches, l.run.open(), session.trace());
 }
 
-void refresh_views(const inspect::Session& session, UiState& state) {
+void refresh_views(const model::Session& session, UiState& state) {
     CursorViews& v = state.views;
-    const std::optional<inspect::Cursor>& cursor = session.cursor();
+    const std::optional<model::Cursor>& cursor = session.cursor();
     if (state.lesson && state.lesson->reaches_revision != session.revision()) refresh_mask(session, state);
     if (v.revision == session.revision() && v.cursor == cursor) return;
     const Trace& trace = session.trace();
@@ -36,14 +36,14 @@ void refresh_views(const inspect::Session& session, UiState& state) {
         v = CursorViews{session.revision(), std::nullopt, {}, {}, {}, {}, -1, {}, 0.0, false};
         return;
     }
-    v.derivation = inspect::derivation_view(trace, *cursor);
-    v.contacts = inspect::contact_rows(trace, *cursor);
-    v.bodies = inspect::bodies_at(trace, *cursor);
-    v.steps = inspect::step_tables(trace, *cursor);
+    v.derivation = model::derivation_view(trace, *cursor);
+    v.contacts = model::contact_rows(trace, *cursor);
+    v.bodies = model::bodies_at(trace, *cursor);
+    v.steps = model::step_tables(trace, *cursor);
     if (v.frame != cursor->frame) {
         v.frame = cursor->frame;
         const FrameRecord& frame = trace.frames[static_cast<std::size_t>(cursor->frame)];
-        v.curves = inspect::phase_curves(frame);
+        v.curves = model::phase_curves(frame);
         v.largest_impulse = 0.0;
         for (const VelocityIteration& it : frame.velocity.iterations)
             if (it.resolution)
@@ -51,7 +51,7 @@ void refresh_views(const inspect::Session& session, UiState& state) {
     }
 }
 
-void go_to_lesson_step(inspect::Session& session, UiState& state, int step) {
+void go_to_lesson_step(model::Session& session, UiState& state, int step) {
     LessonState& l = *state.lesson;
     l.run.go_to(step);
     if (l.preview) {
@@ -63,7 +63,7 @@ void go_to_lesson_step(inspect::Session& session, UiState& state, int step) {
     l.chosen = -1;
     const std::string& given = l.run.given(l.run.step());
     if (const auto& q = l.run.current().question; q && !given.empty()) {
-        if (q->kind == lessons::Question::Kind::predict)
+        if (q->kind == course::Question::Kind::predict)
             given.copy(l.typed.data(), std::min(given.size(), l.typed.size() - 1));
         else if (const int option = std::atoi(given.c_str());
                  option >= 1 && option <= static_cast<int>(q->options.size()))
@@ -71,27 +71,27 @@ void go_to_lesson_step(inspect::Session& session, UiState& state, int step) {
     }
     l.focus_answer = true;
     // The step's place in this trace: the lesson's own run, or the same place in a re-run with other settings.
-    const lessons::Step& s = l.run.current();
+    const course::Step& s = l.run.current();
     try {
-        session.move_to(inspect::resolve_goto(session.trace(), inspect::parse_goto(s.at, "at"), "at"));
-    } catch (const io::InputError& e) {
+        session.move_to(model::resolve_goto(session.trace(), model::parse_goto(s.at, "at"), "at"));
+    } catch (const formats::InputError& e) {
         state.message = "this step's place (" + s.at + ") is not in the re-run: " + e.problem();
         state.message_is_error = true;
     }
     if (!l.run.save_problem().empty()) state.message = l.run.save_problem(), state.message_is_error = true;
 }
 
-void act(inspect::Session& session, UiState& state, const inspect::Action& action, inspect::ActionHost& host) {
+void act(model::Session& session, UiState& state, const model::Action& action, model::ActionHost& host) {
     try {
-        inspect::perform(session, action, "", &host);
-        if (action.kind == inspect::ActionKind::export_trace || action.kind == inspect::ActionKind::export_table ||
-            action.kind == inspect::ActionKind::screenshot)
+        model::perform(session, action, "", &host);
+        if (action.kind == model::ActionKind::export_trace || action.kind == model::ActionKind::export_table ||
+            action.kind == model::ActionKind::screenshot)
             state.message = "written to " + action.argument, state.message_is_error = false;
-        else if (action.kind == inspect::ActionKind::set)
-            state.message = inspect::rerun_text(session, action.argument, &state.message_is_error);
+        else if (action.kind == model::ActionKind::set)
+            state.message = model::rerun_text(session, action.argument, &state.message_is_error);
         else
             state.message.clear();
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         state.message = e.problem();
         state.message_is_error = true;
     }

@@ -14,7 +14,7 @@ namespace impulse::gui {
 namespace {
 
 // The actions only a window can carry out do nothing here: the check moves by the lesson's own functions.
-class NoHost final : public inspect::ActionHost {
+class NoHost final : public model::ActionHost {
 public:
     void screenshot(const std::string&) override {}
     void view(const std::string&) override {}
@@ -74,7 +74,7 @@ OffscreenLayout::~OffscreenLayout() {
     ImGui::SetCurrentContext(previous_);
 }
 
-void OffscreenLayout::frame(inspect::Session& session, UiState& state, float mouse_x, float mouse_y, bool mouse_down) {
+void OffscreenLayout::frame(model::Session& session, UiState& state, float mouse_x, float mouse_y, bool mouse_down) {
     ImGuiIO& io = ImGui::GetIO();
     io.MousePos = ImVec2(mouse_x, mouse_y);
     io.MouseDown[0] = mouse_down;
@@ -84,11 +84,11 @@ void OffscreenLayout::frame(inspect::Session& session, UiState& state, float mou
     ImGui::Render();
 }
 
-LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int height) {
+LayoutReport check_lesson_layout(course::PreparedLesson& lesson, int width, int height) {
     OffscreenLayout layout(width, height);
-    inspect::Session& session = lesson.session;
+    model::Session& session = lesson.session;
     UiState state;
-    state.lesson.emplace(LessonState{lessons::LessonRun(lesson, nullptr, std::nullopt), {}, -1, true, {}, -1, true});
+    state.lesson.emplace(LessonState{course::LessonRun(lesson, nullptr, std::nullopt), {}, -1, true, {}, -1, true});
     state.record_layout = true;
     LayoutReport report;
 
@@ -103,11 +103,11 @@ LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int
     for (int k = 0; k < steps; ++k) {
         go_to_lesson_step(session, state, k);  // with every question before it answered
         LessonState& l = *state.lesson;
-        const lessons::Step& step = l.run.current();
+        const course::Step& step = l.run.current();
         std::vector<std::string> needed{"button Back", "button Next"};
         if (step.question) {
             needed.insert(needed.end(), {"button Check", "button Skip", "verdict"});
-            if (step.question->kind == lessons::Question::Kind::predict) needed.push_back("input");
+            if (step.question->kind == course::Question::Kind::predict) needed.push_back("input");
             for (std::size_t o = 0; o < step.question->options.size(); ++o)
                 needed.push_back("option " + std::to_string(o + 1));
         }
@@ -118,10 +118,10 @@ LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int
 
         // A wrong answer (its verdict is the longest a predict question gets), then, from open again, a skip
         // (which shows the answer: for a choose question, its option's label).
-        const lessons::Question& q = *step.question;
-        const lessons::Answer& a = *lesson.answers[static_cast<std::size_t>(k)];
+        const course::Question& q = *step.question;
+        const course::Answer& a = *lesson.answers[static_cast<std::size_t>(k)];
         std::string wrong;
-        if (q.kind == lessons::Question::Kind::predict) {
+        if (q.kind == course::Question::Kind::predict) {
             char text[64];
             std::snprintf(text, sizeof text, "%.6g", a.value.get<double>() * 1.5 + 1.0);
             wrong = text;

@@ -8,13 +8,23 @@
 #include <string>
 #include <string_view>
 
-namespace impulse::cli {
+namespace impulse::formats {
 
 // The most a command reads from one file, stated in docs/fuzzing.md. JSON documents (traces, scenes, worksheets)
 // may be as large as the largest trace --max-trace-mb lets us write; text a person writes (lessons, inspect
 // scripts, the progress file) is far smaller, so a wrong file named there is refused early.
 inline constexpr std::size_t max_input_bytes = 256u << 20;     // 256 MiB: larger than any trace we write
 inline constexpr std::size_t max_text_input_bytes = 4u << 20;  // 4 MiB: lessons, scripts, progress
+
+// The default --max-trace-mb: the estimate has come to at least 0.91 of the size written (tests/formats/
+// test_trace_file.cpp), so a trace stopped at 200 MB is at most about 220 MB and can still be read back under the
+// 256 MiB every command reads at most (max_input_bytes).
+inline constexpr double default_max_trace_mb = 200.0;
+
+// --max-trace-mb in bytes (1 MB = 10^6 bytes).
+inline std::size_t trace_budget_bytes(std::optional<double> max_trace_mb) {
+    return static_cast<std::size_t>(max_trace_mb.value_or(default_max_trace_mb) * 1e6);
+}
 
 // An error about a named file: its `where` is the file, then the JSON path. Thrown on by the commands and
 // printed by cli.cpp as "impulse-lab: file: path: problem".
@@ -35,11 +45,11 @@ std::string input_name(const std::string& path);
 // after `limit` bytes.
 std::string read_input_file(const std::string& path, std::size_t limit = max_input_bytes);
 
-// Applies "frames=A..B" or "contacts=I,J,..." to `filter`; throws io::InputError("--record", ...).
+// Applies "frames=A..B" or "contacts=I,J,..." to `filter`; throws formats::InputError("--record", ...).
 void apply_record_spec(std::string_view spec, TraceFilter& filter);
 
 // The one line a command prints when its recording reached --max-trace-mb at `frame`:
 // "impulse-lab: note: the trace reached --max-trace-mb 200 at frame 412 and ends with frame 411; ...".
 std::string trace_stopped_note(int frame, std::optional<double> max_trace_mb);
 
-}  // namespace impulse::cli
+}  // namespace impulse::formats

@@ -20,20 +20,20 @@ struct InspectorRun {
     int width = 1280;
     int height = 800;
     std::string script_name;                  // for errors: "steps.txt"
-    std::vector<inspect::Action> script;      // run first, in order
+    std::vector<model::Action> script;        // run first, in order
     std::optional<std::string> screenshot;    // taken after the script; then the inspector closes
     std::ostream* standard_output = nullptr;  // where an output named "-" goes (cli/outputs.hpp)
     std::optional<int> bench_frames;          // then render this many frames, one step apart, and print times
     double load_seconds = 0.0;                // how long opening the file took, for the benchmark's report
     // A lesson shown beside the inspector (its session is the one inspected), and where progress is saved.
-    lessons::PreparedLesson* lesson = nullptr;
-    lessons::Progress* progress = nullptr;
+    course::PreparedLesson* lesson = nullptr;
+    course::Progress* progress = nullptr;
     bool lesson_preview = false;  // each step pictured with the questions before it answered, none recorded
     std::optional<std::filesystem::path> progress_file;
 };
 
 // Returns the exit code. Bad script actions and unwritable outputs are reported as one line on `err`
 // (exit 2); a window that cannot be opened likewise.
-int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostream& out, std::ostream& err);
+int run_inspector(model::Session& session, const InspectorRun& run, std::ostream& out, std::ostream& err);
 
 }  // namespace impulse::gui

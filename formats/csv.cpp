@@ -1,4 +1,4 @@
-#include "explain/csv.hpp"
+#include "formats/csv.hpp"
 
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-namespace impulse::explain {
+namespace impulse::formats {
 
 std::string csv_field(std::string_view text) {
     if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
@@ -33,7 +33,7 @@ std::string csv_row(const std::vector<std::string>& fields) {
 
 std::vector<CsvRow> parse_csv(std::string_view text) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
-    io::require_utf8(text);  // its cells end up in JSON reports, which hold only UTF-8
+    formats::require_utf8(text);  // its cells end up in JSON reports, which hold only UTF-8
     std::vector<CsvRow> rows;
     std::size_t line = 1, at = 0;
     while (at < text.size()) {
@@ -47,7 +47,7 @@ std::vector<CsvRow> parse_csv(std::string_view text) {
                 ++at;
                 while (true) {
                     if (at == text.size())
-                        throw io::InputError("line " + std::to_string(opened), "a quoted field is not closed");
+                        throw formats::InputError("line " + std::to_string(opened), "a quoted field is not closed");
                     if (text[at] == '"') {
                         if (at + 1 < text.size() && text[at + 1] == '"') {
                             field += '"';
@@ -61,7 +61,7 @@ std::vector<CsvRow> parse_csv(std::string_view text) {
                     field += text[at++];
                 }
                 if (at < text.size() && text[at] != ',' && text[at] != '\n' && text[at] != '\r')
-                    throw io::InputError("line " + std::to_string(line), "text after a closing quote");
+                    throw formats::InputError("line " + std::to_string(line), "text after a closing quote");
             } else {
                 while (at < text.size() && text[at] != ',' && text[at] != '\n' && text[at] != '\r') field += text[at++];
             }
@@ -82,4 +82,4 @@ std::vector<CsvRow> parse_csv(std::string_view text) {
     return rows;
 }
 
-}  // namespace impulse::explain
+}  // namespace impulse::formats

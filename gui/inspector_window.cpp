@@ -50,7 +50,7 @@ void splitter(const char* id, float x, float y, float w, float h, bool vertical,
 
 constexpr float toolbar_height = 62.0f;
 
-void draw_lesson_layout(inspect::Session& session, UiState& state, inspect::ActionHost& host, ImVec2 screen) {
+void draw_lesson_layout(model::Session& session, UiState& state, model::ActionHost& host, ImVec2 screen) {
     PanelSizes& sizes = state.sizes;
     const float body = screen.y - toolbar_height;
     // The lesson's panel: a third of the window, enough for its text and options, leaving the tables room.
@@ -76,14 +76,14 @@ void draw_lesson_layout(inspect::Session& session, UiState& state, inspect::Acti
         ImGui::BeginTabBar("tabs", ImGuiTabBarFlags_FittingPolicyScroll)) {
         const struct {
             const char* name;
-            void (*draw)(inspect::Session&, UiState&, inspect::ActionHost&);
+            void (*draw)(model::Session&, UiState&, model::ActionHost&);
         } tabs[] = {
-            {"Contacts", [](inspect::Session& s, UiState& u, inspect::ActionHost&) { draw_contacts(s, u); }},
-            {"Bodies", [](inspect::Session& s, UiState& u, inspect::ActionHost&) { draw_bodies(s, u); }},
-            {"Plots", [](inspect::Session& s, UiState& u, inspect::ActionHost&) { draw_plots(s, u); }},
-            {"Navigator", [](inspect::Session& s, UiState& u, inspect::ActionHost&) { draw_navigator(s, u); }},
-            {"Settings", [](inspect::Session& s, UiState& u, inspect::ActionHost& h) { draw_settings(s, u, h); }},
-            {"Export", [](inspect::Session& s, UiState& u, inspect::ActionHost& h) { draw_export(s, u, h); }},
+            {"Contacts", [](model::Session& s, UiState& u, model::ActionHost&) { draw_contacts(s, u); }},
+            {"Bodies", [](model::Session& s, UiState& u, model::ActionHost&) { draw_bodies(s, u); }},
+            {"Plots", [](model::Session& s, UiState& u, model::ActionHost&) { draw_plots(s, u); }},
+            {"Navigator", [](model::Session& s, UiState& u, model::ActionHost&) { draw_navigator(s, u); }},
+            {"Settings", [](model::Session& s, UiState& u, model::ActionHost& h) { draw_settings(s, u, h); }},
+            {"Export", [](model::Session& s, UiState& u, model::ActionHost& h) { draw_export(s, u, h); }},
         };
         for (const auto& tab : tabs)
             if (ImGui::BeginTabItem(tab.name)) {
@@ -106,7 +106,7 @@ void draw_lesson_layout(inspect::Session& session, UiState& state, inspect::Acti
     if (scene_edge != lesson + scene) sizes.scene_share = (scene_edge - lesson) / right;
 }
 
-void draw_inspector_layout(inspect::Session& session, UiState& state, inspect::ActionHost& host, ImVec2 screen) {
+void draw_inspector_layout(model::Session& session, UiState& state, model::ActionHost& host, ImVec2 screen) {
     PanelSizes& sizes = state.sizes;
     const float body = screen.y - toolbar_height;
     const float left = sizes.left_width > 0 ? sizes.left_width : screen.x * 0.19f;
@@ -151,7 +151,7 @@ void draw_inspector_layout(inspect::Session& session, UiState& state, inspect::A
 
 }  // namespace
 
-void draw_inspector(inspect::Session& session, UiState& state, inspect::ActionHost& host) {
+void draw_inspector(model::Session& session, UiState& state, model::ActionHost& host) {
     refresh_views(session, state);
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
     if (state.record_layout) state.layout.clear();

@@ -20,16 +20,16 @@ namespace {
 // Screenshots wait for the panels to settle: ImGui sizes tables and scrolls to the cursor over a frame.
 constexpr int settle_frames = 2;
 
-class Host final : public inspect::ActionHost {
+class Host final : public model::ActionHost {
 public:
-    Host(inspect::Session& session, UiState& state) : session_(session), state_(state), camera_(state.camera) {}
+    Host(model::Session& session, UiState& state) : session_(session), state_(state), camera_(state.camera) {}
 
     void lesson_step(int step) override {
-        if (!state_.lesson) throw io::InputError("lesson step", "no lesson is open");
+        if (!state_.lesson) throw formats::InputError("lesson step", "no lesson is open");
         const int count = state_.lesson->run.step_count();
         if (step >= count)
-            throw io::InputError("lesson step", "the lesson has steps 1.." + std::to_string(count) + ", not " +
-                                                    std::to_string(step + 1));
+            throw formats::InputError("lesson step", "the lesson has steps 1.." + std::to_string(count) + ", not " +
+                                                         std::to_string(step + 1));
         go_to_lesson_step(session_, state_, step);
     }
 
@@ -58,7 +58,7 @@ public:
     }
 
 private:
-    inspect::Session& session_;
+    model::Session& session_;
     UiState& state_;
     SceneCamera& camera_;
     std::optional<std::string> pending_;
@@ -100,17 +100,17 @@ void print_bench(std::ostream& out, const InspectorRun& run, const std::vector<d
 
 }  // namespace
 
-int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostream& out, std::ostream& err) {
+int run_inspector(model::Session& session, const InspectorRun& run, std::ostream& out, std::ostream& err) {
     // Every file the run will write must be writable before anything is shown or written.
     try {
-        for (const inspect::Action& a : run.script)
-            if (a.kind == inspect::ActionKind::screenshot || a.kind == inspect::ActionKind::export_trace ||
-                a.kind == inspect::ActionKind::export_table)
+        for (const model::Action& a : run.script)
+            if (a.kind == model::ActionKind::screenshot || a.kind == model::ActionKind::export_trace ||
+                a.kind == model::ActionKind::export_table)
                 if (!(run.standard_output && a.argument == "-"))
-                    io::check_writable(a.argument, run.script_name + ": line " + std::to_string(a.line));
+                    formats::check_writable(a.argument, run.script_name + ": line " + std::to_string(a.line));
         if (run.screenshot && !(run.standard_output && *run.screenshot == "-"))
-            io::check_writable(*run.screenshot, "--screenshot");
-    } catch (const io::InputError& e) {
+            formats::check_writable(*run.screenshot, "--screenshot");
+    } catch (const formats::InputError& e) {
         err << "impulse-lab: " << e.what() << '\n';
         return 2;
     }
@@ -124,28 +124,23 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
     }
     if (!display->font_note().empty()) err << "impulse-lab: note: " << display->font_note() << '\n';
 
-    std::deque<inspect::Action> queue(run.script.begin(), run.script.end());
-    if (run.screenshot) queue.push_back({inspect::ActionKind::screenshot, *run.screenshot, 1, 0});
+    std::deque<model::Action> queue(run.script.begin(), run.script.end());
+    if (run.screenshot) queue.push_back({model::ActionKind::screenshot, *run.screenshot, 1, 0});
     // Headless, or after a final screenshot, the inspector closes once everything asked for is done.
     const bool close_when_done = run.headless || run.screenshot.has_value();
 
     UiState state;
     // The run stopped early: say where in the status line, not only on the terminal.
     if (session.broken_run()) {
-        state.message = "the run stopped at " + inspect::broken_run_text(session.trace().scene, *session.broken_run());
+        state.message = "the run stopped at " + model::broken_run_text(session.trace().scene, *session.broken_run());
         state.message_is_error = true;
     } else if (const auto note = session.recording_note()) {
         state.message = *note;  // which frames there are to step through
     }
     if (run.lesson) {
         // Back where the student left off, with the answers they gave shown again.
-        state.lesson.emplace(LessonState{lessons::LessonRun(*run.lesson, run.progress, run.progress_file),
-                                         {},
-                                         -1,
-                                         true,
-                                         {},
-                                         -1,
-                                         run.lesson_preview});
+        state.lesson.emplace(LessonState{
+            course::LessonRun(*run.lesson, run.progress, run.progress_file), {}, -1, true, {}, -1, run.lesson_preview});
         go_to_lesson_step(session, state, state.lesson->run.step());
         refresh_mask(session, state);
     }
@@ -167,7 +162,7 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
                 if (run.standard_output && path == "-")
                     run.standard_output->write(png.data(), static_cast<std::streamsize>(png.size())).flush();
                 else
-                    io::write_file_atomically(path, png, path);
+                    formats::write_file_atomically(path, png, path);
             } catch (const std::exception& e) {
                 // A script's or --screenshot's failure ends the run; the window's button reports it and goes on.
                 if (close_when_done || !queue.empty()) {
@@ -184,19 +179,19 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
             if (close_when_done) break;
             continue;
         }
-        const inspect::Action action = queue.front();
+        const model::Action action = queue.front();
         queue.pop_front();
         const std::string where =
             action.line > 0 ? run.script_name + ": line " + std::to_string(action.line) : std::string("--screenshot");
         try {
-            inspect::perform(session, action, where, &host);
+            model::perform(session, action, where, &host);
             // A re-run says what it gave, in the window and (for a script) on the terminal when the recording
             // was cut short: the frames a later goto can reach.
-            if (action.kind == inspect::ActionKind::set) {
-                state.message = inspect::rerun_text(session, action.argument, &state.message_is_error);
+            if (action.kind == model::ActionKind::set) {
+                state.message = model::rerun_text(session, action.argument, &state.message_is_error);
                 if (session.recording_note()) err << "impulse-lab: note: " << where << ": " << state.message << '\n';
             }
-        } catch (const io::InputError& e) {
+        } catch (const formats::InputError& e) {
             err << "impulse-lab: " << e.what() << '\n';
             return 2;
         }
@@ -209,8 +204,8 @@ int run_inspector(inspect::Session& session, const InspectorRun& run, std::ostre
             const auto start = std::chrono::steady_clock::now();
             // Every frame moves one step (wrapping at the end), so each rebuilds the views: the worst case.
             if (session.cursor()) {
-                std::optional<inspect::Cursor> next = inspect::next_step(session.trace(), *session.cursor());
-                if (!next) next = inspect::first_cursor(session.trace());
+                std::optional<model::Cursor> next = model::next_step(session.trace(), *session.cursor());
+                if (!next) next = model::first_cursor(session.trace());
                 session.move_to(*next);
             }
             if (!display->begin_frame()) break;

@@ -15,31 +15,31 @@ namespace impulse::gui {
 
 namespace {
 
-ImVec4 status_colour(inspect::ContactStatus status) {
+ImVec4 status_colour(model::ContactStatus status) {
     switch (status) {
-        case inspect::ContactStatus::chosen:
+        case model::ContactStatus::chosen:
             return {1.0f, 0.9f, 0.25f, 1.0f};
-        case inspect::ContactStatus::waiting:
+        case model::ContactStatus::waiting:
             return {0.95f, 0.55f, 0.25f, 1.0f};
-        case inspect::ContactStatus::below_epsilon:
+        case model::ContactStatus::below_epsilon:
             return {0.55f, 0.78f, 0.55f, 1.0f};
     }
     return {1, 1, 1, 1};
 }
 
 // Goes to a contact: in the preparation, its steps; in a phase, the first iteration that resolves it.
-void go_to_contact(inspect::Session& session, int row, int contact) {
-    const inspect::Cursor at = *session.cursor();
-    if (at.stage != inspect::Stage::preparation) {
+void go_to_contact(model::Session& session, int row, int contact) {
+    const model::Cursor at = *session.cursor();
+    if (at.stage != model::Stage::preparation) {
         const Trace& trace = session.trace();
         const FrameRecord& frame = trace.frames[static_cast<std::size_t>(at.frame)];
-        for (int i = 0; i < inspect::item_count(frame, at.stage); ++i)
-            if (inspect::contact_at(trace, inspect::Cursor{at.frame, at.stage, i, 0}) == contact) {
-                session.move_to(inspect::Cursor{at.frame, at.stage, i, 0});
+        for (int i = 0; i < model::item_count(frame, at.stage); ++i)
+            if (model::contact_at(trace, model::Cursor{at.frame, at.stage, i, 0}) == contact) {
+                session.move_to(model::Cursor{at.frame, at.stage, i, 0});
                 return;
             }
     }
-    session.move_to(inspect::Cursor{at.frame, inspect::Stage::preparation, row, 0});
+    session.move_to(model::Cursor{at.frame, model::Stage::preparation, row, 0});
 }
 
 // "a → b" when the value changed, else "a".
@@ -73,18 +73,18 @@ bool begin_list_table(const char* id, std::initializer_list<Column> columns, boo
 
 }  // namespace
 
-void draw_contacts(inspect::Session& session, UiState& state) {
+void draw_contacts(model::Session& session, UiState& state) {
     const CursorViews& v = state.views;
     if (!v.cursor) return;
     const Trace& trace = session.trace();
-    const int current = inspect::contact_at(trace, *v.cursor);
-    const lessons::Mask& mask = state.mask;  // what a lesson's open questions hide
+    const int current = model::contact_at(trace, *v.cursor);
+    const course::Mask& mask = state.mask;  // what a lesson's open questions hide
     // Wrapped: at 1024 px wide the tab is narrower than the sentence.
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     wrapped_text(std::string("Before this item, status in the ") +
-                 (v.cursor->stage == inspect::Stage::velocity   ? "velocity"
-                  : v.cursor->stage == inspect::Stage::position ? "position"
-                                                                : "first") +
+                 (v.cursor->stage == model::Stage::velocity   ? "velocity"
+                  : v.cursor->stage == model::Stage::position ? "position"
+                                                              : "first") +
                  " phase. Click to go.");
     ImGui::PopStyleColor();
     if (!begin_list_table(
@@ -100,7 +100,7 @@ void draw_contacts(inspect::Session& session, UiState& state) {
     if (current_row >= 0 && v.scroll_to_cursor) clipper.ForceDisplayRangeByIndices(current_row, current_row + 1);
     while (clipper.Step())
         for (int r = clipper.DisplayStart; r < clipper.DisplayEnd; ++r) {
-            const inspect::ContactRow& row = v.contacts[static_cast<std::size_t>(r)];
+            const model::ContactRow& row = v.contacts[static_cast<std::size_t>(r)];
             ImGui::TableNextRow();
             ImGui::TableSetColumnIndex(0);
             ImGui::PushID(r);
@@ -113,8 +113,8 @@ void draw_contacts(inspect::Session& session, UiState& state) {
             if (mask.hides_bodies_of(v.cursor->frame, row.contact))
                 ImGui::TextUnformatted("? / ?");
             else
-                ImGui::Text("%s / %s", inspect::body_label(trace, row.prepared->bodies[0]).c_str(),
-                            inspect::body_label(trace, row.prepared->bodies[1]).c_str());
+                ImGui::Text("%s / %s", model::body_label(trace, row.prepared->bodies[0]).c_str(),
+                            model::body_label(trace, row.prepared->bodies[1]).c_str());
             ImGui::PushFont(value_font());
             // Each value at the scale of the contact's own value as prepared: what rounding leaves of a
             // resolved penetration is 0.
@@ -139,12 +139,12 @@ void draw_contacts(inspect::Session& session, UiState& state) {
             cell("impulse_world", row.impulse_so_far.norm(), 0.0);
             ImGui::PopFont();
             ImGui::TableSetColumnIndex(5);
-            ImGui::TextColored(status_colour(row.status), "%s", std::string(inspect::status_name(row.status)).c_str());
+            ImGui::TextColored(status_colour(row.status), "%s", std::string(model::status_name(row.status)).c_str());
         }
     ImGui::EndTable();
 }
 
-void draw_bodies(const inspect::Session& session, UiState& state) {
+void draw_bodies(const model::Session& session, UiState& state) {
     const CursorViews& v = state.views;
     if (!v.cursor) return;
     const Trace& trace = session.trace();
@@ -156,7 +156,7 @@ void draw_bodies(const inspect::Session& session, UiState& state) {
             {{"body", 0.6f}, {"position m (before → after)", 2.0f}, {"velocity m/s, ω rad/s (before → after)", 2.0f}}))
         return;
     // A lesson's open question hides the state of the bodies a hidden change moved, from that change on.
-    const lessons::Mask& mask = state.mask;
+    const course::Mask& mask = state.mask;
     std::vector<char> moved(v.bodies.after.size(), 0);
     for (int b : v.bodies.moved) moved[static_cast<std::size_t>(b)] = 1;
     ImGuiListClipper clipper;
@@ -195,7 +195,7 @@ void draw_bodies(const inspect::Session& session, UiState& state) {
     ImGui::EndTable();
 }
 
-void draw_plots(const inspect::Session& session, UiState& state) {
+void draw_plots(const model::Session& session, UiState& state) {
     const CursorViews& v = state.views;
     if (!v.cursor) return;
     if (v.curves.empty()) {
@@ -206,17 +206,17 @@ void draw_plots(const inspect::Session& session, UiState& state) {
     const float height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing(), 30.0f);
     const Trace& trace = session.trace();
     for (std::size_t k = 0; k < v.curves.size(); ++k) {
-        const inspect::PhaseCurve& c = v.curves[k];
+        const model::PhaseCurve& c = v.curves[k];
         // A lesson's open question hides the values it would give away: those points are not drawn.
-        const std::string_view key = c.stage == inspect::Stage::position ? "penetration" : "desired_delta_velocity";
+        const std::string_view key = c.stage == model::Stage::position ? "penetration" : "desired_delta_velocity";
         std::vector<char> shown(c.worst.size(), 1);
         for (std::size_t i = 0; i < c.worst.size(); ++i) {
-            const inspect::Cursor item{v.cursor->frame, c.stage, static_cast<int>(i), 0};
-            shown[i] = !state.mask.hides_value(item, inspect::contact_at(trace, item), key, c.worst[i]);
+            const model::Cursor item{v.cursor->frame, c.stage, static_cast<int>(i), 0};
+            shown[i] = !state.mask.hides_value(item, model::contact_at(trace, item), key, c.worst[i]);
         }
         if (k > 0) ImGui::SameLine();
         ImGui::BeginGroup();
-        const bool position = c.stage == inspect::Stage::position;
+        const bool position = c.stage == model::Stage::position;
         ImGui::Text("%s: worst %s", position ? "positions" : "velocities", position ? "penetration (m)" : "Δv (m/s)");
         const ImVec2 a = ImGui::GetCursorScreenPos();
         const ImVec2 b(a.x + width, a.y + height);

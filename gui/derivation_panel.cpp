@@ -38,7 +38,7 @@ float longest_line(std::string_view text) {
     return widest;
 }
 
-Columns column_widths(const inspect::DerivationView& view, const std::vector<bool>& hidden, float available) {
+Columns column_widths(const model::DerivationView& view, const std::vector<bool>& hidden, float available) {
     enum { quantity, value, other, formula, equation, meaning };
     const char* hidden_text = "? (hidden until you answer)";
     std::array<float, 6> least{}, natural{};
@@ -67,7 +67,7 @@ Columns column_widths(const inspect::DerivationView& view, const std::vector<boo
         least[value] = std::max(least[value], least[other]);
         natural[value] = std::max(natural[value], natural[other]);
     }
-    for (const inspect::ViewRow& r : view.rows) {
+    for (const model::ViewRow& r : view.rows) {
         // Words of a formula or a meaning are split only when even their column's least width cannot hold them.
         least[formula] = std::max(least[formula], std::min(widest_word(r.row.formula), 150.0f));
         least[meaning] = std::max(least[meaning], std::min(widest_word(r.row.meaning), 120.0f));
@@ -110,10 +110,10 @@ Columns column_widths(const inspect::DerivationView& view, const std::vector<boo
 
 }  // namespace
 
-void draw_derivation(const inspect::Session& /*session*/, UiState& state) {
+void draw_derivation(const model::Session& /*session*/, UiState& state) {
     const CursorViews& v = state.views;
     if (!v.cursor) return;
-    const inspect::DerivationView& view = v.derivation;
+    const model::DerivationView& view = v.derivation;
     wrapped_text(view.step_title);
     // The hint beside the title when the line has room for it, else on a line of its own.
     const char* hint = "(highlighted: what this step computed)";
@@ -153,7 +153,7 @@ void draw_derivation(const inspect::Session& /*session*/, UiState& state) {
     bool scrolled = false;
     std::string previous_step;
     for (std::size_t i = 0; i < view.rows.size(); ++i) {
-        const inspect::ViewRow& r = view.rows[i];
+        const model::ViewRow& r = view.rows[i];
         // A thin heading row wherever the step changes, so earlier steps stay readable as a derivation.
         if (r.step != previous_step) {
             previous_step = r.step;

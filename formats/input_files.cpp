@@ -1,7 +1,6 @@
-#include "model/input_files.hpp"
+#include "formats/input_files.hpp"
 
 #include "formats/input_error.hpp"
-#include "model/session.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,7 +12,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-namespace impulse::cli {
+namespace impulse::formats {
 
 namespace {
 
@@ -74,7 +73,7 @@ int parse_count(std::string_view text, std::string_view spec) {
     int value = 0;
     const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (error != std::errc{} || end != text.data() + text.size() || value < 0)
-        throw io::InputError(
+        throw formats::InputError(
             "--record", "\"" + std::string(text) + "\" in \"" + std::string(spec) + "\" is not a whole number >= 0");
     return value;
 }
@@ -94,7 +93,7 @@ void apply_record_spec(std::string_view spec, TraceFilter& filter) {
             filter.last_frame = parse_count(value.substr(dots + 2), spec);
         }
         if (filter.last_frame < filter.first_frame)
-            throw io::InputError("--record", "frames=A..B needs A <= B, got \"" + std::string(spec) + "\"");
+            throw formats::InputError("--record", "frames=A..B needs A <= B, got \"" + std::string(spec) + "\"");
         return;
     }
     if (key == "contacts" && !value.empty()) {
@@ -110,15 +109,16 @@ void apply_record_spec(std::string_view spec, TraceFilter& filter) {
         filter.contacts = contacts;
         return;
     }
-    throw io::InputError("--record", "expected frames=A..B or contacts=I,J,..., got \"" + std::string(spec) + "\"");
+    throw formats::InputError("--record",
+                              "expected frames=A..B or contacts=I,J,..., got \"" + std::string(spec) + "\"");
 }
 
 std::string trace_stopped_note(int frame, std::optional<double> max_trace_mb) {
     std::ostringstream note;
-    note << "impulse-lab: note: the trace reached --max-trace-mb " << inspect::trace_budget_bytes(max_trace_mb) / 1e6
+    note << "impulse-lab: note: the trace reached --max-trace-mb " << trace_budget_bytes(max_trace_mb) / 1e6
          << " at frame " << frame << " and ends with frame " << frame - 1
          << "; the frames after it ran unrecorded (raise --max-trace-mb or narrow --record)";
     return note.str();
 }
 
-}  // namespace impulse::cli
+}  // namespace impulse::formats

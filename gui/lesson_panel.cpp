@@ -81,55 +81,55 @@ void draw_markdown(UiState& state, const std::string& markdown) {
     flush();
 }
 
-void check(inspect::Session& session, UiState& state) {
+void check(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
-    const lessons::Question& q = *l.run.current().question;
-    std::string typed = q.kind == lessons::Question::Kind::predict
+    const course::Question& q = *l.run.current().question;
+    std::string typed = q.kind == course::Question::Kind::predict
                             ? std::string(l.typed.data())
                             : (l.chosen >= 0 ? std::to_string(l.chosen + 1) : std::string());
     if (typed.empty()) {
         state.message =
-            q.kind == lessons::Question::Kind::predict ? "type your answer first" : "pick an option first (Tab or ↑ ↓)";
+            q.kind == course::Question::Kind::predict ? "type your answer first" : "pick an option first (Tab or ↑ ↓)";
         state.message_is_error = true;
         return;
     }
     try {
-        const lessons::Verdict verdict = l.run.answer(typed);
+        const course::AnswerVerdict verdict = l.run.answer(typed);
         state.message = l.run.save_problem(), state.message_is_error = !state.message.empty();
         // A wrong number stays in the field to be corrected; the field gets the keyboard again.
         if (!verdict.correct) l.focus_answer = true;
         refresh_mask(session, state);
-    } catch (const io::InputError& e) {
+    } catch (const formats::InputError& e) {
         state.message = e.problem(), state.message_is_error = true;
         l.focus_answer = true;
     }
 }
 
-void skip(inspect::Session& session, UiState& state) {
+void skip(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     l.run.skip();
     state.message = l.run.save_problem(), state.message_is_error = !state.message.empty();
     refresh_mask(session, state);
 }
 
-void next(inspect::Session& session, UiState& state) {
+void next(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     if (l.run.step() + 1 < l.run.step_count()) go_to_lesson_step(session, state, l.run.step() + 1);
 }
 
-void back(inspect::Session& session, UiState& state) {
+void back(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     if (l.run.step() > 0) go_to_lesson_step(session, state, l.run.step() - 1);
 }
 
-void handle_keys(inspect::Session& session, UiState& state) {
+void handle_keys(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     const ImGuiIO& io = ImGui::GetIO();
     // Typing in a field (the answer, a setting, an export path): the arrows move its caret and Enter is the
     // field's own.
     const bool typing = io.WantTextInput;
-    const lessons::Step& step = l.run.current();
-    const bool choose = step.question && step.question->kind == lessons::Question::Kind::choose;
+    const course::Step& step = l.run.current();
+    const bool choose = step.question && step.question->kind == course::Question::Kind::choose;
     const int options = choose ? static_cast<int>(step.question->options.size()) : 0;
     for (int key : state.pressed_keys) {
         const bool open = l.run.waiting();
@@ -174,24 +174,24 @@ void handle_keys(inspect::Session& session, UiState& state) {
 }
 
 // What the verdict's line says before any answer.
-std::string hint(const lessons::Question& q) {
-    return q.kind == lessons::Question::Kind::predict
+std::string hint(const course::Question& q) {
+    return q.kind == course::Question::Kind::predict
                ? "Type a number and press Enter. Its value stays hidden everywhere until you answer."
                : "Pick an option (Tab or ↑ ↓) and press Enter. The answer stays hidden until then.";
 }
 
 // The height the question takes below the text: prompt, input or options, the buttons and the verdict.
 float question_height(const LessonState& l, float width) {
-    const lessons::Question& q = *l.run.current().question;
+    const course::Question& q = *l.run.current().question;
     const ImGuiStyle& style = ImGui::GetStyle();
     const float gap = style.ItemSpacing.y, frame = ImGui::GetFrameHeight();
     float h = gap * 2 + 1.0f;                    // separator
     h += ImGui::GetFontSize() + gap;             // "Question"
     h += wrapped_height(q.prompt, width) + gap;  // the prompt
-    if (q.kind == lessons::Question::Kind::predict)
+    if (q.kind == course::Question::Kind::predict)
         h += frame + gap;
     else
-        for (const lessons::Option& o : q.options)
+        for (const course::Option& o : q.options)
             h += std::max(frame, wrapped_height(o.label, width - frame - style.ItemInnerSpacing.x)) + gap;
     h += frame + gap;  // Check, Skip
     const std::string& said = l.run.feedback(l.run.step());
@@ -199,13 +199,13 @@ float question_height(const LessonState& l, float width) {
     return h + style.WindowPadding.y;
 }
 
-void draw_question(inspect::Session& session, UiState& state) {
+void draw_question(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     const auto index = static_cast<std::size_t>(l.run.step());
-    const lessons::Question& q = *l.run.current().question;
-    const lessons::Answer& answer = *l.run.lesson().answers[index];
-    const lessons::QuestionState now = l.run.state(l.run.step());
-    const bool open = now == lessons::QuestionState::open;
+    const course::Question& q = *l.run.current().question;
+    const course::Answer& answer = *l.run.lesson().answers[index];
+    const course::QuestionState now = l.run.state(l.run.step());
+    const bool open = now == course::QuestionState::open;
 
     ImGui::Separator();
     ImGui::TextColored(question_colour, "Question");
@@ -213,7 +213,7 @@ void draw_question(inspect::Session& session, UiState& state) {
     wrapped_text(q.prompt);
     record_item(state, "text");
     if (!open) ImGui::BeginDisabled();
-    if (q.kind == lessons::Question::Kind::predict) {
+    if (q.kind == course::Question::Kind::predict) {
         if (l.focus_answer && open) ImGui::SetKeyboardFocusHere();
         l.focus_answer = false;
         ImGui::SetNextItemWidth(std::min(160.0f, ImGui::GetContentRegionAvail().x * 0.6f));
@@ -230,7 +230,7 @@ void draw_question(inspect::Session& session, UiState& state) {
         for (std::size_t o = 0; o < q.options.size(); ++o) {
             ImGui::PushID(static_cast<int>(o));
             const bool picked =
-                l.chosen == static_cast<int>(o) || (!open && now == lessons::QuestionState::answered &&
+                l.chosen == static_cast<int>(o) || (!open && now == course::QuestionState::answered &&
                                                     static_cast<int>(o) == answer.correct_option && l.chosen < 0);
             if (ImGui::RadioButton("##option", picked)) l.chosen = static_cast<int>(o);
             const std::string what = "option " + std::to_string(o + 1);
@@ -260,9 +260,9 @@ void draw_question(inspect::Session& session, UiState& state) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         wrapped_text(hint(q));
     } else {
-        ImGui::PushStyleColor(ImGuiCol_Text, now == lessons::QuestionState::answered  ? right_colour
-                                             : now == lessons::QuestionState::skipped ? skipped_colour
-                                                                                      : wrong_colour);
+        ImGui::PushStyleColor(ImGuiCol_Text, now == course::QuestionState::answered  ? right_colour
+                                             : now == course::QuestionState::skipped ? skipped_colour
+                                                                                     : wrong_colour);
         wrapped_text(said);
     }
     ImGui::PopStyleColor();
@@ -271,11 +271,11 @@ void draw_question(inspect::Session& session, UiState& state) {
 
 }  // namespace
 
-void draw_lesson(inspect::Session& session, UiState& state) {
+void draw_lesson(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     handle_keys(session, state);
-    const lessons::Lesson& lesson = l.run.lesson().lesson;
-    const lessons::Step& step = l.run.current();
+    const course::Lesson& lesson = l.run.lesson().lesson;
+    const course::Step& step = l.run.current();
     if (state.record_layout) {
         const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
         state.lesson_panel[0] = pos.x, state.lesson_panel[1] = pos.y;
@@ -301,10 +301,10 @@ void draw_lesson(inspect::Session& session, UiState& state) {
     record_item(state, "button Next");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The next step (→, Page Down, or Enter once answered)");
     // The student stepped away with the inspector's buttons: one click brings the step's place back.
-    std::optional<inspect::Cursor> place;
+    std::optional<model::Cursor> place;
     try {
-        place = inspect::resolve_goto(session.trace(), inspect::parse_goto(step.at, "at"), "at");
-    } catch (const io::InputError&) {
+        place = model::resolve_goto(session.trace(), model::parse_goto(step.at, "at"), "at");
+    } catch (const formats::InputError&) {
     }
     if (place && session.cursor() && !(*session.cursor() == *place)) {
         if (ImGui::SmallButton("Back to this step's place")) session.move_to(*place);

@@ -8,20 +8,20 @@ namespace impulse::gui {
 
 namespace {
 
-using inspect::Cursor;
-using inspect::Stage;
+using model::Cursor;
+using model::Stage;
 
 // An item's line in the tree: its contact and the value that made it the choice, unless a lesson's open
 // question hides that value (or which bodies the contact joins).
-std::string item_label(const Trace& trace, const lessons::Mask& mask, int f, Stage stage, int item) {
+std::string item_label(const Trace& trace, const course::Mask& mask, int f, Stage stage, int item) {
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
     const auto i = static_cast<std::size_t>(item);
     const Cursor at{f, stage, item, 0};
     if (stage == Stage::preparation) {
         const ContactPreparation& c = frame.contacts[i];
         if (mask.hides_bodies_of(f, c.contact)) return "contact " + std::to_string(c.contact) + " · ? / ?";
-        return "contact " + std::to_string(c.contact) + " · " + inspect::body_label(trace, c.bodies[0]) + " / " +
-               inspect::body_label(trace, c.bodies[1]);
+        return "contact " + std::to_string(c.contact) + " · " + model::body_label(trace, c.bodies[0]) + " / " +
+               model::body_label(trace, c.bodies[1]);
     }
     if (stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[i];
@@ -39,7 +39,7 @@ std::string item_label(const Trace& trace, const lessons::Mask& mask, int f, Sta
 }
 
 std::string stage_label(const FrameRecord& frame, Stage stage) {
-    const int n = inspect::item_count(frame, stage);
+    const int n = model::item_count(frame, stage);
     if (stage == Stage::preparation) return "Preparation: " + std::to_string(n) + (n == 1 ? " contact" : " contacts");
     const PhaseOutcome& o = stage == Stage::position ? frame.position.outcome : frame.velocity.outcome;
     return std::string(stage == Stage::position ? "Position phase: " : "Velocity phase: ") + std::to_string(n) +
@@ -47,13 +47,13 @@ std::string stage_label(const FrameRecord& frame, Stage stage) {
 }
 
 // The items of one stage, clipped so a stage of thousands of iterations costs only the visible rows.
-void draw_items(inspect::Session& session, UiState& state, int f, Stage stage) {
+void draw_items(model::Session& session, UiState& state, int f, Stage stage) {
     const Trace& trace = session.trace();
     const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
     const Cursor& at = *session.cursor();
     const bool here = at.frame == f && at.stage == stage;
     ImGuiListClipper clipper;
-    clipper.Begin(inspect::item_count(frame, stage));
+    clipper.Begin(model::item_count(frame, stage));
     if (here && state.views.scroll_to_cursor) clipper.ForceDisplayRangeByIndices(at.item, at.item + 1);
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
@@ -68,7 +68,7 @@ void draw_items(inspect::Session& session, UiState& state, int f, Stage stage) {
 
 }  // namespace
 
-void draw_navigator(inspect::Session& session, UiState& state) {
+void draw_navigator(model::Session& session, UiState& state) {
     if (!session.cursor()) {
         ImGui::TextWrapped("The trace records nothing to step through: no contact in the recorded frames.");
         return;
@@ -84,7 +84,7 @@ void draw_navigator(inspect::Session& session, UiState& state) {
         const std::string label = "Frame " + std::to_string(frame.frame) + " (" + std::to_string(frame.contact_count) +
                                   (frame.contact_count == 1 ? " contact)" : " contacts)");
         if (ImGui::TreeNodeEx("frame", at.frame == f ? ImGuiTreeNodeFlags_Selected : 0, "%s", label.c_str())) {
-            for (Stage stage : inspect::stages(frame)) {
+            for (Stage stage : model::stages(frame)) {
                 ImGui::PushID(static_cast<int>(stage));
                 if (state.views.scroll_to_cursor && at.frame == f && at.stage == stage) ImGui::SetNextItemOpen(true);
                 if (ImGui::TreeNode("stage", "%s", stage_label(frame, stage).c_str())) {

@@ -22,7 +22,7 @@ struct LayoutReport {
     std::vector<std::string> problems;  // one line each: "step 3 (answered wrong): button Check at ... outside ..."
 };
 
-LayoutReport check_lesson_layout(lessons::PreparedLesson& lesson, int width, int height);
+LayoutReport check_lesson_layout(course::PreparedLesson& lesson, int width, int height);
 
 // The inspector's window laid out frame by frame in its own ImGui context (the inspector's fonts and
 // style, nothing rasterised), with the mouse where a test puts it: how the layout check and the tests drive
@@ -35,7 +35,7 @@ public:
     OffscreenLayout& operator=(const OffscreenLayout&) = delete;
 
     // One frame of the whole window, the mouse at (x, y) with its left button down or up.
-    void frame(inspect::Session& session, UiState& state, float mouse_x = -1.0f, float mouse_y = -1.0f,
+    void frame(model::Session& session, UiState& state, float mouse_x = -1.0f, float mouse_y = -1.0f,
                bool mouse_down = false);
 
 private:

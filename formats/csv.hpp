@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-namespace impulse::explain {
+namespace impulse::formats {
 
 // The field as written into a row: quoted only when it must be.
 std::string csv_field(std::string_view text);
@@ -22,7 +22,7 @@ struct CsvRow {
 };
 
 // Every non-empty row. Accepts "\r\n" line ends and a leading UTF-8 byte-order mark (as spreadsheets save);
-// throws io::InputError("line N", ...) for a quote left open or text after a closing quote.
+// throws formats::InputError("line N", ...) for a quote left open or text after a closing quote.
 std::vector<CsvRow> parse_csv(std::string_view text);
 
-}  // namespace impulse::explain
+}  // namespace impulse::formats

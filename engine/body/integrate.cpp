@@ -1,6 +1,6 @@
 #include "body/integrate.hpp"
 
-#include <cmath>
+#include "math/elementary.hpp"
 
 namespace impulse {
 
@@ -14,9 +14,9 @@ void integrate_velocity(RigidBody& body, const Vec3& gravity, double dt, const D
     body.velocity += body.last_frame_acceleration * dt;
     // No torque acts (gravity pulls through the centre of mass), so I^-1 tau dt adds nothing to w.
     // Damping slows what can be slowed: an immovable body keeps the motion it was given.
-    if (damping.linear != 1.0 && body.inverse_mass > 0.0) body.velocity *= std::pow(damping.linear, dt);
+    if (damping.linear != 1.0 && body.inverse_mass > 0.0) body.velocity *= elementary::pow(damping.linear, dt);
     if (damping.angular != 1.0 && !body.inverse_inertia_body.isZero(0.0))
-        body.angular_velocity *= std::pow(damping.angular, dt);
+        body.angular_velocity *= elementary::pow(damping.angular, dt);
 }
 
 void integrate_position(RigidBody& body, double dt, OrientationUpdate update) {

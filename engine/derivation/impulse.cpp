@@ -1,5 +1,6 @@
 #include "derivation/impulse.hpp"
 
+#include "math/elementary.hpp"
 #include "math/rotation.hpp"
 
 #include <cmath>
@@ -46,7 +47,7 @@ FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& factored, const 
     s.target_delta_velocity = {desired_delta_velocity, -contact_velocity.y(), -contact_velocity.z()};
     s.solvable = factored.factors.invertible();
     s.static_impulse = s.solvable ? factored.factors.solve(s.target_delta_velocity) : Vec3::Zero();
-    s.tangential_impulse = std::hypot(s.static_impulse.y(), s.static_impulse.z());
+    s.tangential_impulse = elementary::hypot(s.static_impulse.y(), s.static_impulse.z());
     s.cone_limit = friction * s.static_impulse.x();
 
     if (s.solvable && s.tangential_impulse > s.cone_limit) {
@@ -65,7 +66,7 @@ FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& factored, const 
         } else {
             // Coulomb: the sliding impulse opposes the slip the contact has now. With no slip there is nothing
             // to oppose, and only the normal impulse remains, as above.
-            const double slip = std::hypot(contact_velocity.y(), contact_velocity.z());
+            const double slip = elementary::hypot(contact_velocity.y(), contact_velocity.z());
             if (slip > 0.0) direction = -Eigen::Vector2d(contact_velocity.y(), contact_velocity.z()) / slip;
         }
         s.sliding_direction = direction;

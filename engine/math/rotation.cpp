@@ -1,9 +1,21 @@
 #include "math/rotation.hpp"
 
-#include <cmath>
+#include "math/elementary.hpp"
+
 #include <numbers>
 
 namespace impulse {
+
+namespace {
+
+// The turn by `angle` radians about the unit `axis`: (cos(angle/2), sin(angle/2) axis), as Eigen's AngleAxis gives
+// it, with the engine's own sine and cosine (math/elementary.hpp).
+Quat turn(double angle, const Vec3& axis) {
+    const elementary::SinCos half = elementary::sin_cos(0.5 * angle);
+    return Quat(half.cos, half.sin * axis.x(), half.sin * axis.y(), half.sin * axis.z());
+}
+
+}  // namespace
 
 Mat3 skew(const Vec3& r) {
     Mat3 m;
@@ -21,25 +33,22 @@ Quat rotated(const Quat& orientation, const Vec3& rotation_vector, OrientationUp
     }
     const double angle = rotation_vector.norm();
     if (angle == 0.0) return orientation;
-    const Quat turn(Eigen::AngleAxisd(angle, rotation_vector / angle));
-    return (turn * orientation).normalized();
+    return (turn(angle, rotation_vector / angle) * orientation).normalized();
 }
 
 double turned_angle(double magnitude, OrientationUpdate update) {
     // (1, theta/2) normalised has cos(a/2) = 1 / sqrt(1 + |theta|^2 / 4), so tan(a/2) = |theta| / 2.
-    return update == OrientationUpdate::first_order ? 2.0 * std::atan(0.5 * magnitude) : magnitude;
+    return update == OrientationUpdate::first_order ? 2.0 * elementary::atan(0.5 * magnitude) : magnitude;
 }
 
 double rotation_magnitude_for_angle(double angle, OrientationUpdate update) {
-    return update == OrientationUpdate::first_order ? 2.0 * std::tan(0.5 * angle) : angle;
+    return update == OrientationUpdate::first_order ? 2.0 * elementary::tan(0.5 * angle) : angle;
 }
 
 Quat orientation_from_euler_xyz_degrees(const Vec3& degrees) {
     const Vec3 radians = degrees * (std::numbers::pi / 180.0);
-    const Quat qx(Eigen::AngleAxisd(radians.x(), Vec3::UnitX()));
-    const Quat qy(Eigen::AngleAxisd(radians.y(), Vec3::UnitY()));
-    const Quat qz(Eigen::AngleAxisd(radians.z(), Vec3::UnitZ()));
-    return (qz * qy * qx).normalized();
+    return (turn(radians.z(), Vec3::UnitZ()) * turn(radians.y(), Vec3::UnitY()) * turn(radians.x(), Vec3::UnitX()))
+        .normalized();
 }
 
 }  // namespace impulse

@@ -1,5 +1,6 @@
 #include "course/class_report.hpp"
 
+#include "course/slips.hpp"
 #include "course/worksheet.hpp"
 #include "formats/csv.hpp"
 #include "explain/text_table.hpp"
@@ -39,21 +40,10 @@ std::string how_far(const std::optional<double>& relative_error, const formats::
     return text;
 }
 
-// A wrong number that is the expected one times a telling factor: what the slip probably was.
-std::string likely_slip(const formats::json& expected, const formats::json& found) {
-    if (!expected.is_number() || !found.is_number() || expected.get<double>() == 0.0) return "";
-    const double ratio = found.get<double>() / expected.get<double>();
-    const auto near = [ratio](double factor) { return std::abs(ratio / factor - 1.0) < 2e-3; };
-    constexpr double degrees = 180.0 / 3.14159265358979323846;
-    if (near(-1.0)) return "the opposite sign: check the order of a cross product, or which body is body 0";
-    if (near(degrees)) return "57.3 times the value: degrees where radians are expected?";
-    if (near(1.0 / degrees)) return "the value divided by 57.3: radians where degrees are expected?";
-    for (const double factor : {10.0, 100.0, 1000.0})
-        if (near(factor) || near(1.0 / factor))
-            return (near(factor) ? formats::number_text(factor) + " times the value"
-                                 : "the value divided by " + formats::number_text(factor)) +
-                   ": a unit slip (cm, mm or g where m or kg are expected)?";
-    return "";
+// A wrong number that is the expected one times a telling factor: what the slip probably was (course/slips.hpp).
+std::string slip_of(const formats::json& expected, const formats::json& found) {
+    if (!expected.is_number() || !found.is_number()) return "";
+    return course::likely_slip(expected.get<double>(), found.get<double>());
 }
 
 // Markdown table cells may not hold a '|' (|v_s| in a formula) or a line break.
@@ -260,7 +250,7 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
                       (first->relative_error ? " (" + how_far(first->relative_error, first->expected, first->unit) + ")"
                                              : "") +
                       ".";
-            if (const std::string slip = likely_slip(first->expected, first->found); !slip.empty())
+            if (const std::string slip = slip_of(first->expected, first->found); !slip.empty())
                 md += " That is " + slip + (slip.ends_with('?') ? "" : ".");
             else
                 md += std::string(finding_kind_name(first->kind)) + ".";
@@ -310,7 +300,7 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
                 verdict += ": this worksheet does not ask for it";
             else if (const std::string far = how_far(g.relative_error, g.expected, g.unit); !far.empty())
                 verdict += ", " + far;
-            if (const std::string slip = likely_slip(g.expected, g.found);
+            if (const std::string slip = slip_of(g.expected, g.found);
                 !slip.empty() && slips_named.find(slip) == std::string::npos) {
                 verdict += " — " + slip;
                 slips_named += slip + "\n";

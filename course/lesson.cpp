@@ -1,5 +1,7 @@
 #include "course/lesson.hpp"
 
+#include "course/answer_number.hpp"
+#include "course/slips.hpp"
 #include "course/trace_path.hpp"
 #include "formats/input_files.hpp"
 #include "explain/annotations.hpp"
@@ -324,34 +326,41 @@ PreparedLesson prepare_lesson(Lesson lesson) {
 }
 
 AnswerVerdict check_answer(const Question& question, const Answer& answer, std::string_view typed) {
-    const std::string text(trim(typed));
-    char* end = nullptr;
-    const double given = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(given))
-        throw formats::InputError(
-            "answer", question.kind == Question::Kind::predict
-                          ? "type a number, e.g. 3.2 or -1.5e-2"
-                          : "type the number of an option, from 1 to " + std::to_string(question.options.size()));
     if (question.kind == Question::Kind::choose) {
+        const std::string how = "type the number of an option, from 1 to " + std::to_string(question.options.size());
+        double given = 0.0;
+        try {
+            given = read_answer_number(typed, "");
+        } catch (const formats::InputError&) {
+            throw formats::InputError("answer", how);
+        }
         const int option = static_cast<int>(given) - 1;
         if (given != std::floor(given) || option < 0 || option >= static_cast<int>(question.options.size()))
-            throw formats::InputError(
-                "answer", "type the number of an option, from 1 to " + std::to_string(question.options.size()));
+            throw formats::InputError("answer", how);
         if (option == answer.correct_option) return {true, "right: " + answer.shown};
         return {false, "not quite: option " + std::to_string(option + 1) +
                            " is not what the engine does; try again, or skip to see its answer"};
     }
+    const double given = read_answer_number(typed, answer.unit);
     const double value = answer.value.get<double>();
     const double error = given - value;
     const double allowed = std::max(question.tolerance.relative.value_or(0.0) * std::abs(value),
                                     question.tolerance.absolute.value_or(0.0));
     // How far off, as a share of the value (or, for a value of 0, in its unit).
-    const std::string off = value != 0.0 ? explain::percent(std::abs(error) / std::abs(value) * 100.0) + " %"
-                                         : explain::with_unit(explain::number(std::abs(error)), answer.unit);
-    if (std::abs(error) <= allowed)
-        return {true, "right: the engine has " + answer.shown +
-                          (error == 0.0 ? std::string(" (exactly)") : " (you were " + off + " off)")};
-    return {false, "not quite: " + off + (error > 0 ? " too high" : " too low") +
+    const bool relative = std::abs(value) > allowed && value != 0.0;
+    const std::string off = relative ? explain::percent(std::abs(error) / std::abs(value) * 100.0) + " %"
+                                     : explain::with_unit(explain::number(std::abs(error)), answer.unit);
+    if (std::abs(error) <= allowed) {
+        // Closer than the six digits a table shows is the engine's value itself: no percentage of rounding noise.
+        const bool as_shown = std::abs(error) <= shown_precision * std::abs(value) || std::abs(error) <= 1e-9 * allowed;
+        return {true,
+                "right: the engine has " + answer.shown + (as_shown ? std::string() : " (you were " + off + " off)")};
+    }
+    // A slip that has a name says more than "200 % too low".
+    const std::string slip = likely_slip(
+        value, given,
+        std::max(question.tolerance.relative.value_or(0.0), value != 0.0 ? allowed / std::abs(value) : 0.0));
+    return {false, "not quite: " + (slip.empty() ? off + (error > 0 ? " too high" : " too low") : slip) +
                        "; try again, or skip to see the engine's value"};
 }
 

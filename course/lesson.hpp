@@ -90,15 +90,20 @@ struct PreparedLesson {
 // path of the first step whose place or question does not work with this run.
 PreparedLesson prepare_lesson(Lesson lesson);
 
+// How close a typed number is to the value a table shows: six significant digits, so within half the sixth.
+inline constexpr double shown_precision = 5e-6;
+
 // What a student typed (a number, or for choose the option's number from 1), against the engine's answer. A
 // wrong answer says how far off it is, never the answer: the student may try again, or skip to see it.
 struct AnswerVerdict {
     bool correct = false;
-    // One line: "right: the engine has 3.24 m/s (you were 1.2 % off)", "not quite: 33.3 % too low; try
-    // again, or skip to see the engine's value".
+    // One line: "right: the engine has 3.24 m/s (you were 1.2 % off)" (no share when the answer is the value
+    // as a table shows it), "not quite: 33.3 % too low; try again, or skip to see the engine's value", or the
+    // slip it looks like instead of the share ("not quite: the opposite sign: ...").
     std::string feedback;
 };
-// Throws formats::InputError("answer", ...) when the text is not a number (or not an option's number).
+// Reads the number with course/answer_number.hpp. Throws formats::InputError("answer", ...) when the text is not
+// a number in the question's unit (or not an option's number).
 AnswerVerdict check_answer(const Question& question, const Answer& answer, std::string_view typed);
 // What a skipped question shows: "skipped: the engine's answer is 7.5 m/s".
 std::string skipped_text(const Answer& answer);

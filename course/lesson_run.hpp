@@ -42,6 +42,8 @@ public:
     const std::string& feedback(int step) const { return feedback_[static_cast<std::size_t>(step)]; }
     // The last answer the student gave to a step's question, as typed ("7.4", or an option's number from 1).
     const std::string& given(int step) const { return given_[static_cast<std::size_t>(step)]; }
+    // How many answers the student gave to a step's question (a skip is not one).
+    int tries(int step) const { return tries_[static_cast<std::size_t>(step)]; }
     // Whether that last answer was right.
     bool right(int step) const { return state(step) == QuestionState::answered; }
 

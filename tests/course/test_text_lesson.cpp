@@ -68,7 +68,7 @@ TEST_CASE("a lesson in a terminal hides the answer, says how far off a wrong one
     t.send("seven");
     t.expect("type a number");
     t.send("7.5");
-    const std::string seen = t.expect("right: the engine has 7.5 m/s (exactly)");
+    const std::string seen = t.expect("right: the engine has 7.5 m/s\r\n");
     // Answered: the table again, with the value shown.
     const std::string shown = t.expect("Enter: next step");
     CHECK(shown.find("desired_delta_velocity      7.5 m/s") != std::string::npos);

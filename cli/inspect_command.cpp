@@ -42,6 +42,8 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
     gui::InspectorRun run;
     run.headless = options.headless;
     if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
+    // Without --size a window fits the display; frame times are measured at the size asked for.
+    run.fit_to_screen = !options.size && !options.bench_frames;
     if (run.headless && !options.screenshot && !options.script && !options.bench_frames)
         throw formats::InputError("--headless", "nothing to render: give --screenshot, --script or --bench-frames");
     // Before any work: a window needs a display.

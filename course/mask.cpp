@@ -143,6 +143,7 @@ std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson&
         const Question& q = *step.question;
         const Answer& answer = *prepared.answers[i];
         QuestionReach reach;
+        reach.step = static_cast<int>(i);
         std::optional<Cursor> place;
         try {
             place = model::resolve_goto(trace, model::parse_goto(step.at, "at"), "at");
@@ -243,33 +244,33 @@ bool Mask::later(const Cursor& at, const Cursor& from, bool including) const {
     return including ? rank(at) >= rank(from) : rank(at) > rank(from);
 }
 
-bool Mask::touches_hidden_body(const Cursor& at, int contact, bool including) const {
+HiddenBy Mask::touches_hidden_body(const Cursor& at, int contact, bool including) const {
     const ContactPreparation* p = model::preparation_of(trace_->frames[static_cast<std::size_t>(at.frame)], contact);
-    if (!p) return false;
+    if (!p) return std::nullopt;
     for (const QuestionReach& r : reaches_)
         for (int body : p->bodies)
             if (const auto found = r.bodies.find(body); found != r.bodies.end() && later(at, found->second, including))
-                return true;
-    return false;
+                return r.step;
+    return std::nullopt;
 }
 
-bool Mask::equals_an_answer(std::string_view key, double value, std::string_view unit) const {
+HiddenBy Mask::answer_equal_to(std::string_view key, double value, std::string_view unit, bool inputs_too) const {
     const explain::Annotation* a = explain::find_annotation(key);
     if (unit.empty() && a) unit = a->unit;
-    if (unit.empty()) return false;
+    if (unit.empty()) return std::nullopt;
     for (const QuestionReach& r : reaches_)
         if (r.answer && r.unit == unit && std::abs(*r.answer) > r.allowed && std::abs(value - *r.answer) <= r.allowed &&
-            !r.inputs.count(key))
-            return true;
-    return false;
+            (inputs_too || !r.inputs.count(key)))
+            return r.step;
+    return std::nullopt;
 }
 
-bool Mask::hides_row(const Cursor& item, const explain::Row& row) const {
-    if (reaches_.empty() || row.key.empty()) return false;
+HiddenBy Mask::row_hidden_by(const Cursor& item, const explain::Row& row) const {
+    if (reaches_.empty() || row.key.empty()) return std::nullopt;
     const int contact = model::contact_at(*trace_, item);
     for (const QuestionReach& r : reaches_) {
         const bool here = r.frame < 0 || (r.frame == item.frame && r.contacts.count(contact));
-        if (here && r.keys.count(row.key)) return true;
+        if (here && r.keys.count(row.key)) return r.step;
     }
     // Any value in it equal to an open answer (read only when an answer is in the row's unit).
     const explain::Annotation* a = explain::find_annotation(row.key);
@@ -277,41 +278,54 @@ bool Mask::hides_row(const Cursor& item, const explain::Row& row) const {
             return r.answer && r.unit == a->unit;
         }))
         for (double v : numbers_in(row.exact))
-            if (equals_an_answer(row.key, v)) return true;
+            if (const HiddenBy by = answer_equal_to(row.key, v)) return by;
     // Computed from a body a hidden change moved earlier: everything but what the item is given.
-    return !fixed_row(row.key) && touches_hidden_body(item, contact, false);
+    if (fixed_row(row.key)) return std::nullopt;
+    return touches_hidden_body(item, contact, false);
 }
 
-bool Mask::hides_value(const Cursor& at, int contact, std::string_view key, double value) const {
-    if (reaches_.empty()) return false;
+HiddenBy Mask::other_frame_hidden_by(const Cursor& item, const explain::Row& row) const {
+    if (const HiddenBy by = row_hidden_by(item, row)) return by;
+    if (row.other_frame.empty() || reaches_.empty()) return std::nullopt;
+    const explain::Annotation* a = explain::find_annotation(row.key);
+    if (!a || fixed_row(row.key)) return std::nullopt;
+    // The same quantity in the other frame: the answer it would hand over is in the same unit.
+    for (double v : numbers_in(row.other_frame))
+        if (const HiddenBy by = answer_equal_to(row.key, v, a->unit, true)) return by;
+    return std::nullopt;
+}
+
+HiddenBy Mask::value_hidden_by(const Cursor& at, int contact, std::string_view key, double value) const {
+    if (reaches_.empty()) return std::nullopt;
     for (const QuestionReach& r : reaches_) {
         const bool here = r.frame < 0 || (r.frame == at.frame && r.contacts.count(contact));
-        if (here && r.keys.count(key)) return true;
+        if (here && r.keys.count(key)) return r.step;
     }
-    return equals_an_answer(key, value, key == "impulse_world" ? "N·s" : "") || touches_hidden_body(at, contact, false);
+    if (const HiddenBy by = answer_equal_to(key, value, key == "impulse_world" ? "N·s" : "")) return by;
+    return touches_hidden_body(at, contact, false);
 }
 
-bool Mask::hides_bodies_of(int frame, int contact) const {
+HiddenBy Mask::bodies_hidden_by(int frame, int contact) const {
     for (const QuestionReach& r : reaches_)
-        if (r.keys.count("bodies") && (r.frame < 0 || (r.frame == frame && r.contacts.count(contact)))) return true;
-    return false;
+        if (r.keys.count("bodies") && (r.frame < 0 || (r.frame == frame && r.contacts.count(contact)))) return r.step;
+    return std::nullopt;
 }
 
-bool Mask::hides_body(const Cursor& at, int body, bool after, const BodyState& state) const {
-    if (hides_body(at, body, after)) return true;
+HiddenBy Mask::body_hidden_by(const Cursor& at, int body, bool after, const BodyState& state) const {
+    if (const HiddenBy by = body_hidden_by(at, body, after)) return by;
     for (int k = 0; k < 3; ++k)
-        if (equals_an_answer("body_position", state.position[k]) ||
-            equals_an_answer("body_velocity", state.velocity[k]) ||
-            equals_an_answer("body_angular_velocity", state.angular_velocity[k]))
-            return true;
-    return false;
+        for (const HiddenBy by :
+             {answer_equal_to("body_position", state.position[k]), answer_equal_to("body_velocity", state.velocity[k]),
+              answer_equal_to("body_angular_velocity", state.angular_velocity[k])})
+            if (by) return by;
+    return std::nullopt;
 }
 
-bool Mask::hides_body(const Cursor& at, int body, bool after) const {
+HiddenBy Mask::body_hidden_by(const Cursor& at, int body, bool after) const {
     for (const QuestionReach& r : reaches_)
         if (const auto found = r.bodies.find(body); found != r.bodies.end() && later(at, found->second, after))
-            return true;
-    return false;
+            return r.step;
+    return std::nullopt;
 }
 
 std::optional<Cursor> Mask::body_shown_until(const Cursor& at, int body) const {

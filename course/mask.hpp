@@ -28,6 +28,7 @@ namespace impulse::course {
 
 // What one question hides while it is open, over one trace.
 struct QuestionReach {
+    int step = -1;                            // the lesson step that asks the question (from 0)
     int frame = -1;                           // the frame index its place is in
     std::set<int> contacts;                   // its contact and those whose same quantity has the answer's value
     std::set<std::string, std::less<>> keys;  // vocabulary names hidden in those contacts' items
@@ -45,6 +46,10 @@ struct QuestionReach {
 // run or a re-run with other settings (a question whose place is not in it hides its keys everywhere).
 std::vector<std::optional<QuestionReach>> question_reaches(const PreparedLesson& lesson, const Trace& trace);
 
+// The lesson step (from 0) whose open question hides a value, so a panel can say "hidden until you answer step
+// 3" and link to it; none when the value is shown.
+using HiddenBy = std::optional<int>;
+
 class Mask {
 public:
     Mask() = default;  // hides nothing
@@ -55,19 +60,41 @@ public:
     bool empty() const { return reaches_.empty(); }
 
     // A row of a derivation table of the item `item` stands on (its step is ignored).
-    bool hides_row(const model::Cursor& item, const explain::Row& row) const;
+    HiddenBy row_hidden_by(const model::Cursor& item, const explain::Row& row) const;
+    // The row's other-frame reading ("contact (…)" beside a world vector): hidden with the row, and also when it
+    // reads as an open answer although the row itself is shown (a world velocity the student works from, whose
+    // contact coordinates are the slip asked for).
+    HiddenBy other_frame_hidden_by(const model::Cursor& item, const explain::Row& row) const;
     // A contact's bookkeeping value as the contacts list, the navigator and the plots show it just before
     // the item `at` stands on: "penetration", "desired_delta_velocity" or "impulse_world" (the impulse so far).
-    bool hides_value(const model::Cursor& at, int contact, std::string_view key, double value) const;
+    HiddenBy value_hidden_by(const model::Cursor& at, int contact, std::string_view key, double value) const;
     // Which bodies a contact joins ("ball / world").
-    bool hides_bodies_of(int frame, int contact) const;
+    HiddenBy bodies_hidden_by(int frame, int contact) const;
     // A body's state just before (after = false) or just after the item `at` stands on; `state` is that state.
-    bool hides_body(const model::Cursor& at, int body, bool after, const BodyState& state) const;
+    HiddenBy body_hidden_by(const model::Cursor& at, int body, bool after, const BodyState& state) const;
     // Whether a body's state at `at` is hidden for a hidden change (whatever its values).
-    bool hides_body(const model::Cursor& at, int body, bool after) const;
+    HiddenBy body_hidden_by(const model::Cursor& at, int body, bool after) const;
     // A value of `key` (in that quantity's unit, or `unit` when given) equal to an open answer it does not
-    // feed into.
-    bool equals_an_answer(std::string_view key, double value, std::string_view unit = {}) const;
+    // feed into (`inputs_too`: or that it does).
+    HiddenBy answer_equal_to(std::string_view key, double value, std::string_view unit = {},
+                             bool inputs_too = false) const;
+
+    bool hides_row(const model::Cursor& item, const explain::Row& row) const {
+        return row_hidden_by(item, row).has_value();
+    }
+    bool hides_value(const model::Cursor& at, int contact, std::string_view key, double value) const {
+        return value_hidden_by(at, contact, key, value).has_value();
+    }
+    bool hides_bodies_of(int frame, int contact) const { return bodies_hidden_by(frame, contact).has_value(); }
+    bool hides_body(const model::Cursor& at, int body, bool after, const BodyState& state) const {
+        return body_hidden_by(at, body, after, state).has_value();
+    }
+    bool hides_body(const model::Cursor& at, int body, bool after) const {
+        return body_hidden_by(at, body, after).has_value();
+    }
+    bool equals_an_answer(std::string_view key, double value, std::string_view unit = {}) const {
+        return answer_equal_to(key, value, unit).has_value();
+    }
     // The item before which a hidden body was last shown, to draw it where it was; none when it is not hidden
     // at `at`.
     std::optional<model::Cursor> body_shown_until(const model::Cursor& at, int body) const;
@@ -78,7 +105,7 @@ private:
     // Whether a body hidden from `from` is hidden at `at`: strictly later (before = its state going in), or
     // also at `from` itself (after).
     bool later(const model::Cursor& at, const model::Cursor& from, bool including) const;
-    bool touches_hidden_body(const model::Cursor& at, int contact, bool including) const;
+    HiddenBy touches_hidden_body(const model::Cursor& at, int contact, bool including) const;
 
     std::vector<QuestionReach> reaches_;
     const Trace* trace_ = nullptr;

@@ -1,6 +1,7 @@
 #include "gui/fonts.hpp"
 #include "gui/panels.hpp"
 #include "gui/text_wrap.hpp"
+#include "formats/input_error.hpp"
 
 #include <imgui.h>
 
@@ -11,6 +12,14 @@
 namespace impulse::gui {
 
 namespace {
+
+// The chapter's equation number as "eq. 14.3", never "(14.3)": in parentheses under a formula it read like a
+// value (and "(7.5)" stood above a question whose answer was 7.5).
+std::string equation_text(const std::string& equation) {
+    if (equation.size() > 2 && equation.front() == '(' && equation.back() == ')')
+        return "eq. " + equation.substr(1, equation.size() - 2);
+    return equation;
+}
 
 // Column widths: the quantity's name and the equation whole; value and other frame at least their widest
 // number (a number is never split); then each column grows towards its longest line, the meaning first to
@@ -38,24 +47,24 @@ float longest_line(std::string_view text) {
     return widest;
 }
 
-Columns column_widths(const model::DerivationView& view, const std::vector<bool>& hidden, float available) {
+Columns column_widths(const model::DerivationView& view, const std::vector<std::string>& hidden,
+                      const std::vector<bool>& other_hidden, float available) {
     enum { quantity, value, other, formula, equation, meaning };
-    const char* hidden_text = "? (hidden until you answer)";
     std::array<float, 6> least{}, natural{};
     least[quantity] = natural[quantity] = ImGui::CalcTextSize("Quantity").x;
-    least[equation] = natural[equation] = ImGui::CalcTextSize("(14.3)").x;
+    least[equation] = natural[equation] = ImGui::CalcTextSize("eq. 14.3").x;
     least[formula] = least[meaning] = ImGui::CalcTextSize("Formula").x;
     least[value] = least[other] = ImGui::CalcTextSize("Value").x;
     bool any_other = false;
     ImGui::PushFont(value_font());
     for (std::size_t i = 0; i < view.rows.size(); ++i) {
         const explain::Row& r = view.rows[i].row;
-        const std::string_view shown = hidden[i] ? std::string_view(hidden_text) : std::string_view(r.value);
-        least[value] =
-            std::max(least[value], hidden[i] ? ImGui::CalcTextSize("(hidden until").x : widest_unbreakable(r.value));
+        const bool is_hidden = !hidden[i].empty();
+        const std::string_view shown = is_hidden ? std::string_view(hidden[i]) : std::string_view(r.value);
+        least[value] = std::max(least[value], is_hidden ? widest_word(hidden[i]) : widest_unbreakable(r.value));
         natural[value] = std::max(natural[value], longest_line(shown));
         any_other = any_other || !r.other_frame.empty();
-        if (!hidden[i]) {
+        if (!other_hidden[i]) {
             least[other] = std::max(least[other], widest_unbreakable(r.other_frame));
             natural[other] = std::max(natural[other], longest_line(r.other_frame));
         }
@@ -72,7 +81,7 @@ Columns column_widths(const model::DerivationView& view, const std::vector<bool>
         least[formula] = std::max(least[formula], std::min(widest_word(r.row.formula), 150.0f));
         least[meaning] = std::max(least[meaning], std::min(widest_word(r.row.meaning), 120.0f));
         least[quantity] = std::max(least[quantity], ImGui::CalcTextSize(r.row.quantity.c_str()).x);
-        least[equation] = std::max(least[equation], std::min(longest_line(r.row.equation), 90.0f));
+        least[equation] = std::max(least[equation], std::min(longest_line(equation_text(r.row.equation)), 90.0f));
         natural[formula] = std::max(natural[formula], longest_line(r.row.formula));
         natural[meaning] = std::max(natural[meaning], longest_line(r.row.meaning));
     }
@@ -108,10 +117,32 @@ Columns column_widths(const model::DerivationView& view, const std::vector<bool>
     return c;
 }
 
+// Where a lesson's open question hides a value: which step to answer, as a link to it.
+std::string hidden_text(const UiState& state, int step) {
+    if (!state.lesson) return "? (hidden)";
+    if (step == state.lesson->run.step()) return "? hidden until you answer this step's question";
+    const course::Step& s = state.lesson->run.lesson().lesson.steps[static_cast<std::size_t>(step)];
+    return "? hidden until you answer step " + std::to_string(step + 1) + " (" + s.id + ")";
+}
+
+// Scrolls the table (the current window) so the rows between `top` and `bottom` (screen y, as drawn at the current
+// scroll) are in view below the header's `header` (screen y of its bottom), with `context` above them (the step's
+// heading row), moving as little as it can; a range taller than the view shows its top.
+void bring_into_view(float top, float bottom, float header, float context) {
+    const float pad = ImGui::GetStyle().CellPadding.y * 2;
+    const float view_top = header + context, view_bottom = ImGui::GetWindowPos().y + ImGui::GetWindowHeight() - pad;
+    float delta = 0.0f;
+    if (bottom - top > view_bottom - view_top || top < view_top)
+        delta = top - view_top;
+    else if (bottom > view_bottom)
+        delta = bottom - view_bottom;
+    if (delta != 0.0f) ImGui::SetScrollY(std::max(ImGui::GetScrollY() + delta, 0.0f));
+}
+
 }  // namespace
 
 void draw_derivation(const model::Session& /*session*/, UiState& state) {
-    const CursorViews& v = state.views;
+    CursorViews& v = state.views;
     if (!v.cursor) return;
     const model::DerivationView& view = v.derivation;
     wrapped_text(view.step_title);
@@ -123,10 +154,34 @@ void draw_derivation(const model::Session& /*session*/, UiState& state) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The rows above the highlighted ones are the earlier steps of this item, dimmed.");
 
-    // A lesson's open question hides its value, and what gives it away, until it is answered or skipped.
-    std::vector<bool> hidden(view.rows.size());
-    for (std::size_t i = 0; i < view.rows.size(); ++i) hidden[i] = state.mask.hides_row(*v.cursor, view.rows[i].row);
-    const Columns columns = column_widths(view, hidden, ImGui::GetContentRegionAvail().x);
+    // A lesson's open question hides its value, and what gives it away (the other frame's reading too), until it
+    // is answered or skipped; the cell says which step's question to answer.
+    std::vector<std::string> hidden(view.rows.size());
+    std::vector<course::HiddenBy> hidden_by(view.rows.size());
+    std::vector<bool> other_hidden(view.rows.size()), hidden_now(view.rows.size());
+    for (std::size_t i = 0; i < view.rows.size(); ++i) {
+        hidden_by[i] = state.mask.row_hidden_by(*v.cursor, view.rows[i].row);
+        if (hidden_by[i]) hidden[i] = hidden_text(state, *hidden_by[i]);
+        hidden_now[i] = hidden_by[i].has_value();
+        other_hidden[i] = state.mask.other_frame_hidden_by(*v.cursor, view.rows[i].row).has_value();
+    }
+    // Rows an answer or a skip just revealed are brought into view, as a move brings the step's rows.
+    // Those of the step's own rows when it has any (an answer reveals its step's value; rows further up are what
+    // the student already read).
+    std::vector<bool> revealed(view.rows.size(), false);
+    bool any_revealed = false;
+    if (v.hidden_rows_mask != state.mask_revision && v.hidden_rows.size() == hidden_now.size()) {
+        for (std::size_t i = 0; i < hidden_now.size(); ++i) revealed[i] = v.hidden_rows[i] && !hidden_now[i];
+        bool in_step = false;
+        for (std::size_t i = 0; i < revealed.size(); ++i) in_step |= revealed[i] && view.rows[i].changed;
+        for (std::size_t i = 0; i < revealed.size(); ++i) {
+            if (in_step && !view.rows[i].changed) revealed[i] = false;
+            any_revealed |= revealed[i];
+        }
+    }
+    v.hidden_rows = hidden_now;
+    v.hidden_rows_mask = state.mask_revision;
+    const Columns columns = column_widths(view, hidden, other_hidden, ImGui::GetContentRegionAvail().x);
 
     ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_BordersOuterH |
                             ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit;
@@ -143,14 +198,35 @@ void draw_derivation(const model::Session& /*session*/, UiState& state) {
     for (int c : columns.shown)
         ImGui::TableSetupColumn(names[c], ImGuiTableColumnFlags_WidthFixed, columns.width[static_cast<std::size_t>(c)]);
     ImGui::TableHeadersRow();
+    const float header = ImGui::GetItemRectMax().y;
     // The table's column for each of the six, or -1 when left out.
     std::array<int, 6> column{-1, -1, -1, -1, -1, -1};
     for (std::size_t k = 0; k < columns.shown.size(); ++k)
         column[static_cast<std::size_t>(columns.shown[k])] = static_cast<int>(k);
 
     const ImVec4 dim = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+    const ImVec4 link(0.6f, 0.85f, 1.0f, 1.0f);
     const ImU32 highlight = IM_COL32(70, 90, 40, 255);
-    bool scrolled = false;
+    // The rows to bring into view: the revealed ones, or after a move the step's own (a lesson's step that names a
+    // quantity, step=friction_solve.sliding_direction, is about that row).
+    if (any_revealed) {
+        v.bring_rows = revealed, v.bring_frames = 3, v.bring_context = 0.0f;
+    } else if (v.scroll_to_cursor) {
+        std::string named;
+        if (state.lesson) try {
+                named = model::parse_goto(state.lesson->run.current().at, "at").step.value_or("");
+            } catch (const formats::InputError&) {
+            }
+        const bool named_shown = std::any_of(view.rows.begin(), view.rows.end(), [&](const model::ViewRow& r) {
+            return r.changed && !named.empty() && r.row.key == named;
+        });
+        v.bring_rows.assign(view.rows.size(), false);
+        for (std::size_t i = 0; i < view.rows.size(); ++i)
+            v.bring_rows[i] = view.rows[i].changed && (!named_shown || view.rows[i].row.key == named);
+        v.bring_frames = 3, v.bring_context = ImGui::GetTextLineHeightWithSpacing();
+    }
+    const bool bring = v.bring_frames > 0 && v.bring_rows.size() == view.rows.size();
+    float top = -1.0f, bottom = -1.0f;
     std::string previous_step;
     for (std::size_t i = 0; i < view.rows.size(); ++i) {
         const model::ViewRow& r = view.rows[i];
@@ -163,44 +239,69 @@ void draw_derivation(const model::Session& /*session*/, UiState& state) {
         }
         ImGui::TableNextRow();
         if (r.changed) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, highlight);
-        if (r.changed && !scrolled && v.scroll_to_cursor) {
-            ImGui::SetScrollHereY(0.1f);
-            scrolled = true;
-        }
         if (!r.changed) ImGui::PushStyleColor(ImGuiCol_Text, dim);
         ImGui::TableSetColumnIndex(0);
+        const float row_top = ImGui::GetCursorPosY() + ImGui::GetScrollY();
+        float row_bottom = row_top;
+        const auto grow = [&] {
+            row_bottom =
+                std::max(row_bottom, ImGui::GetItemRectMax().y - ImGui::GetWindowPos().y + ImGui::GetScrollY());
+        };
         ImGui::TextUnformatted(r.row.quantity.c_str());
+        grow();
         ImGui::PushFont(value_font());
         ImGui::TableSetColumnIndex(column[1]);
-        if (hidden[i]) {
-            wrapped_text("? (hidden until you answer)");
+        if (hidden_by[i]) {
+            ImGui::PushStyleColor(ImGuiCol_Text, link);
+            wrapped_text(hidden[i]);
+            ImGui::PopStyleColor();
+            if (state.lesson && *hidden_by[i] != state.lesson->run.step()) {
+                if (ImGui::IsItemHovered()) {
+                    ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+                    ImGui::SetTooltip("Go to step %d", *hidden_by[i] + 1);
+                }
+                if (ImGui::IsItemClicked()) state.lesson->go_to_request = *hidden_by[i];
+            }
         } else {
             wrapped_text(r.row.value);
             if (ImGui::IsItemHovered() && !r.row.exact.empty() && r.row.exact != r.row.value)
                 ImGui::SetTooltip("exactly %s", r.row.exact.c_str());
         }
-        if (columns.compact && !hidden[i] && !r.row.other_frame.empty()) {
+        grow();
+        const std::string& other = other_hidden[i] && !hidden_by[i] ? std::string("?") : r.row.other_frame;
+        if (columns.compact && !hidden_by[i] && !r.row.other_frame.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, dim);
-            wrapped_text(r.row.other_frame);
+            wrapped_text(other_hidden[i] ? "other frame: ? (hidden until you answer)" : r.row.other_frame);
             ImGui::PopStyleColor();
+            grow();
         }
-        if (column[2] >= 0 && ImGui::TableSetColumnIndex(column[2]) && !hidden[i]) wrapped_text(r.row.other_frame);
+        if (column[2] >= 0 && ImGui::TableSetColumnIndex(column[2]) && !hidden_by[i]) wrapped_text(other), grow();
         ImGui::PopFont();
         ImGui::TableSetColumnIndex(column[3]);
         wrapped_text(r.row.formula);
+        grow();
         if (columns.compact && !r.row.equation.empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, dim);
-            wrapped_text(r.row.equation);
+            wrapped_text(equation_text(r.row.equation));
             ImGui::PopStyleColor();
+            grow();
         }
         if (column[4] >= 0) {
             ImGui::TableSetColumnIndex(column[4]);
-            wrapped_text(r.row.equation);
+            wrapped_text(equation_text(r.row.equation));
+            grow();
         }
         ImGui::TableSetColumnIndex(column[5]);
         wrapped_text(r.row.meaning);
+        grow();
         if (!r.changed) ImGui::PopStyleColor();
+        if (bring && v.bring_rows[i]) {
+            if (top < 0) top = row_top;
+            bottom = row_bottom;
+        }
     }
+    if (top >= 0) bring_into_view(top, bottom, header, v.bring_context);
+    if (v.bring_frames > 0) --v.bring_frames;
     ImGui::EndTable();
 }
 

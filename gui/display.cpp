@@ -71,8 +71,15 @@ Display::Display(const DisplayOptions& options) : headless_(options.headless), g
     SDL_GL_SetAttribute(SDL_GL_DEPTH_SIZE, 0);
     SDL_GL_SetAttribute(SDL_GL_STENCIL_SIZE, 8);
     const Uint32 flags = SDL_WINDOW_OPENGL | (headless_ ? 0u : SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
-    window_ = SDL_CreateWindow(options.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, options.width,
-                               options.height, flags);
+    int width = options.width, height = options.height;
+    // A laptop's 1024x768 must not cut the window on three sides: 90 % of what the display leaves free.
+    if (SDL_Rect usable{}; options.fit_to_screen && !headless_ && SDL_GetDisplayUsableBounds(0, &usable) == 0 &&
+                           usable.w > 0 && usable.h > 0) {
+        width = std::max(usable.w * 9 / 10, 320);
+        height = std::max(usable.h * 9 / 10, 240);
+    }
+    window_ =
+        SDL_CreateWindow(options.title.c_str(), SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, width, height, flags);
     if (!window_) {
         const std::string why = SDL_GetError();
         SDL_Quit();
@@ -137,7 +144,13 @@ bool Display::begin_frame(bool idle) {
     // widget (Enter in the answer field, Ctrl+A). The release comes a frame after its press instead.
     std::vector<SDL_Event> releases;
     releases.swap(deferred_);
-    for (SDL_Event& e : releases) ImGui_ImplSDL2_ProcessEvent(&e);
+    // ImGui reads the modifiers from SDL's keyboard state; a key event carries its own, which a key put on the
+    // queue by a script (gui/key_events.hpp) must bring along.
+    const auto process = [](SDL_Event& e) {
+        if (e.type == SDL_KEYDOWN || e.type == SDL_KEYUP) SDL_SetModState(static_cast<SDL_Keymod>(e.key.keysym.mod));
+        ImGui_ImplSDL2_ProcessEvent(&e);
+    };
+    for (SDL_Event& e : releases) process(e);
     std::vector<SDL_Scancode> down;
     while (SDL_PollEvent(&event)) {
         had_events_ = true;
@@ -149,7 +162,7 @@ bool Display::begin_frame(bool idle) {
             deferred_.push_back(event);
             continue;
         }
-        ImGui_ImplSDL2_ProcessEvent(&event);
+        process(event);
         if (event.type == SDL_QUIT) quit_ = true;
         if (event.type == SDL_WINDOWEVENT && event.window.event == SDL_WINDOWEVENT_CLOSE &&
             event.window.windowID == SDL_GetWindowID(window_))

@@ -23,6 +23,8 @@ struct DisplayOptions {
     bool headless = false;
     int width = 1280;
     int height = 800;
+    // A window (not headless) sized to the display instead: 90 % of its usable area, never larger.
+    bool fit_to_screen = false;
     std::string title = "Impulse Lab";
 };
 

@@ -13,13 +13,44 @@ constexpr const char* sans_path = "/usr/share/fonts/truetype/dejavu/DejaVuSans.t
 constexpr const char* mono_path = "/usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf";
 constexpr float font_size = 15.0f;
 
-// Latin with its extensions (ŷ, ṗ, ẑ), Greek, the combining accents (the dot of θ̇), general punctuation (the
-// middle dot, dashes), sub- and superscripts, letter-like symbols, arrows, mathematical operators, modifier
-// letters (ᵀ) and the geometric shapes of the buttons (◀ ▶).
+// The combining dot above (θ̇, the angular velocity). ImGui places a combining mark where the font puts it for a
+// lower-case letter, with no anchor for the letter before it: DejaVu's dot then lands inside θ's top stroke and
+// θ̇ reads as θ. The dot is drawn by the inspector instead, above a letter of full height.
+constexpr ImWchar combining_dot = 0x0307;
+
+// Latin with its extensions (ŷ, ṗ, ẑ), Greek, the combining accents but the dot, general punctuation (the middle
+// dot, dashes), sub- and superscripts, letter-like symbols, arrows, mathematical operators, modifier letters (ᵀ),
+// the geometric shapes of the buttons (◀ ▶ ●) and the check mark of the step list (✓).
 constexpr ImWchar glyph_ranges[] = {
-    0x0020, 0x017F, 0x1E00, 0x1EFF, 0x0300, 0x036F, 0x0370, 0x03FF, 0x1D00, 0x1DBF, 0x2000, 0x206F,
-    0x2070, 0x209F, 0x2100, 0x214F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0x25A0, 0x25FF, 0,
+    0x0020, 0x017F, 0x1E00, 0x1EFF, 0x0300, 0x0306, 0x0308, 0x036F, 0x0370, 0x03FF, 0x1D00, 0x1DBF, 0x2000, 0x206F,
+    0x2070, 0x209F, 0x2100, 0x214F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0x25A0, 0x25FF, 0x2713, 0x2713, 0,
 };
+
+struct DotGlyph {
+    int rect;
+    int size;
+};
+
+// A round dot `size` pixels wide, its centre over the middle of the letter before it (about a quarter of an em
+// back from the pen) and a pixel of gap above the letters' tops.
+// `pixels`: the font's size (ImFont::FontSize is only set when the atlas is built).
+DotGlyph add_dot(ImFontAtlas& atlas, ImFont* font, float pixels) {
+    const int size = pixels >= 14.0f ? 3 : 2;
+    const float centre = -0.26f * pixels;
+    const int rect = atlas.AddCustomRectFontGlyph(font, combining_dot, size, size, 0.0f,
+                                                  ImVec2(centre - static_cast<float>(size) / 2.0f, -2.0f));
+    return {rect, size};
+}
+
+void draw_dot(ImFontAtlas& atlas, const DotGlyph& dot) {
+    const ImFontAtlasCustomRect* r = atlas.GetCustomRectByIndex(dot.rect);
+    for (int y = 0; y < dot.size; ++y)
+        for (int x = 0; x < dot.size; ++x) {
+            // A 3-pixel dot with its corners half covered reads as round.
+            const bool corner = dot.size == 3 && (x == 0 || x == 2) && (y == 0 || y == 2);
+            atlas.TexPixelsAlpha8[(r->Y + y) * atlas.TexWidth + r->X + x] = corner ? 0x70 : 0xFF;
+        }
+}
 
 }  // namespace
 
@@ -28,8 +59,12 @@ std::string load_fonts(ImGuiIO& io) {
         io.Fonts->AddFontDefault();
         return "the DejaVu fonts are missing (Debian package fonts-dejavu-core): symbols such as Δ show as '?'";
     }
-    io.Fonts->AddFontFromFileTTF(sans_path, font_size, nullptr, glyph_ranges);
-    io.Fonts->AddFontFromFileTTF(mono_path, font_size - 1.0f, nullptr, glyph_ranges);
+    ImFont* sans = io.Fonts->AddFontFromFileTTF(sans_path, font_size, nullptr, glyph_ranges);
+    ImFont* mono = io.Fonts->AddFontFromFileTTF(mono_path, font_size - 1.0f, nullptr, glyph_ranges);
+    const DotGlyph dots[] = {add_dot(*io.Fonts, sans, font_size), add_dot(*io.Fonts, mono, font_size - 1.0f)};
+    // Built here, once, so the dots can be drawn into the atlas before a renderer uploads it.
+    io.Fonts->Build();
+    for (const DotGlyph& dot : dots) draw_dot(*io.Fonts, dot);
     return {};
 }
 

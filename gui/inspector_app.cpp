@@ -1,6 +1,7 @@
 #include "gui/inspector_app.hpp"
 
 #include "gui/display.hpp"
+#include "gui/key_events.hpp"
 #include "gui/panels.hpp"
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
@@ -44,6 +45,8 @@ public:
         settle_ = settle_frames;
     }
     void quit() override { quit_ = true; }
+    void key(const std::string& chord) override { push_key(chord); }
+    void type(const std::string& text) override { push_text(text); }
     std::ostream* standard_output() override { return standard_output_; }
     void set_standard_output(std::ostream* out) { standard_output_ = out; }
 
@@ -117,7 +120,8 @@ int run_inspector(model::Session& session, const InspectorRun& run, std::ostream
 
     std::optional<Display> display;
     try {
-        display.emplace(DisplayOptions{run.headless, run.width, run.height, "Impulse Lab — " + session.path()});
+        display.emplace(
+            DisplayOptions{run.headless, run.width, run.height, run.fit_to_screen, "Impulse Lab — " + session.path()});
     } catch (const DisplayError& e) {
         err << "impulse-lab: inspect: " << e.what() << '\n';
         return 2;
@@ -139,8 +143,8 @@ int run_inspector(model::Session& session, const InspectorRun& run, std::ostream
     }
     if (run.lesson) {
         // Back where the student left off, with the answers they gave shown again.
-        state.lesson.emplace(LessonState{
-            course::LessonRun(*run.lesson, run.progress, run.progress_file), {}, -1, true, {}, -1, run.lesson_preview});
+        state.lesson.emplace(course::LessonRun(*run.lesson, run.progress, run.progress_file), run.lesson_preview);
+        state.lesson->next_lesson = run.next_lesson;
         go_to_lesson_step(session, state, state.lesson->run.step());
         refresh_mask(session, state);
     }
@@ -197,6 +201,7 @@ int run_inspector(model::Session& session, const InspectorRun& run, std::ostream
         }
     }
 
+    if (run.next_lesson_chosen && state.lesson) *run.next_lesson_chosen = state.lesson->open_next;
     if (run.bench_frames) {
         std::vector<double> ms;
         ms.reserve(static_cast<std::size_t>(*run.bench_frames));

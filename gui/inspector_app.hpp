@@ -4,6 +4,7 @@
 // watched; a screenshot is taken after the panels have settled.
 
 #include "course/lesson.hpp"
+#include "course/lesson_end.hpp"
 #include "course/progress.hpp"
 #include "model/script.hpp"
 #include "model/session.hpp"
@@ -19,6 +20,7 @@ struct InspectorRun {
     bool headless = false;
     int width = 1280;
     int height = 800;
+    bool fit_to_screen = false;               // a window sized to the display (90 %) rather than width x height
     std::string script_name;                  // for errors: "steps.txt"
     std::vector<model::Action> script;        // run first, in order
     std::optional<std::string> screenshot;    // taken after the script; then the inspector closes
@@ -30,6 +32,10 @@ struct InspectorRun {
     course::Progress* progress = nullptr;
     bool lesson_preview = false;  // each step pictured with the questions before it answered, none recorded
     std::optional<std::filesystem::path> progress_file;
+    // The lesson offered at the lesson's end; set to true in `next_lesson_chosen` when the student opens it (the
+    // window then closes, for the caller to open that lesson).
+    std::optional<course::LessonLink> next_lesson;
+    bool* next_lesson_chosen = nullptr;
 };
 
 // Returns the exit code. Bad script actions and unwritable outputs are reported as one line on `err`

@@ -20,6 +20,8 @@ public:
     void view(const std::string&) override {}
     void lesson_step(int) override {}
     void quit() override {}
+    void key(const std::string&) override {}
+    void type(const std::string&) override {}
 };
 
 std::string rect_text(float x0, float y0, float x1, float y1) {
@@ -88,7 +90,7 @@ LayoutReport check_lesson_layout(course::PreparedLesson& lesson, int width, int 
     OffscreenLayout layout(width, height);
     model::Session& session = lesson.session;
     UiState state;
-    state.lesson.emplace(LessonState{course::LessonRun(lesson, nullptr, std::nullopt), {}, -1, true, {}, -1, true});
+    state.lesson.emplace(course::LessonRun(lesson, nullptr, std::nullopt), true);
     state.record_layout = true;
     LayoutReport report;
 

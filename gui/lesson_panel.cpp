@@ -1,10 +1,12 @@
 // The lesson beside the inspector: the step's text, its question (answered before the value is shown), and
 // the way through the lesson's steps. Everything wraps to the panel's width; the question, its Check and Skip
 // buttons and the verdict sit below the text, sized to what they need, so they are never cut off.
-// Keys while a lesson is open: → / PgDn / Enter the next step, ← / PgUp the previous one, Enter checks an
-// answer, Tab / Shift+Tab and ↑ / ↓ move between a question's options; the inspector's moves stay on its
-// buttons.
+// Keys while a lesson is open (gui/lesson_moves.cpp): → / PgDn / Enter the next step, ← / PgUp the previous
+// one, Enter checks an answer, Ctrl+S skips it, Tab / Shift+Tab, ↑ / ↓ or an option's number pick an option,
+// Esc closes the window; the inspector's moves stay on its buttons. Whatever is typed goes into the answer
+// field, whether it has the keyboard yet or not.
 
+#include "gui/lesson_moves.hpp"
 #include "gui/panels.hpp"
 #include "gui/text_wrap.hpp"
 #include "formats/input_error.hpp"
@@ -25,6 +27,7 @@ const ImVec4 question_colour(0.6f, 0.85f, 1.0f, 1.0f);
 const ImVec4 right_colour(0.5f, 0.9f, 0.5f, 1.0f);
 const ImVec4 wrong_colour(1.0f, 0.65f, 0.4f, 1.0f);
 const ImVec4 skipped_colour(0.75f, 0.75f, 1.0f, 1.0f);
+const ImVec4 error_colour(1.0f, 0.45f, 0.4f, 1.0f);
 
 std::string_view trim_left(std::string_view s) {
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
@@ -81,103 +84,29 @@ void draw_markdown(UiState& state, const std::string& markdown) {
     flush();
 }
 
-void check(model::Session& session, UiState& state) {
-    LessonState& l = *state.lesson;
-    const course::Question& q = *l.run.current().question;
-    std::string typed = q.kind == course::Question::Kind::predict
-                            ? std::string(l.typed.data())
-                            : (l.chosen >= 0 ? std::to_string(l.chosen + 1) : std::string());
-    if (typed.empty()) {
-        state.message =
-            q.kind == course::Question::Kind::predict ? "type your answer first" : "pick an option first (Tab or ↑ ↓)";
-        state.message_is_error = true;
-        return;
+// Puts the caret after text typed before the field had the keyboard, instead of selecting it all.
+int place_caret(ImGuiInputTextCallbackData* data) {
+    auto* l = static_cast<LessonState*>(data->UserData);
+    if (l->caret_to_end) {
+        data->CursorPos = data->SelectionStart = data->SelectionEnd = data->BufTextLen;
+        l->caret_to_end = false;
     }
-    try {
-        const course::AnswerVerdict verdict = l.run.answer(typed);
-        state.message = l.run.save_problem(), state.message_is_error = !state.message.empty();
-        // A wrong number stays in the field to be corrected; the field gets the keyboard again.
-        if (!verdict.correct) l.focus_answer = true;
-        refresh_mask(session, state);
-    } catch (const formats::InputError& e) {
-        state.message = e.problem(), state.message_is_error = true;
-        l.focus_answer = true;
-    }
-}
-
-void skip(model::Session& session, UiState& state) {
-    LessonState& l = *state.lesson;
-    l.run.skip();
-    state.message = l.run.save_problem(), state.message_is_error = !state.message.empty();
-    refresh_mask(session, state);
-}
-
-void next(model::Session& session, UiState& state) {
-    LessonState& l = *state.lesson;
-    if (l.run.step() + 1 < l.run.step_count()) go_to_lesson_step(session, state, l.run.step() + 1);
-}
-
-void back(model::Session& session, UiState& state) {
-    LessonState& l = *state.lesson;
-    if (l.run.step() > 0) go_to_lesson_step(session, state, l.run.step() - 1);
-}
-
-void handle_keys(model::Session& session, UiState& state) {
-    LessonState& l = *state.lesson;
-    const ImGuiIO& io = ImGui::GetIO();
-    // Typing in a field (the answer, a setting, an export path): the arrows move its caret and Enter is the
-    // field's own.
-    const bool typing = io.WantTextInput;
-    const course::Step& step = l.run.current();
-    const bool choose = step.question && step.question->kind == course::Question::Kind::choose;
-    const int options = choose ? static_cast<int>(step.question->options.size()) : 0;
-    for (int key : state.pressed_keys) {
-        const bool open = l.run.waiting();
-        switch (key) {
-            case SDL_SCANCODE_RIGHT:
-                if (!typing) next(session, state);
-                break;
-            case SDL_SCANCODE_PAGEDOWN:
-                next(session, state);
-                break;
-            case SDL_SCANCODE_LEFT:
-                if (!typing) back(session, state);
-                break;
-            case SDL_SCANCODE_PAGEUP:
-                back(session, state);
-                break;
-            case SDL_SCANCODE_RETURN:
-            case SDL_SCANCODE_KP_ENTER:
-                if (typing) break;
-                if (open && (l.chosen >= 0 || l.typed[0] != '\0'))
-                    check(session, state);
-                else if (!open)
-                    next(session, state);
-                break;
-            case SDL_SCANCODE_TAB:
-            case SDL_SCANCODE_DOWN:
-            case SDL_SCANCODE_UP:
-                if (!choose || !open) break;
-                if (key == SDL_SCANCODE_UP || (key == SDL_SCANCODE_TAB && io.KeyShift))
-                    l.chosen = l.chosen <= 0 ? options - 1 : l.chosen - 1;
-                else
-                    l.chosen = (l.chosen + 1) % options;
-                break;
-            case SDL_SCANCODE_ESCAPE:
-                state.quit = true;
-                break;
-            default:
-                break;
-        }
-    }
-    state.pressed_keys.clear();
+    return 0;
 }
 
 // What the verdict's line says before any answer.
 std::string hint(const course::Question& q) {
     return q.kind == course::Question::Kind::predict
-               ? "Type a number and press Enter. Its value stays hidden everywhere until you answer."
-               : "Pick an option (Tab or ↑ ↓) and press Enter. The answer stays hidden until then.";
+               ? "Type a number (3.2, 3,2 or 1/60; its unit may follow) and press Enter. Its value stays hidden "
+                 "everywhere until you answer."
+               : "Pick an option (its number, Tab or ↑ ↓) and press Enter. The answer stays hidden until then.";
+}
+
+// The line under the question: the refusal of the last Enter, the verdict, or the hint.
+std::string verdict_line(const LessonState& l) {
+    if (!l.field_error.empty()) return l.field_error;
+    const std::string& said = l.run.feedback(l.run.step());
+    return said.empty() ? hint(*l.run.current().question) : said;
 }
 
 // The height the question takes below the text: prompt, input or options, the buttons and the verdict.
@@ -194,8 +123,8 @@ float question_height(const LessonState& l, float width) {
         for (const course::Option& o : q.options)
             h += std::max(frame, wrapped_height(o.label, width - frame - style.ItemInnerSpacing.x)) + gap;
     h += frame + gap;  // Check, Skip
-    const std::string& said = l.run.feedback(l.run.step());
-    h += wrapped_height(said.empty() ? hint(q) : said, width) + gap;
+    h += wrapped_height(verdict_line(l), width) + gap;
+    if (l.leaving) h += 2 * frame + 3 * gap + wrapped_height(std::string(220, 'x'), width);  // the prompt
     return h + style.WindowPadding.y;
 }
 
@@ -214,13 +143,23 @@ void draw_question(model::Session& session, UiState& state) {
     record_item(state, "text");
     if (!open) ImGui::BeginDisabled();
     if (q.kind == course::Question::Kind::predict) {
-        if (l.focus_answer && open) ImGui::SetKeyboardFocusHere();
+        if (l.focus_answer && open && !l.leaving) ImGui::SetKeyboardFocusHere();
         l.focus_answer = false;
-        ImGui::SetNextItemWidth(std::min(160.0f, ImGui::GetContentRegionAvail().x * 0.6f));
-        if (ImGui::InputText("##answer", l.typed.data(), l.typed.size(),
-                             ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_CharsScientific |
-                                 ImGuiInputTextFlags_AutoSelectAll))  // a retry types over the last try
-            check(session, state);
+        const float field_width = std::min(160.0f, ImGui::GetContentRegionAvail().x * 0.6f);
+        if (open) {
+            ImGui::SetNextItemWidth(field_width);
+            // Any text: the answer's reader (course/answer_number.hpp) takes a decimal comma, a fraction and a
+            // unit, and says what is wrong with anything else. A retry types over the last try.
+            if (ImGui::InputText("##answer", l.typed.data(), l.typed.size(),
+                                 ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll |
+                                     ImGuiInputTextFlags_CallbackAlways,
+                                 place_caret, &l))
+                check_typed(session, state);
+        } else {
+            // Settled: the answer given, as text. No field, so a focus asked for before the answer (a frame's
+            // delay) cannot take the keyboard from the lesson's keys.
+            ImGui::Button(l.typed[0] ? l.typed.data() : "—", ImVec2(field_width, 0));
+        }
         record_item(state, "input");
         ImGui::SameLine();
         ImGui::TextUnformatted(answer.unit.empty() ? "(no unit)" : answer.unit.c_str());
@@ -246,34 +185,33 @@ void draw_question(model::Session& session, UiState& state) {
         }
     }
     // Check and Skip on their own line, where no label pushes them out of the panel.
-    if (ImGui::Button("Check")) check(session, state);
+    if (ImGui::Button("Check")) check_typed(session, state);
     record_item(state, "button Check");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Enter");
     ImGui::SameLine();
-    if (ImGui::Button("Skip")) skip(session, state);
+    if (ImGui::Button("Skip")) skip_question(session, state);
     record_item(state, "button Skip");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the engine's answer; counted as skipped");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Show the engine's answer; counted as skipped (Ctrl+S)");
     if (!open) ImGui::EndDisabled();
 
+    // Beside the field: why Enter did nothing, the verdict, or how to answer.
     const std::string& said = l.run.feedback(l.run.step());
-    if (said.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        wrapped_text(hint(q));
-    } else {
-        ImGui::PushStyleColor(ImGuiCol_Text, now == course::QuestionState::answered  ? right_colour
-                                             : now == course::QuestionState::skipped ? skipped_colour
-                                                                                     : wrong_colour);
-        wrapped_text(said);
-    }
+    ImGui::PushStyleColor(ImGuiCol_Text, !l.field_error.empty() ? error_colour
+                                         : said.empty()         ? ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled)
+                                         : now == course::QuestionState::answered ? right_colour
+                                         : now == course::QuestionState::skipped  ? skipped_colour
+                                                                                  : wrong_colour);
+    wrapped_text(verdict_line(l));
     ImGui::PopStyleColor();
     record_item(state, "verdict");
+    if (l.leaving) draw_leaving_prompt(session, state);
 }
 
 }  // namespace
 
 void draw_lesson(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
-    handle_keys(session, state);
+    handle_lesson_keys(session, state);
     const course::Lesson& lesson = l.run.lesson().lesson;
     const course::Step& step = l.run.current();
     if (state.record_layout) {
@@ -286,31 +224,46 @@ void draw_lesson(model::Session& session, UiState& state) {
     wrapped_text("Lesson " + std::to_string(lesson.number) + " · " + lesson.title);
     ImGui::PopStyleColor();
     record_item(state, "text");
-    ImGui::Text("Step %d of %d", l.run.step() + 1, l.run.step_count());
+    if (l.finished)
+        ImGui::TextUnformatted("Done");
+    else
+        ImGui::Text("Step %d of %d", l.run.step() + 1, l.run.step_count());
     record_item(state, "text");
     ImGui::SameLine();
-    ImGui::BeginDisabled(l.run.step() == 0);
-    if (ImGui::SmallButton("◀ Back")) back(session, state);
+    ImGui::BeginDisabled(!l.finished && l.run.step() == 0);
+    if (ImGui::SmallButton("◀ Back")) request_step(session, state, l.finished ? l.run.step() : l.run.step() - 1);
     ImGui::EndDisabled();
     record_item(state, "button Back");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The previous step (← or Page Up)");
     ImGui::SameLine();
-    ImGui::BeginDisabled(l.run.step() + 1 == l.run.step_count());
-    if (ImGui::SmallButton("Next ▶")) next(session, state);
+    ImGui::BeginDisabled(l.finished);
+    const bool last = l.run.step() + 1 == l.run.step_count();
+    if (ImGui::SmallButton(last ? "Finish ▶" : "Next ▶")) request_step(session, state, l.run.step() + 1);
     ImGui::EndDisabled();
     record_item(state, "button Next");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The next step (→, Page Down, or Enter once answered)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(last
+                              ? "The end of the lesson: your score and what is still open (→, Page Down, or Enter once "
+                                "answered)"
+                              : "The next step (→, Page Down, or Enter once answered)");
     // The student stepped away with the inspector's buttons: one click brings the step's place back.
     std::optional<model::Cursor> place;
     try {
         place = model::resolve_goto(session.trace(), model::parse_goto(step.at, "at"), "at");
     } catch (const formats::InputError&) {
     }
-    if (place && session.cursor() && !(*session.cursor() == *place)) {
+    if (!l.finished && place && session.cursor() && !(*session.cursor() == *place)) {
         if (ImGui::SmallButton("Back to this step's place")) session.move_to(*place);
         record_item(state, "button Place");
     }
+    draw_step_list(session, state);
     ImGui::Separator();
+    if (l.finished) {
+        ImGui::BeginChild("end", ImVec2(0, 0), false);
+        draw_lesson_end(session, state);
+        ImGui::EndChild();
+        return;
+    }
 
     const float width = ImGui::GetContentRegionAvail().x;
     const float lines = ImGui::GetTextLineHeightWithSpacing();

@@ -1,6 +1,6 @@
 #include "gui/panels.hpp"
 
-#include "explain/format.hpp"
+#include "course/item_labels.hpp"
 
 #include <imgui.h>
 
@@ -10,41 +10,6 @@ namespace {
 
 using model::Cursor;
 using model::Stage;
-
-// An item's line in the tree: its contact and the value that made it the choice, unless a lesson's open
-// question hides that value (or which bodies the contact joins).
-std::string item_label(const Trace& trace, const course::Mask& mask, int f, Stage stage, int item) {
-    const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
-    const auto i = static_cast<std::size_t>(item);
-    const Cursor at{f, stage, item, 0};
-    if (stage == Stage::preparation) {
-        const ContactPreparation& c = frame.contacts[i];
-        if (mask.hides_bodies_of(f, c.contact)) return "contact " + std::to_string(c.contact) + " · ? / ?";
-        return "contact " + std::to_string(c.contact) + " · " + model::body_label(trace, c.bodies[0]) + " / " +
-               model::body_label(trace, c.bodies[1]);
-    }
-    if (stage == Stage::position) {
-        const PositionIteration& it = frame.position.iterations[i];
-        const bool secret = mask.hides_value(at, it.contact, "penetration", it.penetration);
-        return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) +
-               (secret ? "" : " (" + explain::number(it.penetration) + " m)");
-    }
-    const VelocityIteration& it = frame.velocity.iterations[i];
-    const bool secret = mask.hides_value(at, it.contact, "desired_delta_velocity", it.desired_delta_velocity);
-    const std::string value = secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)";
-    if (it.sweep)
-        return explain::sweep_text(*it.sweep, trace.scene.settings) + " → contact " + std::to_string(it.contact) +
-               value;
-    return "iteration " + std::to_string(it.iteration) + " → contact " + std::to_string(it.contact) + value;
-}
-
-std::string stage_label(const FrameRecord& frame, Stage stage) {
-    const int n = model::item_count(frame, stage);
-    if (stage == Stage::preparation) return "Preparation: " + std::to_string(n) + (n == 1 ? " contact" : " contacts");
-    const PhaseOutcome& o = stage == Stage::position ? frame.position.outcome : frame.velocity.outcome;
-    return std::string(stage == Stage::position ? "Position phase: " : "Velocity phase: ") + std::to_string(n) +
-           " of " + std::to_string(o.iteration_limit) + " iterations";
-}
 
 // The items of one stage, clipped so a stage of thousands of iterations costs only the visible rows.
 void draw_items(model::Session& session, UiState& state, int f, Stage stage) {
@@ -59,7 +24,7 @@ void draw_items(model::Session& session, UiState& state, int f, Stage stage) {
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const bool current = here && at.item == i;
             ImGui::PushID(i);
-            if (ImGui::Selectable(item_label(trace, state.mask, f, stage, i).c_str(), current))
+            if (ImGui::Selectable(course::item_label(trace, state.mask, f, stage, i).c_str(), current))
                 session.move_to(Cursor{f, stage, i, 0});
             if (current && state.views.scroll_to_cursor) ImGui::SetScrollHereY(0.4f);
             ImGui::PopID();
@@ -87,7 +52,7 @@ void draw_navigator(model::Session& session, UiState& state) {
             for (Stage stage : model::stages(frame)) {
                 ImGui::PushID(static_cast<int>(stage));
                 if (state.views.scroll_to_cursor && at.frame == f && at.stage == stage) ImGui::SetNextItemOpen(true);
-                if (ImGui::TreeNode("stage", "%s", stage_label(frame, stage).c_str())) {
+                if (ImGui::TreeNode("stage", "%s", course::stage_label(frame, stage).c_str())) {
                     draw_items(session, state, f, stage);
                     ImGui::TreePop();
                 }

@@ -3,6 +3,9 @@
 
 #include "explain/format.hpp"
 #include "gui/panels.hpp"
+#include "formats/atomic_file.hpp"
+#include "formats/input_error.hpp"
+#include "model/derivation_view.hpp"
 #include "resolver/settings_names.hpp"
 
 #include <imgui.h>
@@ -146,6 +149,18 @@ void draw_settings(model::Session& session, UiState& state, model::ActionHost& h
                                                                                                  : "the trace's scene");
 }
 
+// The table at the cursor as CSV with what a lesson's open questions hide as "?", like the window shows it.
+std::string masked_table(const model::Session& session, const UiState& state) {
+    if (!session.cursor()) throw formats::InputError("export table", "the trace records nothing to show");
+    model::DerivationView view = model::derivation_view(session.trace(), *session.cursor());
+    for (model::ViewRow& r : view.rows) {
+        if (state.mask.hides_row(*session.cursor(), r.row)) r.row.value = r.row.exact = "?";
+        if (state.mask.other_frame_hidden_by(*session.cursor(), r.row) && !r.row.other_frame.empty())
+            r.row.other_frame = "?";
+    }
+    return model::derivation_csv(view);
+}
+
 void draw_export(model::Session& session, UiState& state, model::ActionHost& host) {
     using model::ActionKind;
     struct Row {
@@ -156,9 +171,30 @@ void draw_export(model::Session& session, UiState& state, model::ActionHost& hos
     const Row rows[] = {{"Export trace", ActionKind::export_trace, &state.trace_path},
                         {"Export table", ActionKind::export_table, &state.table_path},
                         {"Screenshot", ActionKind::screenshot, &state.screenshot_path}};
+    // A copy is a reading too: with a lesson's question open the trace (every answer) waits, and the table is
+    // written as shown.
+    const bool secrets = !state.mask.empty();
     for (const Row& r : rows) {
         ImGui::PushID(r.button);
-        if (ImGui::Button(r.button, ImVec2(110, 0))) act(session, state, {r.kind, std::string(r.path->data())}, host);
+        const bool withheld = secrets && r.kind == ActionKind::export_trace;
+        ImGui::BeginDisabled(withheld);
+        if (ImGui::Button(r.button, ImVec2(110, 0))) {
+            if (secrets && r.kind == ActionKind::export_table) {
+                try {
+                    formats::write_file_atomically(r.path->data(), masked_table(session, state), r.path->data());
+                    state.message = "written to " + std::string(r.path->data()), state.message_is_error = false;
+                } catch (const formats::InputError& e) {
+                    state.message = e.problem(), state.message_is_error = true;
+                }
+            } else {
+                act(session, state, {r.kind, std::string(r.path->data())}, host);
+            }
+        }
+        ImGui::EndDisabled();
+        if (withheld && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip(
+                "The trace holds every answer: it can be exported once the lesson's questions are "
+                "answered or skipped.");
         ImGui::SameLine();
         ImGui::SetNextItemWidth(-1);
         ImGui::InputText("##path", r.path->data(), r.path->size());

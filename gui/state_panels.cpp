@@ -119,8 +119,9 @@ void draw_contacts(model::Session& session, UiState& state) {
             // Each value at the scale of the contact's own value as prepared: what rounding leaves of a
             // resolved penetration is 0.
             const auto cell = [&](std::string_view key, double value, double scale) {
-                if (mask.hides_value(*v.cursor, row.contact, key, value)) {
+                if (const course::HiddenBy by = mask.value_hidden_by(*v.cursor, row.contact, key, value)) {
                     ImGui::TextUnformatted("?");
+                    if (ImGui::IsItemHovered()) ImGui::SetTooltip("hidden until you answer step %d", *by + 1);
                     return;
                 }
                 const std::string text = explain::number(value, scale);
@@ -164,8 +165,10 @@ void draw_bodies(const model::Session& session, UiState& state) {
     while (clipper.Step())
         for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
             const auto b = static_cast<std::size_t>(i);
-            const bool hide_before = mask.hides_body(*v.cursor, i, false, v.bodies.before[b]);
-            const bool hide_after = hide_before || mask.hides_body(*v.cursor, i, true, v.bodies.after[b]);
+            course::HiddenBy by = mask.body_hidden_by(*v.cursor, i, false, v.bodies.before[b]);
+            const bool hide_before = by.has_value();
+            if (!by) by = mask.body_hidden_by(*v.cursor, i, true, v.bodies.after[b]);
+            const bool hide_after = by.has_value();
             const BodyState& before = v.bodies.before[b];
             const BodyState& after = hide_after ? before : v.bodies.after[b];
             ImGui::TableNextRow();
@@ -174,8 +177,8 @@ void draw_bodies(const model::Session& session, UiState& state) {
             ImGui::TextUnformatted(trace.scene.body_names[b].c_str());
             if (hide_before || hide_after) {
                 ImGui::TableSetColumnIndex(1);
-                ImGui::TextWrapped(hide_before ? "? (hidden until you answer)"
-                                               : "as before → ? (hidden until you answer)");
+                const std::string until = "? (hidden until you answer step " + std::to_string(*by + 1) + ")";
+                wrapped_text(hide_before ? until : "as before → " + until);
                 ImGui::TableSetColumnIndex(2);
                 ImGui::TextWrapped("?");
                 if (hide_before) continue;

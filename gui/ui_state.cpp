@@ -20,6 +20,7 @@ void refresh_mask(const model::Session& session, UiState& state) {
         l.reaches_revision = session.revision();
     }
     state.mask = course::Mask(l.reaches, l.run.open(), session.trace());
+    ++state.mask_revision;
 }
 
 void refresh_views(const model::Session& session, UiState& state) {
@@ -32,8 +33,10 @@ void refresh_views(const model::Session& session, UiState& state) {
     v.revision = session.revision();
     v.cursor = cursor;
     v.scroll_to_cursor = true;
+    v.hidden_rows.clear();  // another item's rows: nothing to reveal
     if (!cursor) {
-        v = CursorViews{session.revision(), std::nullopt, {}, {}, {}, {}, -1, {}, 0.0, false};
+        v = CursorViews{};
+        v.revision = session.revision();
         return;
     }
     v.derivation = model::derivation_view(trace, *cursor);
@@ -79,6 +82,8 @@ void go_to_lesson_step(model::Session& session, UiState& state, int step) {
         state.message_is_error = true;
     }
     if (!l.run.save_problem().empty()) state.message = l.run.save_problem(), state.message_is_error = true;
+    // Two steps may stand on the same place: the step's rows come into view all the same.
+    state.views.scroll_to_cursor = true;
 }
 
 void act(model::Session& session, UiState& state, const model::Action& action, model::ActionHost& host) {

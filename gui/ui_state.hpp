@@ -4,6 +4,7 @@
 // changes (never every frame: a fully recorded frame of the 1000-box grid has 4000 contacts).
 
 #include "course/lesson.hpp"
+#include "course/lesson_end.hpp"
 #include "course/lesson_run.hpp"
 #include "course/mask.hpp"
 #include "course/progress.hpp"
@@ -45,11 +46,22 @@ struct CursorViews {
     std::vector<model::PhaseCurve> curves;
     double largest_impulse = 0.0;
     bool scroll_to_cursor = false;  // the panels bring the cursor's rows into view once after a move
+    // Rows of the derivation table hidden when it was last drawn, to bring the ones an answer reveals into view.
+    std::vector<bool> hidden_rows;
+    int hidden_rows_mask = -1;  // the mask_revision they were drawn with
+    // The rows the derivation table brings into view, for a few frames (a table remade at new column widths
+    // lays its rows out again), and the room left above them.
+    std::vector<bool> bring_rows;
+    int bring_frames = 0;
+    float bring_context = 0.0f;
 };
 
 // A lesson open in the window: the student's run through it, what they are typing or have picked, and what
 // its open questions hide.
 struct LessonState {
+    explicit LessonState(course::LessonRun taking, bool preview_only = false)
+        : run(std::move(taking)), preview(preview_only) {}
+
     course::LessonRun run;
     std::array<char, 64> typed{};
     int chosen = -1;           // a choose question's option, from 0; -1 none
@@ -59,6 +71,17 @@ struct LessonState {
     int reaches_revision = -1;
     // The headless pictures of `lesson --headless`: each step shown with the questions before it answered.
     bool preview = false;
+    // The lesson after this one, offered at its end (none after the last lesson).
+    std::optional<course::LessonLink> next_lesson = {};
+    // Why the last Enter did nothing ("type your answer first"), shown beside the answer field.
+    std::string field_error = {};
+    // A move away from a step whose question is still open waits for the student's word: where it goes (the
+    // step count: the end of the lesson). The panel asks "skip this question?" meanwhile.
+    std::optional<int> leaving = {};
+    bool caret_to_end = false;              // typed text reached the field before it had the keyboard: no select-all
+    bool finished = false;                  // the end-of-lesson screen is shown
+    bool open_next = false;                 // the student asked for the next lesson: the window closes to open it
+    std::optional<int> go_to_request = {};  // a step a panel's link asked for, taken up by the lesson panel
 };
 
 // The panels' sizes, as the user dragged the splitters (0: the default for the window's size).
@@ -84,7 +107,8 @@ struct UiState {
     SceneCamera camera;
     PanelSizes sizes;
     std::optional<LessonState> lesson;
-    course::Mask mask;  // what the lesson's open questions hide (nothing without a lesson)
+    course::Mask mask;      // what the lesson's open questions hide (nothing without a lesson)
+    int mask_revision = 0;  // counts the mask's changes: an answer or a skip reveals rows to bring into view
     CursorViews views;
     std::array<char, 512> trace_path{"trace.json"};
     std::array<char, 512> table_path{"table.csv"};

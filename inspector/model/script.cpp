@@ -55,7 +55,7 @@ std::string line_name(int line) {
 
 const char* known_actions =
     "next|prev step|contact|iteration|item|phase [N], first, last, goto SPEC, set NAME VALUE, screenshot FILE, "
-    "view PLANE, lesson step N, export trace FILE, export table FILE, quit";
+    "view PLANE, lesson step N, key NAME, type TEXT, export trace FILE, export table FILE, quit";
 
 }  // namespace
 
@@ -113,6 +113,16 @@ Action parse_action(std::string_view text, int line) {
             throw formats::InputError(where,
                                       "expected lesson step N with N from 1, got \"" + std::string(trim(text)) + "\"");
         return {ActionKind::lesson_step, std::to_string(step), 1, line};
+    }
+    if (w[0] == "key") {
+        needs(2, "key NAME (e.g. key Right, key ctrl+s)");
+        return {ActionKind::key, std::string(w[1]), 1, line};
+    }
+    if (w[0] == "type") {
+        // Everything after the word, spaces inside kept: "type 7,5 m/s".
+        const std::string_view rest = trim(trim(text).substr(4));
+        if (rest.empty()) throw formats::InputError(where, "expected type TEXT");
+        return {ActionKind::type, std::string(rest), 1, line};
     }
     if (w[0] == "screenshot") {
         needs(2, "screenshot FILE.png");
@@ -207,6 +217,8 @@ void perform(Session& session, const Action& action, std::string_view where, Act
         case ActionKind::screenshot:
         case ActionKind::view:
         case ActionKind::lesson_step:
+        case ActionKind::key:
+        case ActionKind::type:
         case ActionKind::quit:
             if (!host) throw formats::InputError(at, "only the inspector's window or --headless renderer can do this");
             if (action.kind == ActionKind::screenshot) {
@@ -219,6 +231,10 @@ void perform(Session& session, const Action& action, std::string_view where, Act
                 host->view(action.argument);
             else if (action.kind == ActionKind::lesson_step)
                 host->lesson_step(std::stoi(action.argument) - 1);
+            else if (action.kind == ActionKind::key)
+                host->key(action.argument);
+            else if (action.kind == ActionKind::type)
+                host->type(action.argument);
             else
                 host->quit();
             return;

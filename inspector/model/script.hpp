@@ -7,6 +7,8 @@
 //   set <setting> <value>                           (as --set setting=value; re-runs the scene)
 //   view front|top|side|3d                         (the scene view's plane, or the rotatable view)
 //   lesson step N                                  (the open lesson's step N, from 1)
+//   key NAME | key ctrl+NAME                       (a key pressed and released: Right, Return, Tab, Escape, ...)
+//   type TEXT                                      (text typed, the rest of the line: type 7,5 m/s)
 //   screenshot FILE.png | export trace FILE.json | export table FILE.csv | quit
 // Blank lines and lines starting with # are ignored. Paths are relative to the working directory.
 
@@ -36,6 +38,8 @@ enum class ActionKind {
     set,
     view,
     lesson_step,  // "lesson step N": the open lesson's step N (from 1)
+    key,          // "key ctrl+s": a key pressed and released, through the window's own event queue
+    type,         // "type 7,5": text typed, through the window's own event queue
     screenshot,
     export_trace,
     export_table,
@@ -62,6 +66,10 @@ public:
     virtual void view(const std::string& plane) = 0;  // front, top, side or 3d
     virtual void lesson_step(int step) = 0;           // from 0; throws formats::InputError when there is none
     virtual void quit() = 0;
+    // A key chord ("Right", "ctrl+s") or typed text put on the window's event queue, as the keyboard would: a
+    // script drives the window as a student's keys do. Throws formats::InputError for a key it does not know.
+    virtual void key(const std::string& chord) = 0;
+    virtual void type(const std::string& text) = 0;
     // Where an export or screenshot named "-" goes (the command's standard output), or null when nowhere.
     virtual std::ostream* standard_output() { return nullptr; }
 };

@@ -38,8 +38,7 @@ TEST_CASE("dragging the border beside the lesson widens its panel, and the layou
         course::prepare_lesson(course::read_lesson(course::lesson_files(IMPULSE_SOURCE_DIR "/lessons").front()));
     gui::OffscreenLayout layout(1280, 800);
     gui::UiState state;
-    state.lesson.emplace(
-        gui::LessonState{course::LessonRun(lesson, nullptr, std::nullopt), {}, -1, true, {}, -1, true});
+    state.lesson.emplace(course::LessonRun(lesson, nullptr, std::nullopt), true);
     state.record_layout = true;
     layout.frame(lesson.session, state);
     // The default: 36 % of 1280 px.

@@ -94,8 +94,11 @@ struct RecordingHost : ActionHost {
     std::vector<std::string> screenshots;
     std::vector<std::string> views;
     std::vector<int> lesson_steps;
+    std::vector<std::string> keys, typed;
     int quits = 0;
     void screenshot(const std::string& path) override { screenshots.push_back(path); }
+    void key(const std::string& chord) override { keys.push_back(chord); }
+    void type(const std::string& text) override { typed.push_back(text); }
     void view(const std::string& plane) override { views.push_back(plane); }
     void lesson_step(int step) override { lesson_steps.push_back(step); }
     void quit() override { ++quits; }
@@ -466,9 +469,15 @@ TEST_CASE("a screenshot, view or quit without a window is an input error") {
     act(s, "screenshot shot.png", &host);
     act(s, "view 3d", &host);
     act(s, "quit", &host);
+    act(s, "key ctrl+s", &host);
+    act(s, "type  7,5 m/s ", &host);
     CHECK(host.screenshots == std::vector<std::string>{"shot.png"});
     CHECK(host.views == std::vector<std::string>{"3d"});
     CHECK(host.quits == 1);
+    // The keys go to the window's event queue as typed; a typed text keeps its inner spaces.
+    CHECK(host.keys == std::vector<std::string>{"ctrl+s"});
+    CHECK(host.typed == std::vector<std::string>{"7,5 m/s"});
+    CHECK(perform_error(s, "key Right").problem().starts_with("only the inspector's window"));
 }
 
 TEST_CASE("moves and exports of a session with nothing recorded are input errors") {

@@ -116,7 +116,10 @@ void add_inspect(CLI::App& app, InspectOptions& o, FlagCatalog& c) {
     inspect->add_flag("--headless", o.headless,
                       "Render offscreen, without a display: needs --screenshot, --script "
                       "or --bench-frames");
-    inspect->add_option("--size", o.size, "Window or image size WxH in pixels (default 1280x800)")->type_name("WxH");
+    inspect
+        ->add_option("--size", o.size,
+                     "Window or image size WxH in pixels (default: a window 90 % of the display, an image 1280x800)")
+        ->type_name("WxH");
     inspect
         ->add_option("--goto", o.go_to,
                      "Start at frame=F,phase=preparation|position|velocity,iteration=I,contact=C,step=NAME "
@@ -145,7 +148,9 @@ void add_lesson(CLI::App& app, LessonOptions& o, FlagCatalog& c) {
         "--headless, or with neither, annotated text with the answers and PNGs in a folder.\n"
         "Example: impulse-lab lesson 1");
     whole_number(lesson->add_option("N", o.number, "Lesson number"), c, 1, 99);
-    lesson->add_flag("--headless", o.headless, "Print the lesson as text; write its trace and a PNG per step");
+    lesson->add_flag("--headless", o.headless,
+                     "Print the lesson as text; write its trace and a PNG per step (with --script: take the lesson "
+                     "offscreen, driven by the script's keys)");
     lesson->add_flag("--text", o.text,
                      "Take the lesson in this terminal: it asks each question and waits (without a terminal to read "
                      "from, it prints the lesson with the answers)");
@@ -153,11 +158,19 @@ void add_lesson(CLI::App& app, LessonOptions& o, FlagCatalog& c) {
     folder(lesson->add_option("--lessons", o.lessons_folder,
                               "Folder of lesson files (default: the installed course, share/impulse-lab/lessons)"),
            c);
-    lesson->add_option("--size", o.size, "Window or image size WxH in pixels (default 1280x800)")->type_name("WxH");
-    input_file(
-        lesson->add_option("--script", o.script, "Window: run inspect's actions first (e.g. lesson step 3, next step)"),
-        c);
+    lesson
+        ->add_option("--size", o.size,
+                     "Window or image size WxH in pixels (default: a window 90 % of the display, an image 1280x800)")
+        ->type_name("WxH");
+    input_file(lesson->add_option("--script", o.script,
+                                  "Window: run inspect's actions first (e.g. lesson step 3, key Right, type 7,5)"),
+               c);
     output_file(lesson->add_option("--screenshot", o.screenshot, "Window: save a PNG after the script, then close"), c);
+    lesson
+        ->add_option("--set", o.settings,
+                     "Run the lesson with one more setting, e.g. --set sliding_friction=reference (repeatable); its "
+                     "questions are then graded against that run, and progress is not saved")
+        ->type_name("NAME=VALUE");
 }
 
 void add_worksheet(CLI::App& app, WorksheetOptions& o, FlagCatalog& c) {

@@ -66,6 +66,7 @@ struct LessonOptions {
     std::optional<std::string> size;
     std::optional<std::string> script;      // as inspect's: actions, e.g. "lesson step 3", then the window stays
     std::optional<std::string> screenshot;  // as inspect's: a PNG at the end, then the window closes
+    std::vector<std::string> settings;      // --set name=value: the lesson run with these too (answers included)
 };
 
 // Lists the lessons with the student's progress, or opens one: in a window; interactively in the terminal

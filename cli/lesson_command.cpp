@@ -15,6 +15,7 @@
 #include "formats/input_error.hpp"
 #include "course/lesson.hpp"
 #include "course/progress.hpp"
+#include "formats/settings_json.hpp"
 #include "course/text_lesson.hpp"
 #include "model/script.hpp"
 
@@ -71,6 +72,25 @@ int list_lessons(const LessonOptions& options, const course::Progress& progress,
 
 }  // namespace
 
+namespace {
+
+// The lesson numbered `number` in the lessons folder, prepared with the --set settings after its own.
+course::PreparedLesson prepared_lesson(const LessonOptions& options, int number, std::ostream& err) {
+    std::optional<std::filesystem::path> file;
+    for (const std::filesystem::path& f : course::lesson_files(lessons_folder(options)))
+        if (std::atoi(f.filename().string().c_str()) == number) file = f;
+    if (!file)
+        throw formats::InputError("lesson", "there is no lesson " + std::to_string(number) + " in " +
+                                                lessons_folder(options).string() + " (impulse-lab lesson lists them)");
+    course::Lesson lesson = course::read_lesson(*file);
+    for (const std::string& s : options.settings) lesson.settings.push_back(s);
+    course::PreparedLesson prepared = course::prepare_lesson(std::move(lesson));
+    for (const std::string& note : prepared.lesson.notes) err << "note: " << file->string() << ": " << note << '\n';
+    return prepared;
+}
+
+}  // namespace
+
 int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream& err) {
     const std::optional<std::filesystem::path> progress_path = course::progress_file();
     course::LoadedProgress loaded;
@@ -85,41 +105,59 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
                                                  : options.out        ? "--out"
                                                                       : "--size") +
                                                 " is for the window and its pictures");
+    // A setting is checked before the lesson runs, so its error names the flag.
+    for (const std::string& s : options.settings) {
+        Scene probe;
+        formats::apply_setting(probe, s, "--set");
+    }
+    // With other settings the answers are that run's: they are not the course's, so they are not kept.
+    const bool keep_progress = progress_path && options.settings.empty();
+    if (!options.settings.empty())
+        err << "impulse-lab: note: --set: the lesson runs with other settings and its questions are graded "
+               "against that run; your progress is not saved\n";
 
-    std::optional<std::filesystem::path> file;
-    for (const std::filesystem::path& f : course::lesson_files(lessons_folder(options)))
-        if (std::atoi(f.filename().string().c_str()) == *options.number) file = f;
-    if (!file)
-        throw formats::InputError("lesson", "there is no lesson " + std::to_string(*options.number) + " in " +
-                                                lessons_folder(options).string() + " (impulse-lab lesson lists them)");
-    course::PreparedLesson prepared = course::prepare_lesson(course::read_lesson(*file));
-    for (const std::string& note : prepared.lesson.notes) err << "note: " << file->string() << ": " << note << '\n';
+    course::PreparedLesson prepared = prepared_lesson(options, *options.number, err);
+    const std::filesystem::path folder = lessons_folder(options);
 
-    const bool window = !options.text && !options.headless && gui::display_available();
-    gui::InspectorRun run;
-    if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
-    run.lesson = &prepared;
-    run.progress = &loaded.progress;
-    run.progress_file = progress_path;
-    run.headless = !window;
+    // A window, on the screen or (a script's keys driving it) offscreen.
+    const bool window = !options.text && (options.script ? true : !options.headless && gui::display_available());
     if (window) {
+        gui::InspectorRun run;
+        if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
+        run.fit_to_screen = !options.size;
+        run.headless = options.headless || !gui::display_available();
+        run.progress = keep_progress ? &loaded.progress : nullptr;
+        run.progress_file = keep_progress ? progress_path : std::nullopt;
         if (options.script) {
             run.script_name = *options.script;
             run.script = read_script_file(*options.script);
         }
         run.screenshot = options.screenshot;
+        bool open_next = false;
+        run.next_lesson_chosen = &open_next;
         // A picture on standard output, as inspect's (cli/outputs.hpp): what the lesson says goes to stderr then.
+        std::ostream* said = &out;
         if (options.screenshot && names_standard_output(*options.screenshot, out)) {
             if (is_terminal(out))
                 throw formats::InputError("--screenshot",
                                           "standard output is a terminal; redirect it to a file or a pipe");
             run.standard_output = &out;
-            return gui::run_inspector(prepared.session, run, err, err);
+            said = &err;
         }
-        return gui::run_inspector(prepared.session, run, out, err);
+        // The end of a lesson offers the next one: it opens in a new window, without the script.
+        for (int status = 0;;) {
+            run.lesson = &prepared;
+            run.next_lesson = course::lesson_after(folder, prepared.lesson.number);
+            open_next = false;
+            status = gui::run_inspector(prepared.session, run, *said, err);
+            if (status != 0 || !open_next || !run.next_lesson) return status;
+            prepared = prepared_lesson(options, run.next_lesson->number, err);
+            run.script.clear();
+            run.screenshot.reset();
+        }
     }
-    if (options.script || options.screenshot)
-        throw formats::InputError(options.script ? "--script" : "--screenshot",
+    if (options.screenshot)
+        throw formats::InputError("--screenshot",
                                   "is for the lesson's window; headless, every step is written as a PNG to --out");
 
     // A terminal to read from: the lesson asks and waits, and saves progress as the window does.
@@ -127,9 +165,15 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
         if (!options.text)
             err << "impulse-lab: note: no display (DISPLAY is not set): the lesson runs in this terminal "
                    "(--headless prints it with its answers and pictures)\n";
-        course::LessonRun taking(prepared, progress_path ? &loaded.progress : nullptr, progress_path);
-        course::take_lesson(taking, *options.terminal, out, terminal_width());
-        return 0;
+        while (true) {
+            course::LessonRun taking(prepared, keep_progress ? &loaded.progress : nullptr,
+                                     keep_progress ? progress_path : std::nullopt);
+            const std::optional<course::LessonLink> next = course::lesson_after(folder, prepared.lesson.number);
+            const course::TerminalOutcome outcome =
+                course::take_lesson(prepared, taking, *options.terminal, out, terminal_width(), next);
+            if (!outcome.next_lesson || !next) return 0;
+            prepared = prepared_lesson(options, next->number, err);
+        }
     }
     // Nothing to read answers from: the lesson with its answers, at once, never waiting.
     if (options.text) {
@@ -141,27 +185,30 @@ int lesson_command(const LessonOptions& options, std::ostream& out, std::ostream
                "pictures in a folder\n";
     char default_folder[32];
     std::snprintf(default_folder, sizeof default_folder, "lesson-%02d", prepared.lesson.number);
-    const std::filesystem::path folder = options.out ? std::filesystem::path(*options.out) : default_folder;
+    const std::filesystem::path pictures = options.out ? std::filesystem::path(*options.out) : default_folder;
     std::error_code error;
-    std::filesystem::create_directories(folder, error);
-    if (error) throw formats::InputError("--out", "cannot create " + folder.string() + ": " + error.message());
+    std::filesystem::create_directories(pictures, error);
+    if (error) throw formats::InputError("--out", "cannot create " + pictures.string() + ": " + error.message());
 
     course::write_annotated_lesson(out, prepared);
+    gui::InspectorRun run;
+    if (options.size) std::tie(run.width, run.height) = parse_window_size(*options.size);
+    run.lesson = &prepared;
+    run.headless = true;
     run.script_name = "lesson";
     for (std::size_t i = 0; i < prepared.places.size(); ++i) {
         char name[96];
         std::snprintf(name, sizeof name, "step-%02zu-%s.png", i + 1, prepared.lesson.steps[i].id.c_str());
         run.script.push_back({model::ActionKind::lesson_step, std::to_string(i + 1), 1, 0});
-        run.script.push_back({model::ActionKind::screenshot, (folder / name).string(), 1, 0});
+        run.script.push_back({model::ActionKind::screenshot, (pictures / name).string(), 1, 0});
     }
-    run.script.push_back({model::ActionKind::export_trace, (folder / "trace.json").string(), 1, 0});
+    run.script.push_back({model::ActionKind::export_trace, (pictures / "trace.json").string(), 1, 0});
     // Text mode shows the answers, so it does not move the student's saved place or record answers; its
     // pictures show each step as a student who answered every question before it.
-    run.progress = nullptr;
     run.lesson_preview = true;
     const int status = gui::run_inspector(prepared.session, run, out, err);
     if (status == 0)
-        out << "\nWrote " << prepared.places.size() << " screenshots and trace.json to " << folder.string() << '\n';
+        out << "\nWrote " << prepared.places.size() << " screenshots and trace.json to " << pictures.string() << '\n';
     return status;
 }
 

@@ -1,6 +1,7 @@
 #include "course/lesson.hpp"
 
 #include "course/answer_number.hpp"
+#include "course/readings.hpp"
 #include "course/slips.hpp"
 #include "course/trace_path.hpp"
 #include "formats/input_files.hpp"
@@ -205,6 +206,17 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
         s.text = std::string(trim(s.text));
     }
     lesson.introduction = std::string(trim(lesson.introduction));
+    // Every text with a window and a terminal reading must hold both whole (course/readings.hpp).
+    check_readings(lesson.introduction, "introduction");
+    for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
+        const Step& s = lesson.steps[i];
+        check_readings(s.text, "section \"" + s.id + "\"");
+        if (!s.question) continue;
+        const std::string where = "steps[" + std::to_string(i) + "].question";
+        check_readings(s.question->prompt, where + ".prompt");
+        for (std::size_t o = 0; o < s.question->options.size(); ++o)
+            check_readings(s.question->options[o].label, where + ".options[" + std::to_string(o) + "].label");
+    }
     return lesson;
 }
 

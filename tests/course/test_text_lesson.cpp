@@ -4,12 +4,14 @@
 
 #include "course/lesson.hpp"
 #include "course/progress.hpp"
+#include "explain/text_table.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 #include "support/terminal.hpp"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -61,29 +63,34 @@ TEST_CASE("a lesson in a terminal hides the answer, says how far off a wrong one
     t.send("");
     // The desired Δv's own row is hidden, and so is the impulse it gives in one division.
     const std::string step2 = t.expect("Your answer in m/s");
-    CHECK(step2.find("desired_delta_velocity      ? (hidden until you answer)") != std::string::npos);
+    CHECK(step2.find("? (hidden until you answer this step's question)") != std::string::npos);
     CHECK(step2.find("7.5") == std::string::npos);
     t.send("5");
     t.expect("not quite: 33.3 % too low; try again, or skip to see the engine's value");
     t.send("seven");
     t.expect("type a number");
-    t.send("7.5");
+    t.send("-7,5 m/s");
+    t.expect("not quite: the opposite sign");
+    t.send("7,5 m/s");
     const std::string seen = t.expect("right: the engine has 7.5 m/s\r\n");
     // Answered: the table again, with the value shown.
     const std::string shown = t.expect("Enter: next step");
-    CHECK(shown.find("desired_delta_velocity      7.5 m/s") != std::string::npos);
+    CHECK(shown.find("7.5 m/s") != std::string::npos);
     t.send("");
     t.expect("Your answer in N·s");
     t.send("s");
     t.expect("skipped: the engine's answer is 15 N·s");
     t.expect("That was the last step");
     t.send("");
+    t.expect("The end of lesson 1");
+    t.expect("Score: 2 questions: 1 right after retries, 1 skipped.");
+    t.send("q");
     t.expect("Lesson 1: 1 right after retries, 1 skipped.");
     CHECK(t.wait() == 0);
 
     const course::LessonProgress p = course.progress();
     CHECK(p.answers.at("desired").correct);
-    CHECK(p.answers.at("desired").tries == 2);  // "seven" was not an answer
+    CHECK(p.answers.at("desired").tries == 3);  // "seven" was not an answer
     CHECK(p.answers.at("impulse").skipped);
     CHECK_FALSE(p.answers.at("impulse").correct);
     const course::Tally tally = course::tally(p);
@@ -114,16 +121,86 @@ TEST_CASE("a student who quits a lesson in a terminal midway comes back to the s
     t.expect("right: the engine has 15 N·s (you were 0.667 % off)");
     t.expect("That was the last step");
     t.send("");
+    t.expect("Score: 2 questions: 2 right at the first try.");
+    t.send("");
     t.expect("Lesson 1: 2 right at the first try.");
     CHECK(t.wait() == 0);
     CHECK(course::tally(course.progress()).first_try == 2);
 }
 
-// Every shipped lesson taken to its end in a terminal, each question answered with the engine's value: before
-// the answer is given the terminal never shows it (a predict answer's text, "0.132 N·s"), and at the end every
-// question counts as right at the first try. The lessons whose runs are long (the brick wall) take a few
-// seconds; the whole course well under a minute.
-TEST_CASE("every shipped lesson can be taken to its end in a terminal without seeing an answer before answering") {
+TEST_CASE("a terminal lesson shows the bodies, the contacts and the phase's order on a key, through the mask") {
+    Course course;
+    Terminal t({program, "lesson", "1", "--text", "--lessons", course.lessons.string()}, course.env());
+    t.expect("Enter: next step");
+    t.send("");
+    t.expect("Your answer in m/s");
+    // At the desired Δv's step, the ball after the impulse would give the answer away: hidden, with the step.
+    t.send("o");
+    const std::string bodies = t.expect("Your answer in m/s");
+    CHECK(bodies.find("Bodies before → after this item") != std::string::npos);
+    CHECK(bodies.find("ball") != std::string::npos);
+    CHECK(bodies.find("? (hidden until you answer step 2)") != std::string::npos);
+    t.send("c");
+    const std::string contacts = t.expect("Your answer in m/s");
+    CHECK(contacts.find("▶ 0  ball / world") != std::string::npos);
+    CHECK(contacts.find("7.5") == std::string::npos);
+    t.send("i");
+    const std::string order = t.expect("Your answer in m/s");
+    CHECK(order.find("▶ iteration 0 → contact 0") != std::string::npos);
+    CHECK(order.find("7.5") == std::string::npos);
+    t.send("7.5");
+    t.expect("right: ");
+    t.expect("Enter: next step");
+    t.send("");
+    t.send("s");  // the impulse: with it settled, the ball's velocity after it is shown
+    t.expect("skipped: ");
+    t.expect("That was the last step");
+    t.send("o");
+    const std::string after = t.expect("ω rad/s");
+    CHECK(after.find("(0, -5, 0) → (0, 2.5, 0)") != std::string::npos);
+    t.send("q");
+    CHECK(t.wait() == 0);
+}
+
+TEST_CASE("a terminal lesson asks before leaving an open question, and its end lists it and offers the next lesson") {
+    Course course;
+    course.dir.write("course/02-again.md", three_steps());
+    Terminal t({program, "lesson", "1", "--text", "--lessons", course.lessons.string()}, course.env());
+    t.expect("Enter: next step");
+    t.send("");
+    t.expect("Your answer in m/s");
+    t.send("");
+    t.expect("This question is still open: type your answer, s to skip it");
+    t.send("");  // again: on, the question left open
+    t.expect("Step 3 of 3");
+    t.send("set restitution_cutoff 0");  // the Settings tab, typed: the scene runs again
+    t.expect("re-ran with restitution_cutoff=0");
+    t.send("s");
+    t.expect("skipped: the engine's answer is 15 N·s");
+    t.send("");
+    t.expect("Score: 2 questions: 1 skipped, 1 still open.");
+    t.expect("step 2 · desired: What desired change?");
+    t.expect("Type a step's number to go back to it, n for lesson 2 · A ball, q to quit.");
+    t.send("2");
+    t.expect("Step 2 of 3");
+    t.send("7.5");
+    t.expect("right: ");
+    t.send("g 3");
+    t.expect("Step 3 of 3");
+    t.send("");
+    t.expect("Score: 2 questions: 1 right at the first try, 1 skipped.");
+    t.send("n");
+    t.expect("Lesson 2 · A ball");
+    t.send("q");
+    CHECK(t.wait() == 0);
+}
+
+// Every shipped lesson taken to its end in an 80-column terminal, each question answered from the keyboard with
+// the engine's value as a student types it (a decimal comma, a unit after it): before the answer is given the
+// terminal never shows it (a predict answer's text, "0.132 N·s"), no line is wider than the terminal, and at the
+// end every question counts as right at the first try. The lessons whose runs are long (the brick wall) take a
+// few seconds; the whole course well under a minute.
+TEST_CASE("every shipped lesson can be taken to its end in an 80-column terminal without seeing an answer first") {
     const std::filesystem::path course = IMPULSE_SOURCE_DIR "/lessons";
     const std::vector<std::filesystem::path> files = course::lesson_files(course);
     REQUIRE(files.size() == 13);
@@ -135,7 +212,8 @@ TEST_CASE("every shipped lesson can be taken to its end in a terminal without se
         Terminal t({program, "lesson", std::to_string(prepared.lesson.number), "--text", "--lessons", course.string()},
                    {{"XDG_CONFIG_HOME", config.file("cfg").string()},
                     {"DISPLAY", std::nullopt},
-                    {"WAYLAND_DISPLAY", std::nullopt}});
+                    {"WAYLAND_DISPLAY", std::nullopt}},
+                   80);
         for (std::size_t k = 0; k < steps.size(); ++k) {
             t.expect("Step " + std::to_string(k + 1) + " of " + std::to_string(steps.size()));
             if (const auto& q = steps[k].question) {
@@ -151,9 +229,14 @@ TEST_CASE("every shipped lesson can be taken to its end in a terminal without se
                         CHECK_MESSAGE(
                             shown.find(answer.shown) == std::string::npos,
                             "step " << k + 1 << " shows its answer " << answer.shown << " before it is given");
+                    // As a student types it: every other answer with a decimal comma and its unit.
                     char text[32];
                     std::snprintf(text, sizeof text, "%.17g", value);
                     typed = text;
+                    if (k % 2 == 1) {
+                        std::replace(typed.begin(), typed.end(), '.', ',');
+                        if (!answer.unit.empty()) typed += " " + answer.unit;
+                    }
                 } else {
                     typed = std::to_string(answer.correct_option + 1);
                 }
@@ -164,9 +247,22 @@ TEST_CASE("every shipped lesson can be taken to its end in a terminal without se
             t.send("");
         }
         const int questions = course::question_count(prepared.lesson);
+        t.expect("Score: " + std::to_string(questions) + (questions == 1 ? " question: " : " questions: ") +
+                 std::to_string(questions) + " right at the first try.");
+        t.send("q");
         t.expect("Lesson " + std::to_string(prepared.lesson.number) + ": " + std::to_string(questions) +
                  " right at the first try.");
         CHECK(t.wait() == 0);
+        // Fitted to the terminal: tables wrapped at words, text at spaces.
+        std::size_t start = 0;
+        const std::string& all = t.all();
+        while (start < all.size()) {
+            const std::size_t end = std::min(all.find('\n', start), all.size());
+            std::string line = all.substr(start, end - start);
+            std::erase(line, '\r');
+            CHECK_MESSAGE(explain::display_width(line) <= 80, "a line wider than 80 columns: " << line);
+            start = end + 1;
+        }
     }
 }
 

@@ -23,11 +23,13 @@ namespace impulse::test {
 
 class Terminal {
 public:
-    // Runs `argv` (argv[0] a path) with the environment changed by `env` (a value of none: unset).
-    Terminal(const std::vector<std::string>& argv, const std::map<std::string, std::optional<std::string>>& env) {
+    // Runs `argv` (argv[0] a path) with the environment changed by `env` (a value of none: unset), on a terminal
+    // `columns` wide.
+    Terminal(const std::vector<std::string>& argv, const std::map<std::string, std::optional<std::string>>& env,
+             unsigned short columns = 110) {
         winsize size{};
         size.ws_row = 50;
-        size.ws_col = 110;
+        size.ws_col = columns;
         pid_ = ::forkpty(&master_, nullptr, nullptr, &size);
         REQUIRE_MESSAGE(pid_ >= 0, "forkpty failed");
         if (pid_ == 0) {

@@ -9,6 +9,7 @@
 #include "gui/lesson_moves.hpp"
 #include "gui/panels.hpp"
 #include "gui/text_wrap.hpp"
+#include "course/readings.hpp"
 #include "formats/input_error.hpp"
 
 #include <SDL.h>
@@ -38,6 +39,11 @@ std::string plain(std::string line) {
     std::erase(line, '`');
     for (std::size_t bold = line.find("**"); bold != std::string::npos; bold = line.find("**")) line.erase(bold, 2);
     return line;
+}
+
+// A lesson's text as the window reads it (course/readings.hpp).
+std::string window_text(const std::string& text) {
+    return course::reading(text, course::Reading::window);
 }
 
 // Markdown shown as plain wrapped text: code spans and bold lose their marks, list items become bullets.
@@ -114,14 +120,14 @@ float question_height(const LessonState& l, float width) {
     const course::Question& q = *l.run.current().question;
     const ImGuiStyle& style = ImGui::GetStyle();
     const float gap = style.ItemSpacing.y, frame = ImGui::GetFrameHeight();
-    float h = gap * 2 + 1.0f;                    // separator
-    h += ImGui::GetFontSize() + gap;             // "Question"
-    h += wrapped_height(q.prompt, width) + gap;  // the prompt
+    float h = gap * 2 + 1.0f;                                 // separator
+    h += ImGui::GetFontSize() + gap;                          // "Question"
+    h += wrapped_height(window_text(q.prompt), width) + gap;  // the prompt
     if (q.kind == course::Question::Kind::predict)
         h += frame + gap;
     else
         for (const course::Option& o : q.options)
-            h += std::max(frame, wrapped_height(o.label, width - frame - style.ItemInnerSpacing.x)) + gap;
+            h += std::max(frame, wrapped_height(window_text(o.label), width - frame - style.ItemInnerSpacing.x)) + gap;
     h += frame + gap;  // Check, Skip
     h += wrapped_height(verdict_line(l), width) + gap;
     if (l.leaving) h += 2 * frame + 3 * gap + wrapped_height(std::string(220, 'x'), width);  // the prompt
@@ -139,7 +145,7 @@ void draw_question(model::Session& session, UiState& state) {
     ImGui::Separator();
     ImGui::TextColored(question_colour, "Question");
     record_item(state, "text");
-    wrapped_text(q.prompt);
+    wrapped_text(window_text(q.prompt));
     record_item(state, "text");
     if (!open) ImGui::BeginDisabled();
     if (q.kind == course::Question::Kind::predict) {
@@ -176,7 +182,7 @@ void draw_question(model::Session& session, UiState& state) {
             record_item(state, what.c_str());
             ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
             ImGui::BeginGroup();
-            wrapped_text(q.options[o].label);
+            wrapped_text(window_text(q.options[o].label));
             ImGui::EndGroup();
             if (ImGui::IsItemClicked()) l.chosen = static_cast<int>(o);
             record_item(state, what.c_str());
@@ -273,10 +279,10 @@ void draw_lesson(model::Session& session, UiState& state) {
     const float question_space = std::min(below, std::max(available - 4.0f * lines, 0.0f));
     ImGui::BeginChild("text", ImVec2(0, -question_space), false);
     if (l.run.step() == 0 && !lesson.introduction.empty()) {
-        draw_markdown(state, lesson.introduction);
+        draw_markdown(state, window_text(lesson.introduction));
         ImGui::Separator();
     }
-    draw_markdown(state, step.text);
+    draw_markdown(state, window_text(step.text));
     ImGui::EndChild();
     if (!step.question) return;
     if (question_space < below) {

@@ -5,6 +5,7 @@
 
 #include <SDL.h>
 #include <imgui.h>
+#include <imgui_internal.h>
 
 #include <algorithm>
 
@@ -16,6 +17,13 @@ const ImVec4 open_colour(1.0f, 0.72f, 0.3f, 1.0f);
 const ImVec4 right_colour(0.5f, 0.9f, 0.5f, 1.0f);
 const ImVec4 skipped_colour(0.75f, 0.75f, 1.0f, 1.0f);
 const ImVec4 title_colour(1.0f, 0.9f, 0.4f, 1.0f);
+
+// Whether a text field has the keyboard at this moment. ImGui's io.WantTextInput lags a frame: it is still set in
+// the frame after Enter closed the answer field, which would take the → pressed right after the answer.
+bool text_field_active() {
+    const ImGuiContext& g = *ImGui::GetCurrentContext();
+    return g.ActiveId != 0 && g.ActiveId == g.InputTextState.ID;
+}
 
 bool is_predict(const course::Step& step) {
     return step.question && step.question->kind == course::Question::Kind::predict;
@@ -68,7 +76,9 @@ void take_characters(model::Session& session, UiState& state) {
     }
     if (!l.run.waiting() || l.leaving) return;
     if (is_predict(step)) {
-        std::string text = std::string(l.typed.data()) + typed;
+        // A retry types over the last try, as the field does when it has the keyboard (it selects it all).
+        const bool last_try = l.typed.data() == l.run.given(l.run.step());
+        std::string text = (last_try ? std::string() : std::string(l.typed.data())) + typed;
         text.resize(std::min(text.size(), l.typed.size() - 1));
         l.typed.fill('\0');
         text.copy(l.typed.data(), text.size());
@@ -153,7 +163,9 @@ void handle_lesson_keys(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     const ImGuiIO& io = ImGui::GetIO();
     // A field has the keyboard (the answer, a setting, an export path): its caret keys and Enter are its own.
-    const bool typing = io.WantTextInput;
+    const bool typing = text_field_active();
+    // ← and → move a field's caret, but an empty answer field has none to move: there they are the lesson's.
+    const bool arrows_are_mine = !typing || (l.field_active && l.typed[0] == '\0');
     if (!typing) take_characters(session, state);
     if (l.go_to_request) {
         const int step = *l.go_to_request;
@@ -169,7 +181,7 @@ void handle_lesson_keys(model::Session& session, UiState& state) {
         switch (key) {
             case SDL_SCANCODE_RIGHT:
             case SDL_SCANCODE_PAGEDOWN:
-                if (typing && key == SDL_SCANCODE_RIGHT) break;
+                if (!arrows_are_mine && key == SDL_SCANCODE_RIGHT) break;
                 if (l.finished) break;
                 // A second → while asked: go on, the question left open.
                 if (l.leaving)
@@ -179,7 +191,7 @@ void handle_lesson_keys(model::Session& session, UiState& state) {
                 break;
             case SDL_SCANCODE_LEFT:
             case SDL_SCANCODE_PAGEUP:
-                if (typing && key == SDL_SCANCODE_LEFT) break;
+                if (!arrows_are_mine && key == SDL_SCANCODE_LEFT) break;
                 if (l.leaving)
                     stay(state);
                 else

@@ -149,8 +149,12 @@ void draw_question(model::Session& session, UiState& state) {
     record_item(state, "text");
     if (!open) ImGui::BeginDisabled();
     if (q.kind == course::Question::Kind::predict) {
-        if (l.focus_answer && open && !l.leaving) ImGui::SetKeyboardFocusHere();
-        l.focus_answer = false;
+        // A focus asked for takes the field at the next frame; asked again while that is pending, or while the
+        // field has the keyboard, it would make ImGui start the field over and drop the Enter of that frame.
+        const bool request = l.focus_answer && open && !l.leaving && !l.field_active && !l.focus_pending;
+        if (request) ImGui::SetKeyboardFocusHere();
+        if (request || l.field_active || !open) l.focus_answer = false;
+        l.focus_pending = request;
         const float field_width = std::min(160.0f, ImGui::GetContentRegionAvail().x * 0.6f);
         if (open) {
             ImGui::SetNextItemWidth(field_width);
@@ -161,10 +165,12 @@ void draw_question(model::Session& session, UiState& state) {
                                      ImGuiInputTextFlags_CallbackAlways,
                                  place_caret, &l))
                 check_typed(session, state);
+            l.field_active = ImGui::IsItemActive();
         } else {
             // Settled: the answer given, as text. No field, so a focus asked for before the answer (a frame's
             // delay) cannot take the keyboard from the lesson's keys.
             ImGui::Button(l.typed[0] ? l.typed.data() : "—", ImVec2(field_width, 0));
+            l.field_active = l.focus_pending = false;
         }
         record_item(state, "input");
         ImGui::SameLine();

@@ -79,6 +79,8 @@ struct LessonState {
     // step count: the end of the lesson). The panel asks "skip this question?" meanwhile.
     std::optional<int> leaving = {};
     bool caret_to_end = false;              // typed text reached the field before it had the keyboard: no select-all
+    bool field_active = false;              // the answer field had the keyboard at the end of the last frame
+    bool focus_pending = false;             // the keyboard was asked for the field last frame: it takes it now
     bool finished = false;                  // the end-of-lesson screen is shown
     bool open_next = false;                 // the student asked for the next lesson: the window closes to open it
     std::optional<int> go_to_request = {};  // a step a panel's link asked for, taken up by the lesson panel
@@ -117,6 +119,9 @@ struct UiState {
     std::string message;            // the last export's or setting's outcome, shown in the status line
     bool message_is_error = false;
     bool quit = false;  // Esc in a lesson: the window closes
+    // A tab of the lesson's panel to bring to the front at the next frame ("Bodies"), then cleared: how a test
+    // looks at every panel.
+    std::string show_tab;
     // Filled by the lesson panel every frame while `record_layout` is set.
     bool record_layout = false;
     std::vector<LaidOutItem> layout;

@@ -86,11 +86,13 @@ void draw_lesson_layout(model::Session& session, UiState& state, model::ActionHo
             {"Export", [](model::Session& s, UiState& u, model::ActionHost& h) { draw_export(s, u, h); }},
         };
         for (const auto& tab : tabs)
-            if (ImGui::BeginTabItem(tab.name)) {
+            if (ImGui::BeginTabItem(tab.name, nullptr,
+                                    state.show_tab == tab.name ? ImGuiTabItemFlags_SetSelected : 0)) {
                 tab.draw(session, state, host);
                 ImGui::EndTabItem();
             }
         ImGui::EndTabBar();
+        state.show_tab.clear();
     }
     ImGui::End();
 

@@ -135,11 +135,29 @@ LayoutReport check_lesson_layout(course::PreparedLesson& lesson, int width, int 
         lay_out();
         check_items(state, width, height, where + " answered wrong", needed, report);
         l.run.answered_before(k);
+        refresh_mask(session, state);
+        // About to move on with it open: the panel asks first, with its buttons below the question.
+        l.leaving = k + 1;
+        lay_out();
+        std::vector<std::string> asked = needed;
+        asked.insert(asked.end(), {"prompt", "button Skip it", "button Leave open", "button Stay"});
+        check_items(state, width, height, where + " asked before leaving", asked, report);
+        l.leaving.reset();
         l.run.skip();
         refresh_mask(session, state);
         lay_out();
         check_items(state, width, height, where + " skipped", needed, report);
     }
+    // The end of the lesson, with every question still open (the longest list) and the next lesson offered.
+    LessonState& l = *state.lesson;
+    l.run.answered_before(0);
+    l.finished = true;
+    l.next_lesson =
+        course::LessonLink{lesson.lesson.number + 1, "The next lesson's title, as long as a title gets", {}};
+    lay_out();
+    std::vector<std::string> needed{"score", "button Next lesson", "button Back to steps"};
+    if (course::question_count(lesson.lesson) > 0) needed.push_back("open question");
+    check_items(state, width, height, "the end", needed, report);
     return report;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The lesson window's layout, checked from ImGui's own item rectangles: every step of a lesson laid out at
 // a window size, as the student meets it (the questions before it answered), and for a question also after
-// a wrong answer and after a skip; every text and control of the lesson panel must lie
+// a wrong answer, while it asks before leaving the question open, and after a skip, then the end of the lesson;
+// every text and control of the lesson panel must lie
 // inside the window, and a question's options, its Check and Skip buttons and its verdict must be there.
 // ImGui lays the frames out in its own context with the inspector's fonts; nothing is rasterised, so a whole
 // course takes seconds.

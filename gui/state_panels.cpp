@@ -186,12 +186,12 @@ void draw_bodies(const model::Session& session, UiState& state) {
             ImGui::PushFont(value_font());
             if (!hide_after) {
                 ImGui::TableSetColumnIndex(1);
-                wrapped_text(change_text(before.position, after.position));
+                wrapped_text(change_text(before.position, after.position) + " m");
                 if (before.orientation.coeffs() != after.orientation.coeffs())
                     wrapped_text("q " + change_text(before.orientation, after.orientation));
                 ImGui::TableSetColumnIndex(2);
-                wrapped_text("v " + change_text(before.velocity, after.velocity));
-                wrapped_text("ω " + change_text(before.angular_velocity, after.angular_velocity));
+                wrapped_text("v " + change_text(before.velocity, after.velocity) + " m/s");
+                wrapped_text("ω " + change_text(before.angular_velocity, after.angular_velocity) + " rad/s");
             }
             ImGui::PopFont();
         }

@@ -16,6 +16,8 @@ struct GlyphRef {
     const ImFontGlyph* glyph;
 };
 
+}  // namespace
+
 // Which glyph covers each texel of the font atlas (glyphs never overlap there): the centre of a glyph quad's
 // texture rectangle names its glyph even when ImGui clipped the quad, and a filled shape's white texel none.
 class AtlasIndex {
@@ -52,10 +54,13 @@ private:
     std::vector<GlyphRef> glyphs_;
 };
 
+namespace {
+
 struct Placed {
     std::size_t order;  // as drawn: a combining mark comes after its letter at the same x
     float x, y;         // the glyph's pen position: its line's top left, as RenderText placed it
-    float advance, size;
+    float advance;
+    float space;  // the width of a space in its font: a gap of about one is a space, a wider one a new run
     unsigned codepoint;
 };
 
@@ -79,16 +84,12 @@ void append_utf8(std::string& text, unsigned c) {
 
 }  // namespace
 
-std::vector<VisibleRun> visible_text(const ImDrawData& drawn) {
-    const ImFontAtlas& atlas = *ImGui::GetIO().Fonts;
-    static thread_local const ImFontAtlas* indexed = nullptr;
-    static thread_local std::unique_ptr<AtlasIndex> index;
-    static thread_local int indexed_size = 0;
-    if (indexed != &atlas || !index || indexed_size != atlas.TexWidth * atlas.TexHeight) {
-        index = std::make_unique<AtlasIndex>(atlas);
-        indexed = &atlas;
-        indexed_size = atlas.TexWidth * atlas.TexHeight;
-    }
+TextReader::TextReader(const ImFontAtlas& atlas) : index_(std::make_unique<AtlasIndex>(atlas)) {}
+
+TextReader::~TextReader() = default;
+
+std::vector<VisibleRun> TextReader::read(const ImDrawData& drawn) const {
+    const AtlasIndex* index = index_.get();
     std::vector<VisibleRun> runs;
     for (int l = 0; l < drawn.CmdListsCount; ++l) {
         const ImDrawList& list = *drawn.CmdLists[l];
@@ -116,8 +117,9 @@ std::vector<VisibleRun> visible_text(const ImDrawData& drawn) {
                 const float v_share = (top_left.uv.y - g->glyph->V0) / (g->glyph->V1 - g->glyph->V0);
                 const float x = top_left.pos.x - (g->glyph->X0 + u_share * (g->glyph->X1 - g->glyph->X0)) * scale;
                 const float y = top_left.pos.y - (g->glyph->Y0 + v_share * (g->glyph->Y1 - g->glyph->Y0)) * scale;
-                placed.push_back(
-                    {placed.size(), x, y, g->glyph->AdvanceX * scale, g->font->FontSize, g->glyph->Codepoint});
+                const ImFontGlyph* space = g->font->FindGlyphNoFallback(' ');
+                placed.push_back({placed.size(), x, y, g->glyph->AdvanceX * scale,
+                                  (space ? space->AdvanceX : 0.3f * g->font->FontSize) * scale, g->glyph->Codepoint});
             }
         }
         // Lines (glyphs whose pen stands at the same height), then left to right.
@@ -130,14 +132,14 @@ std::vector<VisibleRun> visible_text(const ImDrawData& drawn) {
         float end = 0, line = -1e9f;
         for (const Placed& p : placed) {
             const float gap = p.x - end;
-            // A gap wider than a wide space starts another run (a table cell, another label); a narrower one is a
-            // space between words.
-            if (std::abs(p.y - line) > 0.5f || gap > 0.45f * p.size || gap < -0.5f * p.size) {
+            // A gap wider than a space and a half starts another run (a table cell, another label); about one
+            // space is a space between words.
+            if (std::abs(p.y - line) > 0.5f || gap > 1.6f * p.space || gap < -1.5f * p.space) {
                 if (!run.text.empty()) runs.push_back(run);
                 run = VisibleRun{list._OwnerName ? list._OwnerName : "", {}, p.x, p.y};
                 line = p.y;
                 end = p.x;
-            } else if (gap > 0.15f * p.size) {
+            } else if (gap > 0.5f * p.space) {
                 run.text += ' ';
             }
             append_utf8(run.text, p.codepoint);

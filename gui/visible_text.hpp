@@ -4,10 +4,12 @@
 // group, a table cell) per window and line. Tests read it to check that nothing on screen gives an answer away,
 // whichever panel, tooltip or label drew it.
 
+#include <memory>
 #include <string>
 #include <vector>
 
 struct ImDrawData;
+struct ImFontAtlas;
 
 namespace impulse::gui {
 
@@ -17,8 +19,18 @@ struct VisibleRun {
     float x = 0, y = 0;  // where it starts on the screen
 };
 
-// The runs of the current ImGui context's last rendered frame (ImGui::GetDrawData()), top to bottom, left to
-// right within each window.
-std::vector<VisibleRun> visible_text(const ImDrawData& drawn);
+class AtlasIndex;
+
+// Reads frames drawn with one font atlas (indexed once: which glyph covers each of its texels).
+class TextReader {
+public:
+    explicit TextReader(const ImFontAtlas& atlas);
+    ~TextReader();
+    // The runs of a rendered frame (ImGui::GetDrawData()), top to bottom, left to right within each window.
+    std::vector<VisibleRun> read(const ImDrawData& drawn) const;
+
+private:
+    std::unique_ptr<AtlasIndex> index_;
+};
 
 }  // namespace impulse::gui

@@ -197,6 +197,11 @@ std::string change_text(double before, double after, std::string_view unit) {
     return number(before, scale) + " → " + number(after, scale) + " " + std::string(unit);
 }
 
+// When moving back along the paths removed everything, there is nothing left to project.
+bool projected(const PositionResolution& r) {
+    return !(r.rewind && r.amount <= 1e-12 * r.penetration);
+}
+
 std::string amount_formula(const PositionResolution& r) {
     if (r.method == PositionMethod::split_impulse) return "the push impulse this visit, λ_after − λ_before";
     if (r.rewind) return "penetration − rewind.removed_penetration";
@@ -272,9 +277,7 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
                 .world_vectors("rewind.angular_change", w.angular_change);
             tables.push_back(rewind.done());
         }
-        // When moving back along the paths removed everything, there is nothing left to project.
-        const bool projected = !(r->rewind && r->amount <= 1e-12 * r->penetration);
-        if (projected) {
+        if (projected(*r)) {
             Table inertia(std::string(words::step::penetration_inertia),
                           "penetration_inertia — how readily each body gives way (" + method + ")");
             // The split impulse pushes with an impulse (N·s), not a distance: its own word.
@@ -456,6 +459,33 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
     }
     for (StepTable& t : updates_tables("contacts sharing a body that changed speed", rows)) tables.push_back(t);
     return tables;
+}
+
+std::vector<std::string_view> preparation_steps(const ContactPreparation&) {
+    return {words::step::basis, words::step::relative_position, words::step::delta_velocity_per_unit_impulse,
+            words::step::contact_velocity, words::step::desired_delta_velocity};
+}
+
+std::vector<std::string_view> position_iteration_steps(const PositionIteration& it) {
+    std::vector<std::string_view> steps;
+    if (const auto& r = it.resolution) {
+        if (r->rewind) steps.push_back(words::step::rewind);
+        if (projected(*r)) steps.insert(steps.end(), {words::step::penetration_inertia, words::step::move_split});
+        steps.push_back(words::step::position_change);
+    }
+    if (!it.updates.empty()) steps.push_back(words::step::updates);
+    return steps;
+}
+
+std::vector<std::string_view> velocity_iteration_steps(const VelocityIteration& it) {
+    std::vector<std::string_view> steps;
+    if (it.resolution) {
+        steps.insert(steps.end(), {words::step::contact_velocity, words::step::desired_delta_velocity});
+        if (it.accumulated) steps.push_back(words::step::accumulated);
+        steps.insert(steps.end(), {words::step::impulse, words::step::velocity_change});
+    }
+    if (!it.updates.empty()) steps.push_back(words::step::updates);
+    return steps;
 }
 
 }  // namespace impulse::explain

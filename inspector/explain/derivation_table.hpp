@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace impulse::explain {
@@ -50,5 +51,11 @@ std::string sweep_meaning(SolverStage stage);
 // accumulated impulse for the accumulating solvers), impulse, velocity_change, then its updates.
 std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& iteration,
                                                  const Mat3* contact_to_world = nullptr);
+
+// The steps of an item's tables, in order, read from the record's shape without formatting a value: what the
+// navigator counts, names and moves by. Each list is the `step` of the tables the functions above make.
+std::vector<std::string_view> preparation_steps(const ContactPreparation& contact);
+std::vector<std::string_view> position_iteration_steps(const PositionIteration& iteration);
+std::vector<std::string_view> velocity_iteration_steps(const VelocityIteration& iteration);
 
 }  // namespace impulse::explain

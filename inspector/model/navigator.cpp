@@ -82,7 +82,7 @@ std::string pass_text(const PositionIteration& it, const ResolverSettings& setti
 }
 
 int steps_in(const Trace& trace, const Cursor& c) {
-    return static_cast<int>(step_tables(trace, c).size());
+    return static_cast<int>(step_names(trace, c).size());
 }
 
 // The first (or last) stage of frame `f` at or after (before) index `f`, skipping frames with nothing recorded.
@@ -129,15 +129,16 @@ std::optional<Cursor> stage_before(const Trace& trace, const Cursor& c) {
 
 // The step index with the same name in another item, or 0.
 int same_step(const Trace& trace, const Cursor& target, const std::string& name) {
-    const std::vector<StepTable> tables = step_tables(trace, target);
-    for (std::size_t i = 0; i < tables.size(); ++i)
-        if (tables[i].step == name) return static_cast<int>(i);
+    const std::vector<std::string_view> steps = step_names(trace, target);
+    for (std::size_t i = 0; i < steps.size(); ++i)
+        if (steps[i] == name) return static_cast<int>(i);
     return 0;
 }
 
 std::string step_name(const Trace& trace, const Cursor& c) {
-    const std::vector<StepTable> tables = step_tables(trace, c);
-    return c.step < static_cast<int>(tables.size()) ? tables[static_cast<std::size_t>(c.step)].step : std::string();
+    const std::vector<std::string_view> steps = step_names(trace, c);
+    return c.step < static_cast<int>(steps.size()) ? std::string(steps[static_cast<std::size_t>(c.step)])
+                                                   : std::string();
 }
 
 std::optional<Cursor> item_after(const Trace& trace, const Cursor& c) {
@@ -247,6 +248,18 @@ std::vector<StepTable> step_tables(const Trace& trace, const Cursor& c) {
         for (StepTable& t : explain::velocity_iteration_tables(it, basis)) tables.push_back(std::move(t));
     }
     return tables;
+}
+
+std::vector<std::string_view> step_names(const Trace& trace, const Cursor& c) {
+    const FrameRecord& frame = frame_at(trace, c);
+    const auto item = static_cast<std::size_t>(c.item);
+    if (c.stage == Stage::preparation) return explain::preparation_steps(frame.contacts[item]);
+    std::vector<std::string_view> steps{words::step::choice};
+    for (const std::string_view s : c.stage == Stage::position
+                                        ? explain::position_iteration_steps(frame.position.iterations[item])
+                                        : explain::velocity_iteration_steps(frame.velocity.iterations[item]))
+        steps.push_back(s);
+    return steps;
 }
 
 std::optional<Cursor> first_cursor(const Trace& trace) {
@@ -436,13 +449,42 @@ Cursor place_of(const Trace& trace, const GotoSpec& spec, const std::string& at)
     return cursor;
 }
 
-// The step of `tables` named `name`: a step's own name first, else the first table that shows the quantity.
-std::optional<int> step_named(const std::vector<StepTable>& tables, const std::string& name) {
-    for (std::size_t i = 0; i < tables.size(); ++i)
-        if (tables[i].step == name) return static_cast<int>(i);
-    for (std::size_t i = 0; i < tables.size(); ++i)
-        for (const Row& r : tables[i].rows)
-            if (r.quantity == name || r.quantity.rfind(name + "[", 0) == 0) return static_cast<int>(i);
+// A word's name as a --goto may give it: its key path without the list marks ("updates[].after" -> "updates.after")
+// and its last part ("after").
+std::string plain_name(std::string_view quantity) {
+    std::string name(quantity);
+    for (std::size_t at = name.find("[]"); at != std::string::npos; at = name.find("[]")) name.erase(at, 2);
+    return name;
+}
+std::string last_part(std::string_view quantity) {
+    const std::string name = plain_name(quantity);
+    return name.substr(name.rfind('.') == std::string::npos ? 0 : name.rfind('.') + 1);
+}
+
+// The step of the item at `cursor` named by `name`: a step's own name; else a word of the list by its full name, or
+// by its last part when no word has that full name (an index after it ignored: "impulse_world[1]"): the table that
+// shows it (of two words sharing a last part, the later: position_change.angular_change before
+// rewind.angular_change), else the step that computes it (updates[].after: the updates).
+std::optional<int> step_named(const Trace& trace, const Cursor& cursor, const std::string& name) {
+    const std::vector<std::string_view> steps = step_names(trace, cursor);
+    for (std::size_t i = 0; i < steps.size(); ++i)
+        if (steps[i] == name) return static_cast<int>(i);
+    const std::string wanted = name.substr(0, name.find('['));
+    std::vector<const words::Word*> candidates;
+    for (const bool whole : {true, false}) {
+        for (const words::Word& w : words::all())
+            if ((whole ? plain_name(w.quantity) : last_part(w.quantity)) == wanted) candidates.push_back(&w);
+        if (!candidates.empty()) break;
+    }
+    if (candidates.empty()) return std::nullopt;
+    const std::vector<StepTable> tables = step_tables(trace, cursor);
+    for (auto w = candidates.rbegin(); w != candidates.rend(); ++w)
+        for (std::size_t i = 0; i < tables.size(); ++i)
+            for (const Row& r : tables[i].rows)
+                if (r.key == (*w)->quantity) return static_cast<int>(i);
+    for (auto w = candidates.rbegin(); w != candidates.rend(); ++w)
+        for (std::size_t i = 0; i < steps.size(); ++i)
+            if (steps[i] == (*w)->step) return static_cast<int>(i);
     return std::nullopt;
 }
 
@@ -457,27 +499,25 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
     const std::string at(where);
     Cursor cursor = place_of(trace, spec, at);
     if (!spec.step) return cursor;
-    const std::vector<StepTable> tables = step_tables(trace, cursor);
-    if (const std::optional<int> found = step_named(tables, *spec.step)) {
+    if (const std::optional<int> found = step_named(trace, cursor, *spec.step)) {
         cursor.step = *found;
         return cursor;
     }
     // Not in this stage. The same place in the frame's other stages: without a phase named, the first that shows
     // the step is meant (as for an iteration); with one, the error says where the step is.
-    std::vector<std::pair<Cursor, std::vector<StepTable>>> elsewhere;
+    std::vector<Cursor> elsewhere;
     for (const Stage stage : stages(trace.frames[static_cast<std::size_t>(cursor.frame)])) {
         if (stage == cursor.stage) continue;
         GotoSpec there = spec;
         there.stage = stage;
         try {
-            const Cursor other = place_of(trace, there, at);
-            elsewhere.emplace_back(other, step_tables(trace, other));
+            elsewhere.push_back(place_of(trace, there, at));
         } catch (const formats::InputError&) {
             // this stage has no such place (e.g. no iteration chose the contact)
         }
     }
-    for (auto& [other, other_tables] : elsewhere)
-        if (const std::optional<int> found = step_named(other_tables, *spec.step)) {
+    for (Cursor& other : elsewhere)
+        if (const std::optional<int> found = step_named(trace, other, *spec.step)) {
             if (spec.stage)
                 throw formats::InputError(
                     at, "no step or quantity \"" + *spec.step + "\" in " + stage_phrase(cursor.stage) + "; it is in " +
@@ -485,29 +525,30 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
             other.step = *found;
             return other;
         }
-    // Misspelt: the nearest name of a step or a quantity anywhere in the frame, and the stage it is in.
+    // Misspelt: the nearest step here or elsewhere in the frame, or word of the list (full or last part).
     std::vector<std::string> names;
-    std::vector<Stage> stage_of;
-    const auto collect = [&](Stage stage, const std::vector<StepTable>& in) {
-        for (const StepTable& t : in) {
-            names.push_back(t.step), stage_of.push_back(stage);
-            for (const Row& r : t.rows)
-                names.push_back(r.quantity.substr(0, r.quantity.find('['))), stage_of.push_back(stage);
-        }
-    };
-    collect(cursor.stage, tables);
-    for (const auto& [other, other_tables] : elsewhere) collect(other.stage, other_tables);
+    std::vector<std::optional<Stage>> stage_of;
+    for (const Cursor& c : elsewhere.empty() ? std::vector<Cursor>{cursor} : [&] {
+             std::vector<Cursor> all{cursor};
+             all.insert(all.end(), elsewhere.begin(), elsewhere.end());
+             return all;
+         }())
+        for (const std::string_view s : step_names(trace, c)) names.emplace_back(s), stage_of.push_back(c.stage);
+    for (const words::Word& w : words::all()) {
+        names.push_back(plain_name(w.quantity)), stage_of.push_back(std::nullopt);
+        names.push_back(last_part(w.quantity)), stage_of.push_back(std::nullopt);
+    }
     std::string steps;
-    for (const StepTable& t : tables) steps += (steps.empty() ? "" : ", ") + t.step;
+    for (const std::string_view s : step_names(trace, cursor)) steps += (steps.empty() ? "" : ", ") + std::string(s);
     std::string problem =
         "no step or quantity \"" + *spec.step + "\" in " + stage_phrase(cursor.stage) + " (its steps: " + steps + ")";
     if (const std::optional<std::string> meant = formats::closest_name(*spec.step, names)) {
-        const Stage stage =
+        const std::optional<Stage> stage =
             stage_of[static_cast<std::size_t>(std::find(names.begin(), names.end(), *meant) - names.begin())];
         problem += "; did you mean \"" + *meant + "\"" +
-                   (stage == cursor.stage
+                   (!stage || *stage == cursor.stage
                         ? std::string()
-                        : ", in " + stage_phrase(stage) + " (phase=" + std::string(stage_name(stage)) + ")") +
+                        : ", in " + stage_phrase(*stage) + " (phase=" + std::string(stage_name(*stage)) + ")") +
                    "?";
     }
     throw formats::InputError(at, problem);

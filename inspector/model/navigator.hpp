@@ -40,6 +40,9 @@ int item_count(const FrameRecord& frame, Stage stage);
 // choice (which contact, its value against the epsilon), then the step tables of its move or impulse.
 std::vector<explain::StepTable> step_tables(const Trace& trace, const Cursor& cursor);
 
+// The names of those tables' steps, read from the record's shape without formatting: what moves count and name.
+std::vector<std::string_view> step_names(const Trace& trace, const Cursor& cursor);
+
 // The recorded preparation of contact `contact` (its index in the frame's contact list), or null when the
 // recording's contact filter left it out.
 const ContactPreparation* preparation_of(const FrameRecord& frame, int contact);
@@ -71,8 +74,9 @@ std::optional<Cursor> next_stage(const Trace& trace, const Cursor& cursor);
 std::optional<Cursor> previous_stage(const Trace& trace, const Cursor& cursor);
 
 // A place named by a person: --goto frame=F,phase=preparation|position|velocity,iteration=I,contact=C,
-// step=NAME. Every part is optional; `step` takes a step name ("impulse") or a quantity shown in one
-// ("position_change.angular_change").
+// step=NAME. Every part is optional; `step` takes a step name ("impulse") or any quantity of the word list, by its
+// full name ("position_change.angular_change") or its last part ("angular_change"; a last part two words share
+// means the later, the step's result): the step that computes it, or for a given value the first that shows it.
 struct GotoSpec {
     std::optional<int> frame;  // the frame number, as recorded
     std::optional<Stage> stage;

@@ -144,7 +144,11 @@ std::vector<Action> parse_script(std::string_view text) {
     while (!text.empty()) {
         ++line;
         const std::size_t end = text.find('\n');
-        const std::string_view content = trim(text.substr(0, end));
+        std::string_view content = trim(text.substr(0, end));
+        // A comment may follow an action, after a space: "next step 4   # to the desired Δv".
+        for (const std::string_view mark : {" #", "\t#"})
+            if (const std::size_t at = content.find(mark); at != std::string_view::npos)
+                content = trim(content.substr(0, at));
         text = end == std::string_view::npos ? std::string_view{} : text.substr(end + 1);
         if (content.empty() || content.front() == '#') continue;
         actions.push_back(parse_action(content, line));

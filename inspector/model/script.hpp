@@ -10,7 +10,8 @@
 //   key NAME | key ctrl+NAME                       (a key pressed and released: Right, Return, Tab, Escape, ...)
 //   type TEXT                                      (text typed, the rest of the line: type 7,5 m/s)
 //   screenshot FILE.png | export trace FILE.json | export table FILE.csv | quit
-// Blank lines and lines starting with # are ignored. Paths are relative to the working directory.
+// Blank lines and lines starting with # are ignored, and so is a # after a space and what follows it (a comment
+// after an action). Paths are relative to the working directory.
 
 #include "model/session.hpp"
 

@@ -12,6 +12,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -81,7 +82,7 @@ std::vector<Cursor> walked_back(const Trace& trace) {
     return walk;
 }
 
-std::vector<std::string> step_names(const Trace& trace, const Cursor& cursor) {
+std::vector<std::string> table_steps(const Trace& trace, const Cursor& cursor) {
     std::vector<std::string> names;
     for (const explain::StepTable& t : step_tables(trace, cursor)) names.push_back(t.step);
     return names;
@@ -174,7 +175,7 @@ TEST_CASE("a trace that records nothing has no first or last place") {
 
 TEST_CASE("a prepared contact's steps are the five of the preparation, in order") {
     const Trace trace = opened("cases/ruler");
-    CHECK(step_names(trace, {0, Stage::preparation, 0, 0}) ==
+    CHECK(table_steps(trace, {0, Stage::preparation, 0, 0}) ==
           std::vector<std::string>{"basis", "relative_position", "delta_velocity_per_unit_impulse", "contact_velocity",
                                    "desired_delta_velocity"});
 }
@@ -183,14 +184,14 @@ TEST_CASE("a velocity iteration starts with its choice, then steps 4 to 7, then 
     const Trace trace = opened("cases/ruler");
     // The ruler's only contact shares its body with itself: the impulse updates its own velocity (1 update).
     REQUIRE(trace.frames[0].velocity.iterations[0].updates.size() == 1);
-    CHECK(step_names(trace, {0, Stage::velocity, 0, 0}) == std::vector<std::string>{"choice", "contact_velocity",
-                                                                                    "desired_delta_velocity", "impulse",
-                                                                                    "velocity_change", "updates"});
+    CHECK(table_steps(trace, {0, Stage::velocity, 0, 0}) ==
+          std::vector<std::string>{"choice", "contact_velocity", "desired_delta_velocity", "impulse", "velocity_change",
+                                   "updates"});
 }
 
 TEST_CASE("a position iteration starts with its choice, then step 8's three tables, then its updates") {
     const Trace trace = opened("cases/ruler");
-    CHECK(step_names(trace, {0, Stage::position, 0, 0}) ==
+    CHECK(table_steps(trace, {0, Stage::position, 0, 0}) ==
           std::vector<std::string>{"choice", "penetration_inertia", "move_split", "position_change", "updates"});
 }
 
@@ -488,8 +489,8 @@ TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accu
     REQUIRE(first.sweep);
     CHECK(first.sweep->stage == SolverStage::warm_start);
     const Cursor at{2, Stage::velocity, 0, 0};
-    CHECK(step_names(trace, at) == std::vector<std::string>{"choice", "contact_velocity", "desired_delta_velocity",
-                                                            "accumulated", "impulse", "velocity_change", "updates"});
+    CHECK(table_steps(trace, at) == std::vector<std::string>{"choice", "contact_velocity", "desired_delta_velocity",
+                                                             "accumulated", "impulse", "velocity_change", "updates"});
     const explain::StepTable choice = step_tables(trace, at)[0];
     CHECK(choice.title == "choice — warm_start visits contact " + std::to_string(first.contact));
     // Baumgarte's bias is a row of desired_delta_velocity.
@@ -508,4 +509,81 @@ TEST_CASE("a projected Gauss-Seidel visit shows its sweep, its bias and its accu
     const Cursor later{2, Stage::velocity, static_cast<int>(solve - frame.velocity.iterations.begin()), 0};
     CHECK(step_tables(trace, later)[0].title == "choice — solve sweep " + std::to_string(solve->sweep->pass) +
                                                     " visits contact " + std::to_string(solve->contact));
+}
+
+namespace {
+
+// Traces that between them hold every kind of table: the book's cases, a velocity-based rewind, relaxation's passes,
+// a projected Gauss-Seidel sweep with its accumulated impulse, soft step's sub-steps, friction's solve.
+std::vector<Trace> traces_of_every_kind() {
+    OpenOptions velocity_based, pgs, soft;
+    velocity_based.settings = {"position_method=velocity_based"};
+    pgs.settings = {"preset=pgs"};
+    soft.settings = {"preset=soft_step"};
+    pgs.frames = soft.frames = 2;
+    return {opened("cases/ruler"),
+            opened("cases/tilted_box", velocity_based),
+            relaxed("cases/deep_bar"),
+            opened("cases/sliding_box"),
+            opened("stack_3", pgs),
+            opened("stack_3", soft),
+            stack_run()};
+}
+
+}  // namespace
+
+TEST_CASE("the navigator's step names, read from the record, are the steps of the tables formatting makes") {
+    int items = 0;
+    for (const Trace& trace : traces_of_every_kind())
+        for (const Cursor& at : every_place(trace)) {
+            if (at.step != 0) continue;
+            ++items;
+            const std::vector<std::string_view> names = step_names(trace, at);
+            CHECK(std::vector<std::string>(names.begin(), names.end()) == table_steps(trace, at));
+        }
+    CHECK(items > 100);
+}
+
+TEST_CASE("a goto's step takes every quantity of the word list by its full name or its last part") {
+    // Each word shown in some table of these traces is reached by both its names, to a table that shows it; a
+    // last part two words share (angular_change: rewind's and position_change's) means the later, the result.
+    const std::vector<Trace> traces = traces_of_every_kind();
+    std::set<std::string> reached;
+    for (const Trace& trace : traces)
+        for (const Cursor& at : every_place(trace)) {
+            const std::vector<explain::StepTable> tables = step_tables(trace, at);
+            for (const explain::Row& row : tables[static_cast<std::size_t>(at.step)].rows) {
+                if (row.key.empty() || reached.count(row.key)) continue;
+                const std::string where =
+                    "frame=" + std::to_string(trace.frames[static_cast<std::size_t>(at.frame)].frame) +
+                    ",phase=" + std::string(stage_name(at.stage)) +
+                    (at.stage == Stage::preparation ? ",contact=" + std::to_string(contact_at(trace, at))
+                                                    : ",iteration=" + std::to_string(at.item));
+                std::string full = row.key;
+                for (std::size_t b = full.find("[]"); b != std::string::npos; b = full.find("[]")) full.erase(b, 2);
+                const std::string last = full.substr(full.rfind('.') == std::string::npos ? 0 : full.rfind('.') + 1);
+                for (const std::string& name : {full, last}) {
+                    INFO(where << ",step=" << name);
+                    const Cursor c = resolve_goto(trace, parse_goto(where + ",step=" + name, "g"), "g");
+                    CHECK(c.frame == at.frame);
+                    CHECK(c.stage == at.stage);
+                    CHECK(c.item == at.item);
+                    const auto rows = step_tables(trace, c)[static_cast<std::size_t>(c.step)].rows;
+                    const bool shows = std::any_of(rows.begin(), rows.end(), [&](const explain::Row& r) {
+                        return r.key == row.key || (name == last && r.key.ends_with("." + last));
+                    });
+                    CHECK_MESSAGE(shows, "lands on " << step_at(trace, c) << ", which does not show it");
+                }
+                reached.insert(row.key);
+            }
+        }
+    CHECK(reached.size() > 60);
+    const Trace ruler = opened("cases/ruler");
+    CHECK(resolve_goto(ruler, parse_goto("phase=position,step=angular_change", "g"), "g") ==
+          resolve_goto(ruler, parse_goto("phase=position,step=position_change.angular_change", "g"), "g"));
+    CHECK(step_at(ruler, resolve_goto(ruler, parse_goto("phase=velocity,step=impulse_world[1]", "g"), "g")) ==
+          "impulse");
+    CHECK(goto_error(ruler, "phase=position,step=angular_chnage")
+              .problem()
+              .ends_with("did you mean \"angular_change\"?"));
 }

@@ -319,6 +319,13 @@ TEST_CASE("a script's lines become actions, skipping blanks and comments and cou
     CHECK(actions[13].line == 17);
     CHECK(parse_script("").empty());
     CHECK(parse_script("# only a comment\n\n").empty());
+    // A comment after an action, as the README writes them.
+    const std::vector<Action> commented = parse_script("next step 4    # to the desired Δv\ntype 7,5 m/s\t# typed\n");
+    REQUIRE(commented.size() == 2);
+    CHECK(commented[0].kind == ActionKind::next_step);
+    CHECK(commented[0].count == 4);
+    CHECK(commented[1].kind == ActionKind::type);
+    CHECK(commented[1].argument == "7,5 m/s");
 }
 
 TEST_CASE("a line that is not an action is an input error at its line number") {

@@ -1,6 +1,8 @@
 // `impulse-lab run SCENE.json`: simulate a scene frame by frame (integrate -> detect -> resolve), record the
 // frames asked for, write a CSV of every body's state per frame, and summarise the run.
 
+#include "bench/bench_metrics.hpp"
+#include "bench/bench_plan.hpp"
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
 #include "formats/input_files.hpp"
@@ -19,6 +21,7 @@
 #include "world/world.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <array>
 #include <cstdio>
 #include <sstream>
@@ -108,6 +111,38 @@ void write_summary(std::ostream& out, const RunSummary& s, const Scene& scene, c
         << fixed(s.top_drift_most * 1e3, 3) << " mm (frame " << s.top_drift_frame << ")\n";
 }
 
+// As soon as the frames recorded so far show the whole run will not fit the trace's size limit: how many frames
+// will, said while the run goes on rather than only at its end. Empty while it may fit.
+std::string trace_fit_note(const TraceRecorder& recorder, int frames_done, int frames,
+                           std::optional<double> max_trace_mb) {
+    const double per_frame = static_cast<double>(recorder.estimated_bytes()) / frames_done;
+    const double budget = static_cast<double>(formats::trace_budget_bytes(max_trace_mb));
+    if (per_frame <= 0.0 || per_frame * frames <= budget) return {};
+    return "impulse-lab: note: --trace: at about " + explain::number(std::round(per_frame / 1e5) / 10) +
+           " MB a frame so far, the whole run would take about " +
+           explain::number(std::round(per_frame * frames / 1e6)) +
+           " MB: the trace keeps the first frames that fit in --max-trace-mb " + explain::number(budget / 1e6) +
+           " and the rest run unrecorded (a note at the end says where it stopped); --record frames=A..B picks "
+           "others";
+}
+
+// The scene's bench block, judged on this run: its metric against its target, and whether it held.
+std::string bench_verdict(const bench::BenchScene& spec, const bench::Accuracy& a, int frames) {
+    const std::string unit(bench::metric_unit(spec.metric));
+    const auto with_unit = [&](double v) { return explain::with_unit(explain::number(v), unit); };
+    std::string text = "  bench block: " + std::string(bench::metric_name(spec.metric)) + " " + with_unit(a.error) +
+                       ", target " + with_unit(spec.target) + ": " +
+                       (std::isnan(a.error)         ? "no verdict (a state became NaN)"
+                        : a.meets_target && a.holds ? "meets the target"
+                        : a.meets_target            ? "meets the target but fails (" + a.failure + ")"
+                        : a.holds                   ? "misses the target"
+                                                    : "fails (" + a.failure + ")");
+    if (frames != spec.frames)
+        text += "; judged over the " + std::to_string(frames) + " frames run, the block's duration is " +
+                std::to_string(spec.frames) + " frames";
+    return text;
+}
+
 }  // namespace
 
 int run_command(const RunOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress) {
@@ -119,8 +154,12 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
 
     Trace trace;
     const std::string scene_name = formats::input_name(options.scene_file);
+    // A scene with a "bench" block (docs/scenes.md) is judged by it at the end, as `bench` judges it.
+    std::optional<bench::BenchScene> judged;
     try {
-        trace.scene = formats::read_scene_text(formats::read_input_file(options.scene_file), options.preset);
+        const std::string text = formats::read_input_file(options.scene_file);
+        trace.scene = formats::read_scene_text(text, options.preset);
+        if (bench::declares_bench_block(text)) judged = bench::declared_bench_scene(scene_name, text);
     } catch (const formats::InputError& e) {
         throw formats::FileError{scene_name, e.where(), e.problem()};
     }
@@ -150,6 +189,13 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     RunSummary summary{scene_name, frames, dt, highest_body(scene), {}, 0.0, 0};
     summary.top_start = world.bodies()[summary.top].position;
 
+    std::optional<bench::AccuracyTracker> accuracy;
+    if (judged) accuracy.emplace(scene, *judged, frames);
+    // Without --record the trace keeps every frame its size limit allows: said once the first frame shows how
+    // large a frame is, rather than only at the end.
+    const bool whole_run = options.trace_file && options.record.empty() && frames > 1;
+    bool fit_said = false;
+
     std::vector<StepReport> reports;
     reports.reserve(static_cast<std::size_t>(frames));
     ProgressBar bar(progress, frames);
@@ -164,6 +210,11 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
             break;
         }
         if (options.states_file) append_states(states, frame, world.time(), scene, world.bodies());
+        if (accuracy) accuracy->observe(frame, world.bodies(), reports.back());
+        if (whole_run && !fit_said)
+            if (const std::string note = trace_fit_note(trace_recorder, frame + 1, frames, options.max_trace_mb);
+                !note.empty())
+                err << note << '\n', fit_said = true;
         const double drift = (world.bodies()[summary.top].position - summary.top_start).norm();
         if (drift > summary.top_drift_most) summary.top_drift_most = drift, summary.top_drift_frame = frame;
         bar.update(frame + 1);
@@ -200,6 +251,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
         return exit_non_finite;
     }
     write_summary(report, summary, scene, world.bodies(), reports);
+    if (accuracy) report << bench_verdict(*judged, accuracy->finish(world.bodies()), frames_done) << '\n';
     if (interrupted) {
         err << "impulse-lab: interrupted (" << signal_name(*interrupted) << ") after " << frames_done << " of "
             << frames << " frames: "

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <initializer_list>
+#include <optional>
 #include <cmath>
 
 namespace impulse::gui {
@@ -206,12 +207,17 @@ void draw_plots(const model::Session& session, UiState& state) {
         return;
     }
     const float width = ImGui::GetContentRegionAvail().x / static_cast<float>(v.curves.size()) - 8.0f;
-    const float height = std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing(), 30.0f);
+    const float line = ImGui::GetTextLineHeight();
+    // Below each plot a line for its iteration axis.
+    const float height =
+        std::max(ImGui::GetContentRegionAvail().y - ImGui::GetTextLineHeightWithSpacing() - line - 2.0f, 30.0f);
     const Trace& trace = session.trace();
+    const ImU32 label_colour = IM_COL32(200, 200, 200, 255), epsilon_colour = IM_COL32(130, 190, 130, 255);
     for (std::size_t k = 0; k < v.curves.size(); ++k) {
         const model::PhaseCurve& c = v.curves[k];
         // A lesson's open question hides the values it would give away: those points are not drawn.
         const std::string_view key = c.stage == model::Stage::position ? "penetration" : "desired_delta_velocity";
+        const char* unit = c.stage == model::Stage::position ? "m" : "m/s";
         std::vector<char> shown(c.worst.size(), 1);
         for (std::size_t i = 0; i < c.worst.size(); ++i) {
             const model::Cursor item{v.cursor->frame, c.stage, static_cast<int>(i), 0};
@@ -223,18 +229,22 @@ void draw_plots(const model::Session& session, UiState& state) {
         ImGui::Text("%s: worst %s", position ? "positions" : "velocities", position ? "penetration (m)" : "Δv (m/s)");
         const ImVec2 a = ImGui::GetCursorScreenPos();
         const ImVec2 b(a.x + width, a.y + height);
-        ImGui::Dummy(ImVec2(width, height));
+        ImGui::Dummy(ImVec2(width, height + line + 2.0f));
         ImDrawList* draw = ImGui::GetWindowDrawList();
         draw->AddRectFilled(a, b, IM_COL32(24, 26, 32, 255));
-        double largest = c.epsilon;
+        // The scale's top is the largest value shown (or ε), with room above it; its label is that value.
+        std::optional<std::size_t> largest_at;
         for (std::size_t i = 0; i < c.worst.size(); ++i)
-            if (shown[i]) largest = std::max(largest, c.worst[i]);
-        const double top = largest * 1.1;
+            if (shown[i] && (!largest_at || c.worst[i] > c.worst[*largest_at])) largest_at = i;
+        const double largest = largest_at ? std::max(c.worst[*largest_at], c.epsilon) : c.epsilon;
+        // Room above the largest for its label's line.
+        const double top = largest * (height - 4.0f) / std::max(height - 4.0f - line - 6.0f, 1.0f);
         const auto y_of = [&](double value) { return b.y - static_cast<float>(value / top) * (height - 4.0f) - 2.0f; };
         const auto x_of = [&](std::size_t i) {
             return a.x + 2.0f +
                    (width - 4.0f) * (c.worst.size() > 1 ? static_cast<float>(i) / (c.worst.size() - 1) : 0.5f);
         };
+        draw->PushClipRect(a, ImVec2(b.x, b.y + line + 2.0f), true);
         draw->AddLine(ImVec2(a.x, y_of(c.epsilon)), ImVec2(b.x, y_of(c.epsilon)), IM_COL32(130, 190, 130, 200), 1.0f);
         // Thousands of iterations: at most one line segment per pixel column is drawn.
         const std::size_t stride =
@@ -250,10 +260,36 @@ void draw_plots(const model::Session& session, UiState& state) {
             draw->AddLine(ImVec2(x_of(i), a.y), ImVec2(x_of(i), b.y), IM_COL32(255, 230, 60, 160), 1.0f);
             if (shown[i]) draw->AddCircleFilled(ImVec2(x_of(i), y_of(c.worst[i])), 4.0f, IM_COL32(255, 230, 60, 255));
         }
+        // Labels are values, never a scale's round number, and none covers another: the largest value at the top
+        // left, ε at its line's right end (below the line when the top label is in the way), the iteration axis
+        // under the plot.
         const bool any_hidden = std::find(shown.begin(), shown.end(), 0) != shown.end();
-        const std::string scale = explain::number(top) + (any_hidden ? " (some values hidden)" : "");
-        draw->AddText(ImVec2(a.x + 4, a.y + 2), IM_COL32(200, 200, 200, 255), scale.c_str());
-        draw->AddText(ImVec2(b.x - 70, y_of(c.epsilon) - 16), IM_COL32(130, 190, 130, 255), "ε");
+        const std::string peak = largest_at ? "largest " + explain::number(c.worst[*largest_at]) + " " + unit +
+                                                  " (iteration " + std::to_string(*largest_at) + ")" +
+                                                  (any_hidden ? ", some hidden" : "")
+                                            : std::string("values hidden until you answer");
+        // Each on a backing of the plot's colour, so a curve passing under it does not strike it through.
+        const auto label = [&](ImVec2 at, ImU32 colour, const std::string& text) {
+            const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+            draw->AddRectFilled(ImVec2(at.x - 2, at.y), ImVec2(at.x + size.x + 2, at.y + size.y),
+                                IM_COL32(24, 26, 32, 220));
+            draw->AddText(at, colour, text.c_str());
+        };
+        const ImVec2 peak_at(a.x + 4, a.y + 2);
+        label(peak_at, label_colour, peak);
+        const std::string eps = "ε " + explain::number(c.epsilon) + " " + unit;
+        const ImVec2 eps_size = ImGui::CalcTextSize(eps.c_str());
+        ImVec2 eps_at(b.x - eps_size.x - 4, y_of(c.epsilon) - line - 1);
+        const float peak_right = peak_at.x + ImGui::CalcTextSize(peak.c_str()).x;
+        if (eps_at.y < peak_at.y + line + 2 && eps_at.x < peak_right + 8) eps_at.y = y_of(c.epsilon) + 2;
+        label(eps_at, epsilon_colour, eps);
+        const std::string first = "iteration 0";
+        const std::string last = "iteration " + std::to_string(c.worst.empty() ? 0 : c.worst.size() - 1);
+        draw->AddText(ImVec2(a.x, b.y + 1), label_colour, first.c_str());
+        const float last_width = ImGui::CalcTextSize(last.c_str()).x;
+        if (c.worst.size() > 1 && last_width + ImGui::CalcTextSize(first.c_str()).x + 8 < width)
+            draw->AddText(ImVec2(b.x - last_width, b.y + 1), label_colour, last.c_str());
+        draw->PopClipRect();
         ImGui::EndGroup();
     }
 }

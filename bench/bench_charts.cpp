@@ -201,14 +201,18 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
     const std::string x_name = "time per step (ms)";
     text(list, {(p0.x + p1.x - text_width(x_name)) / 2, p1.y + 22}, ink, x_name);
 
+    std::vector<ChartBox> fixed_text;  // the labels drawn so far inside the plot, which a marker's label avoids
     // The target: configurations below the dashed line meet it. A scene that declares none has no line.
     if (spec.verdict) {
         const float target_y = py(spec.target);
         dashed_line(list, {p0.x, target_y}, {p1.x, target_y}, IM_COL32(90, 90, 90, 255));
         const std::string target = "target " + bench::metric_text(spec, spec.target);
         text(list, {p0.x + 4, target_y - 18}, IM_COL32(90, 90, 90, 255), target);
+        fixed_text.push_back({p0.x + 4, target_y - 18, p0.x + 4 + text_width(target), target_y - 2});
     } else {
-        text(list, {p0.x + 4, p0.y + 4}, IM_COL32(90, 90, 90, 255), "no bench target declared: no verdict");
+        const std::string none = "no bench target declared: no verdict";
+        text(list, {p0.x + 4, p0.y + 4}, IM_COL32(90, 90, 90, 255), none);
+        fixed_text.push_back({p0.x + 4, p0.y + 4, p0.x + 4 + text_width(none), p0.y + 20});
     }
 
     // Every run's marker where its data puts it, then moved aside (with a thin line back to that place) when
@@ -263,34 +267,29 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
         const MethodStyle style = method_style(run.methods, p.method);
         marker(list, style.shape, p.marker, style.colour, p.run->accuracy.holds);
     }
-    std::vector<ImVec4> taken;  // label boxes (x0, y0, x1, y1)
-    // Each marker's box, a front marker's ring (radius 10) included, so no label sits on either.
+    // N beside each marker, where no label covers another or a marker (a front marker's ring, radius 10,
+    // included), with a thin line back when it had to go farther out.
+    std::vector<ChartBox> taken = fixed_text;
     for (std::size_t i = 0; i < placed.size(); ++i) {
         const float half = std::find(front.begin(), front.end(), i) != front.end() ? 11.0f : 7.0f;
         const ImVec2 c = placed[i].marker;
         taken.push_back({c.x - half, c.y - half, c.x + half, c.y + half});
     }
-    const auto overlaps = [&taken](const ImVec4& box) {
-        return std::any_of(taken.begin(), taken.end(), [&box](const ImVec4& t) {
-            return box.x < t.z && t.x < box.z && box.y < t.w && t.y < box.w;
-        });
-    };
+    std::vector<ChartPoint> markers, sizes;
     for (const Placed& p : placed) {
-        const std::string label = std::to_string(p.run->n);
-        const float w = text_width(label, 14.0f), h = 14.0f;
-        const ImVec2 c = p.marker;
-        const ImVec2 options[] = {{c.x + 9, c.y - h / 2},      {c.x - 9 - w, c.y - h / 2}, {c.x - w / 2, c.y - 9 - h},
-                                  {c.x - w / 2, c.y + 8},      {c.x + 8, c.y - 6 - h},     {c.x + 8, c.y + 5},
-                                  {c.x - 8 - w, c.y - 6 - h},  {c.x - 8 - w, c.y + 5},     {c.x + 12, c.y - h / 2},
-                                  {c.x - 12 - w, c.y - h / 2}, {c.x + 11, c.y - 9 - h},    {c.x + 11, c.y + 8}};
-        ImVec2 at = options[0];
-        for (const ImVec2& o : options)
-            if (!overlaps({o.x, o.y, o.x + w, o.y + h})) {
-                at = o;
-                break;
-            }
-        taken.push_back({at.x, at.y, at.x + w, at.y + h});
-        text(list, at, method_style(run.methods, p.method).colour, label, 14.0f);
+        markers.push_back({p.marker.x, p.marker.y});
+        sizes.push_back({text_width(std::to_string(p.run->n), 14.0f), 14.0f});
+    }
+    const std::vector<std::optional<ChartPoint>> labels =
+        placed_labels(markers, sizes, taken, {p0.x, p0.y - 4, p1.x + 14, p1.y + 10});
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+        if (!labels[i]) continue;
+        const ImVec2 at{labels[i]->x, labels[i]->y};
+        const ImU32 colour = method_style(run.methods, placed[i].method).colour;
+        const ImVec2 centre{at.x + sizes[i].x / 2, at.y + sizes[i].y / 2}, c = placed[i].marker;
+        if (std::hypot(centre.x - c.x, centre.y - c.y) > 20.0f)
+            list.AddLine(c, centre, (colour & 0x00FFFFFF) | 0x70000000, 1.0f);
+        text(list, at, colour, std::to_string(placed[i].run->n), 14.0f);
     }
 }
 
@@ -319,6 +318,37 @@ std::vector<ChartPoint> dodged_markers(const std::vector<ChartPoint>& at, float 
         drawn.push_back(place);
     }
     return drawn;
+}
+
+std::vector<std::optional<ChartPoint>> placed_labels(const std::vector<ChartPoint>& markers,
+                                                     const std::vector<ChartPoint>& sizes, std::vector<ChartBox> taken,
+                                                     ChartBox bounds) {
+    std::vector<std::optional<ChartPoint>> at;
+    for (std::size_t i = 0; i < markers.size(); ++i) {
+        const ChartPoint c = markers[i];
+        const float w = sizes[i].x, h = sizes[i].y;
+        std::optional<ChartPoint> found;
+        // Rings round the marker: right, left, above, below, then the diagonals, each ring farther out.
+        for (const float r : {9.0f, 14.0f, 22.0f, 32.0f, 46.0f}) {
+            const ChartPoint options[] = {
+                {c.x + r, c.y - h / 2}, {c.x - r - w, c.y - h / 2}, {c.x - w / 2, c.y - r - h}, {c.x - w / 2, c.y + r},
+                {c.x + r, c.y - r - h}, {c.x + r, c.y + r},         {c.x - r - w, c.y - r - h}, {c.x - r - w, c.y + r}};
+            for (const ChartPoint& o : options) {
+                const ChartBox box{o.x, o.y, o.x + w, o.y + h};
+                const bool inside =
+                    box.x0 >= bounds.x0 && box.y0 >= bounds.y0 && box.x1 <= bounds.x1 && box.y1 <= bounds.y1;
+                if (inside &&
+                    std::none_of(taken.begin(), taken.end(), [&](const ChartBox& t) { return t.overlaps(box); })) {
+                    found = o;
+                    break;
+                }
+            }
+            if (found) break;
+        }
+        if (found) taken.push_back({found->x, found->y, found->x + w, found->y + h});
+        at.push_back(found);
+    }
+    return at;
 }
 
 std::string speed_accuracy_png(const BenchRun& run) {

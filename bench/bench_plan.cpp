@@ -1,5 +1,7 @@
 #include "bench/bench_plan.hpp"
 
+#include "formats/suggest.hpp"
+
 #include "formats/input_error.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -229,8 +231,11 @@ std::vector<std::string> parse_names(std::string_view text, std::span<const std:
         if (std::find(known.begin(), known.end(), part) == known.end()) {
             std::string list;
             for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
-            throw formats::InputError(
-                std::string(flag), "no " + std::string(what) + " named \"" + std::string(part) + "\" (" + list + ")");
+            const std::optional<std::string> meant =
+                formats::closest_name(part, std::vector<std::string>(known.begin(), known.end()));
+            throw formats::InputError(std::string(flag),
+                                      "no " + std::string(what) + " named \"" + std::string(part) + "\"" +
+                                          (meant ? "; did you mean \"" + *meant + "\"?" : "") + " (" + list + ")");
         }
         if (std::find(names.begin(), names.end(), part) != names.end())
             throw formats::InputError(std::string(flag), "\"" + std::string(part) + "\" is given twice");

@@ -14,6 +14,7 @@
 #include "cli/progress.hpp"
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
+#include "formats/suggest.hpp"
 #include "formats/json_text.hpp"
 #include "formats/scene_file.hpp"
 #include "world/world.hpp"
@@ -178,9 +179,15 @@ void choose_scenes(const BenchOptions& options, bench::BenchRun& run, std::deque
         if (entry.empty()) throw formats::InputError("--scenes", "an empty scene name in \"" + *options.scenes + "\"");
         std::string path = is_path ? entry : scene_path(options, entry);
         const bench::BenchScene* table = is_path ? nullptr : bench::find_bench_scene(entry);
-        if (!is_path && !table)
-            throw formats::InputError("--scenes", "no bench scene named \"" + entry + "\" (" + known +
+        if (!is_path && !table) {
+            std::vector<std::string> names;
+            for (const bench::BenchScene& s : bench::bench_scenes()) names.push_back(s.name);
+            const std::optional<std::string> meant = formats::closest_name(entry, names);
+            throw formats::InputError("--scenes", "no bench scene named \"" + entry + "\"" +
+                                                      (meant ? "; did you mean \"" + *meant + "\"?" : "") + " (" +
+                                                      known +
                                                       "); give your own scene by its path, e.g. scenes/stack_3.json");
+        }
         std::string text;
         try {
             text = formats::read_input_file(path);

@@ -219,8 +219,8 @@ TEST_CASE("bad bench flags print one line naming the flag, exit with code 2 and 
     TempDir dir;
     const std::string out = dir.file("results").string();
     const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
-        {{"--scenes", "stak_10"}, "--scenes: no bench scene named \"stak_10\""},
-        {{"--methods", "book,bok"}, "--methods: no method named \"bok\""},
+        {{"--scenes", "stak_10"}, "--scenes: no bench scene named \"stak_10\"; did you mean \"stack_10\"?"},
+        {{"--methods", "book,bok"}, "--methods: no method named \"bok\"; did you mean \"book\"?"},
         {{"--iterations", "1,x"}, "--iterations: expected counts"},
         {{"--iterations", "0"}, "--iterations: expected counts"},
         {{"--iterations", "2,2"}, "--iterations: 2 is given twice"},

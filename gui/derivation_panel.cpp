@@ -21,10 +21,10 @@ std::string equation_text(const std::string& equation) {
     return equation;
 }
 
-// Column widths: the quantity's name and the equation whole; value and other frame at least their widest
-// number (a number is never split); then each column grows towards its longest line, the meaning first to
-// take what is left. When even the least is wider than the panel, the table scrolls sideways instead of
-// cutting a value. The other frame is left out when no row has one.
+// Column widths: the quantity's name and the equation whole; value, other frame and formula at least their widest
+// word (no number, name or word of them is split); then each column grows towards its longest line, the meaning first
+// to take what is left. When even the least is wider than the panel, the table scrolls sideways instead of cutting a
+// value. The other frame is left out when no row has one.
 struct Columns {
     std::vector<int> shown;  // indices into the six columns
     std::array<float, 6> width{};
@@ -61,11 +61,12 @@ Columns column_widths(const model::DerivationView& view, const std::vector<std::
         const explain::Row& r = view.rows[i].row;
         const bool is_hidden = !hidden[i].empty();
         const std::string_view shown = is_hidden ? std::string_view(hidden[i]) : std::string_view(r.value);
-        least[value] = std::max(least[value], is_hidden ? widest_word(hidden[i]) : widest_unbreakable(r.value));
+        // No word of a value is split ("frictionless"), a number least of all.
+        least[value] = std::max(least[value], widest_word(is_hidden ? std::string_view(hidden[i]) : r.value));
         natural[value] = std::max(natural[value], longest_line(shown));
         any_other = any_other || !r.other_frame.empty();
         if (!other_hidden[i]) {
-            least[other] = std::max(least[other], widest_unbreakable(r.other_frame));
+            least[other] = std::max(least[other], widest_word(r.other_frame));
             natural[other] = std::max(natural[other], longest_line(r.other_frame));
         }
     }
@@ -77,8 +78,9 @@ Columns column_widths(const model::DerivationView& view, const std::vector<std::
         natural[value] = std::max(natural[value], natural[other]);
     }
     for (const model::ViewRow& r : view.rows) {
-        // Words of a formula or a meaning are split only when even their column's least width cannot hold them.
-        least[formula] = std::max(least[formula], std::min(widest_word(r.row.formula), 150.0f));
+        // A formula's words are names and never split; a meaning's plain words are split only when even the
+        // column's least width cannot hold them.
+        least[formula] = std::max(least[formula], widest_word(r.row.formula));
         least[meaning] = std::max(least[meaning], std::min(widest_word(r.row.meaning), 120.0f));
         least[quantity] = std::max(least[quantity], ImGui::CalcTextSize(r.row.quantity.c_str()).x);
         least[equation] = std::max(least[equation], std::min(longest_line(equation_text(r.row.equation)), 90.0f));
@@ -88,6 +90,8 @@ Columns column_widths(const model::DerivationView& view, const std::vector<std::
     least[quantity] = natural[quantity] = std::min(least[quantity], 280.0f);
     natural[equation] = least[equation];
     if (c.compact) natural[formula] = std::max(natural[formula], natural[equation]);
+    // The headers are read whole too.
+    if (c.compact) least[formula] = std::max(least[formula], ImGui::CalcTextSize("Formula (eq.)").x);
     for (int i = 0; i < 6; ++i)
         if (c.compact ? i != other && i != equation : i != other || any_other) c.shown.push_back(i);
     const ImGuiStyle& style = ImGui::GetStyle();

@@ -111,8 +111,10 @@ void draw_lesson_layout(model::Session& session, UiState& state, model::ActionHo
 void draw_inspector_layout(model::Session& session, UiState& state, model::ActionHost& host, ImVec2 screen) {
     PanelSizes& sizes = state.sizes;
     const float body = screen.y - toolbar_height;
-    const float left = sizes.left_width > 0 ? sizes.left_width : screen.x * 0.19f;
-    const float right = sizes.right_width > 0 ? sizes.right_width : screen.x * 0.25f;
+    // Wide enough for the navigator's rows and the settings' names (left) and the contacts list's six columns
+    // (right) at 1280 px; the derivation table takes the rest.
+    const float left = sizes.left_width > 0 ? sizes.left_width : std::clamp(screen.x * 0.22f, 260.0f, 420.0f);
+    const float right = sizes.right_width > 0 ? sizes.right_width : std::clamp(screen.x * 0.32f, 300.0f, 540.0f);
     const float middle = screen.x - left - right;
     const float derivation = body * (sizes.derivation_share > 0 ? sizes.derivation_share : 0.5f);
 

@@ -17,6 +17,17 @@ namespace impulse::gui {
 
 namespace {
 
+// A field's label: beside it when the panel is wide, else on its own line above a field as wide as the panel, so
+// no name ("restitution cut-off") and no value ("positions_first") is cut at the panel's edge. Returns the
+// widget's own label.
+std::string labelled(const char* label) {
+    const float width = ImGui::GetWindowContentRegionMax().x - ImGui::GetWindowContentRegionMin().x;
+    if (width >= 380.0f) return label;
+    ImGui::TextUnformatted(label);
+    ImGui::SetNextItemWidth(-1.0f);
+    return std::string("##") + label;
+}
+
 void set(model::Session& session, UiState& state, model::ActionHost& host, const std::string& name,
          const std::string& value) {
     act(session, state, model::Action{model::ActionKind::set, name + "=" + value}, host);
@@ -26,7 +37,7 @@ template <typename Enum, std::size_t N>
 void enum_combo(model::Session& session, UiState& state, model::ActionHost& host, const char* label,
                 const std::string& name, const NameTable<Enum, N>& names, Enum current) {
     const std::string shown(name_of(names, current));
-    if (!ImGui::BeginCombo(label, shown.c_str())) return;
+    if (!ImGui::BeginCombo(labelled(label).c_str(), shown.c_str())) return;
     for (const auto& [value, text] : names)
         if (ImGui::Selectable(std::string(text).c_str(), value == current) && value != current)
             set(session, state, host, name, std::string(text));
@@ -37,7 +48,8 @@ void enum_combo(model::Session& session, UiState& state, model::ActionHost& host
 void number_field(model::Session& session, UiState& state, model::ActionHost& host, const char* label,
                   const std::string& name, double current) {
     double value = current;
-    if (ImGui::InputDouble(label, &value, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue) && value != current) {
+    if (ImGui::InputDouble(labelled(label).c_str(), &value, 0.0, 0.0, "%.6g", ImGuiInputTextFlags_EnterReturnsTrue) &&
+        value != current) {
         char text[64];
         std::snprintf(text, sizeof text, "%.17g", value);
         set(session, state, host, name, text);
@@ -47,7 +59,8 @@ void number_field(model::Session& session, UiState& state, model::ActionHost& ho
 void integer_field(model::Session& session, UiState& state, model::ActionHost& host, const char* label,
                    const std::string& name, int current) {
     int value = current;
-    if (ImGui::InputInt(label, &value, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) && value != current)
+    if (ImGui::InputInt(labelled(label).c_str(), &value, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue) &&
+        value != current)
         set(session, state, host, name, std::to_string(value));
 }
 
@@ -93,7 +106,7 @@ void method_setting(model::Session& session, UiState& state, model::ActionHost& 
 void draw_settings(model::Session& session, UiState& state, model::ActionHost& host) {
     const ResolverSettings s = session.settings();  // a copy: a change re-runs and replaces the trace
     ImGui::PushItemWidth(ImGui::GetContentRegionAvail().x * 0.5f);
-    if (ImGui::BeginCombo("preset", s.preset.c_str())) {
+    if (ImGui::BeginCombo(labelled("preset").c_str(), s.preset.c_str())) {
         for (std::string_view name : preset_names())
             if (ImGui::Selectable(std::string(name).c_str(), name == s.preset))
                 set(session, state, host, "preset", std::string(name));

@@ -11,6 +11,7 @@
 #include <initializer_list>
 #include <optional>
 #include <cmath>
+#include <cstdio>
 
 namespace impulse::gui {
 
@@ -90,7 +91,7 @@ void draw_contacts(model::Session& session, UiState& state) {
     ImGui::PopStyleColor();
     if (!begin_list_table(
             "contacts",
-            {{"#", 0.35f}, {"bodies", 1.2f}, {"pen. m", 0.9f}, {"Δv m/s", 0.9f}, {"|g| N s", 0.8f}, {"status", 0.75f}},
+            {{"#", 0.35f}, {"bodies", 1.2f}, {"pen. mm", 0.9f}, {"Δv m/s", 0.9f}, {"|g| N·s", 0.8f}, {"status", 0.75f}},
             true))
         return;
     ImGuiListClipper clipper;
@@ -119,20 +120,27 @@ void draw_contacts(model::Session& session, UiState& state) {
             ImGui::PushFont(value_font());
             // Each value at the scale of the contact's own value as prepared: what rounding leaves of a
             // resolved penetration is 0.
-            const auto cell = [&](std::string_view key, double value, double scale) {
+            // Four significant digits (the list is narrow; every digit is in the tooltip and the tables), the
+            // penetration in mm.
+            const auto cell = [&](std::string_view key, double value, double scale, double factor = 1.0) {
                 if (const course::HiddenBy by = mask.value_hidden_by(*v.cursor, row.contact, key, value)) {
                     ImGui::TextUnformatted("?");
                     if (ImGui::IsItemHovered()) ImGui::SetTooltip("hidden until you answer step %d", *by + 1);
                     return;
                 }
-                const std::string text = explain::number(value, scale);
+                char digits[32];
+                std::snprintf(digits, sizeof digits, "%.4g", value * factor);
+                const std::string text = explain::number(value, scale) == "0" ? std::string("0") : digits;
                 ImGui::TextUnformatted(text.c_str());
-                if (ImGui::IsItemHovered() && text != explain::exact(value))
-                    ImGui::SetTooltip("exactly %s", explain::exact(value).c_str());
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("exactly %s %s", explain::exact(value).c_str(),
+                                      key == "penetration"     ? "m"
+                                      : key == "impulse_world" ? "N·s"
+                                                               : "m/s");
             };
             ImGui::TableSetColumnIndex(2);
             cell("penetration", row.penetration,
-                 std::max(std::abs(row.prepared->penetration), std::abs(row.penetration)));
+                 std::max(std::abs(row.prepared->penetration), std::abs(row.penetration)), 1e3);
             ImGui::TableSetColumnIndex(3);
             const double desired = row.prepared->desired_terms.desired_delta_velocity;
             cell("desired_delta_velocity", row.desired_delta_velocity,

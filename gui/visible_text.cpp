@@ -98,9 +98,10 @@ std::vector<VisibleRun> TextReader::read(const ImDrawData& drawn) const {
             if (cmd.UserCallback) continue;
             const ImDrawIdx* idx = list.IdxBuffer.Data + cmd.IdxOffset;
             const ImDrawVert* vtx = list.VtxBuffer.Data + cmd.VtxOffset;
-            for (unsigned int i = 0; i + 6 <= cmd.ElemCount; i += 6) {
+            // Every primitive is triangles (three indices each); a glyph is a quad, two of them, as ImFont::RenderText
+            // writes one: (a, a+1, a+2) (a, a+2, a+3). A lone triangle (a combo's arrow) shifts what follows by three.
+            for (unsigned int i = 0; i + 6 <= cmd.ElemCount; i += 3) {
                 const ImDrawIdx* q = idx + i;
-                // A quad as ImFont::RenderText writes one: (a, a+1, a+2) (a, a+2, a+3).
                 if (q[3] != q[0] || q[4] != q[2] || q[1] != q[0] + 1 || q[2] != q[0] + 2 || q[5] != q[0] + 3) continue;
                 const ImDrawVert& top_left = vtx[q[0]];
                 const ImDrawVert& bottom_right = vtx[q[2]];
@@ -120,6 +121,7 @@ std::vector<VisibleRun> TextReader::read(const ImDrawData& drawn) const {
                 const ImFontGlyph* space = g->font->FindGlyphNoFallback(' ');
                 placed.push_back({placed.size(), x, y, g->glyph->AdvanceX * scale,
                                   (space ? space->AdvanceX : 0.3f * g->font->FontSize) * scale, g->glyph->Codepoint});
+                i += 3;  // the quad's second triangle
             }
         }
         // Lines (glyphs whose pen stands at the same height), then left to right.

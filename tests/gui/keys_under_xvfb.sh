@@ -19,7 +19,7 @@ sleep 1.5
 for key in Right Right Right Down Next Right; do xdotool key --window "\$win" "\$key"; sleep 0.4; done
 sleep 0.5
 # The Export panel's second button, "Export table", at the layout's place for a 1280x800 window.
-xdotool mousemove --window "\$win" 1020 760 click 1
+xdotool mousemove --window "\$win" 930 760 click 1
 for i in \$(seq 150); do [ -s table.csv ] && break; sleep 0.1; done
 kill \$pid
 wait \$pid || true

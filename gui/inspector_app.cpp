@@ -2,6 +2,7 @@
 
 #include "gui/display.hpp"
 #include "gui/key_events.hpp"
+#include "gui/layout_memory.hpp"
 #include "gui/panels.hpp"
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
@@ -148,6 +149,7 @@ int run_inspector(model::Session& session, const InspectorRun& run, std::ostream
         go_to_lesson_step(session, state, state.lesson->run.step());
         refresh_mask(session, state);
     }
+    RememberedLayout layout(!run.headless);  // a window remembers where its borders were dragged
     Host host(session, state);
     host.set_standard_output(run.standard_output);
     Pixels pixels;
@@ -156,6 +158,7 @@ int run_inspector(model::Session& session, const InspectorRun& run, std::ostream
     while (display->begin_frame(queue.empty() && !host.waiting() && busy_frames <= 0)) {
         busy_frames = display->had_events() ? 3 : busy_frames - 1;
         state.pressed_keys = display->pressed_keys();
+        layout.take_up(state);
         draw_inspector(session, state, host);
         const bool capture = host.capture_now();
         display->end_frame(capture ? &pixels : nullptr);
@@ -202,6 +205,7 @@ int run_inspector(model::Session& session, const InspectorRun& run, std::ostream
     }
 
     if (run.next_lesson_chosen && state.lesson) *run.next_lesson_chosen = state.lesson->open_next;
+    layout.keep(state);
     if (run.bench_frames) {
         std::vector<double> ms;
         ms.reserve(static_cast<std::size_t>(*run.bench_frames));

@@ -55,3 +55,29 @@ TEST_CASE("dragging the border beside the lesson widens its panel, and the layou
 }
 
 }  // namespace impulse::test
+
+#include "gui/layout_memory.hpp"
+
+namespace impulse::test {
+
+TEST_CASE("a window's panel layout is remembered as shares of the window, and a bad file gives the defaults") {
+    gui::PanelSizes s;
+    s.lesson_width = 512;
+    s.derivation_share = 0.4f;
+    s.scene_share = 0.6f;
+    const std::string text = gui::layout_text(s, 1280, 800);
+    // The same proportions in a window of another size.
+    const gui::PanelSizes wide = gui::layout_from_text(text, 1920, 1080);
+    CHECK(wide.lesson_width == doctest::Approx(512.0 / 1280 * 1920));
+    CHECK(wide.derivation_share == doctest::Approx(0.4));
+    CHECK(wide.scene_share == doctest::Approx(0.6));
+    CHECK(wide.left_width == 0);  // never dragged: the default
+    for (const char* bad : {"", "not json", "{\"format\": \"something else\", \"lesson_width\": 0.4}",
+                            "{\"format\": \"impulse-lab-layout\", \"lesson_width\": 3}"}) {
+        const gui::PanelSizes d = gui::layout_from_text(bad, 1280, 800);
+        CHECK(d.lesson_width == 0);
+        CHECK(d.derivation_share == 0);
+    }
+}
+
+}  // namespace impulse::test

@@ -96,7 +96,7 @@ void draw_lesson_layout(model::Session& session, UiState& state, model::ActionHo
     }
     ImGui::End();
 
-    float lesson_edge = lesson, derivation_edge = derivation, scene_edge = scene;
+    float lesson_edge = lesson, derivation_edge = derivation, scene_edge = lesson + scene;
     splitter("##lesson|", lesson, toolbar_height, 0, body, true, lesson_edge, narrowest,
              std::max(narrowest, screen.x - others));
     splitter("##derivation-", lesson, toolbar_height + derivation, right, 0, false, derivation_edge, body * 0.2f,

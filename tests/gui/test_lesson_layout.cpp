@@ -81,3 +81,22 @@ TEST_CASE("a window's panel layout is remembered as shares of the window, and a 
 }
 
 }  // namespace impulse::test
+
+namespace impulse::test {
+
+TEST_CASE("the lesson window's borders stay where they are until dragged, at every window size") {
+    // The scene's border once took its position for its width: at 1920 px its share flipped every frame.
+    course::PreparedLesson lesson =
+        course::prepare_lesson(course::read_lesson(course::lesson_files(IMPULSE_SOURCE_DIR "/lessons").front()));
+    for (const auto& [width, height] : {std::pair{1024, 768}, std::pair{1280, 800}, std::pair{1920, 1080}}) {
+        gui::OffscreenLayout layout(width, height);
+        gui::UiState state;
+        state.lesson.emplace(course::LessonRun(lesson, nullptr, std::nullopt), true);
+        for (int frame = 0; frame < 4; ++frame) layout.frame(lesson.session, state);
+        CHECK(state.sizes.lesson_width == 0);
+        CHECK(state.sizes.derivation_share == 0);
+        CHECK(state.sizes.scene_share == 0);
+    }
+}
+
+}  // namespace impulse::test

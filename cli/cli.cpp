@@ -127,8 +127,9 @@ void add_inspect(CLI::App& app, InspectOptions& o, FlagCatalog& c) {
         ->type_name("SPEC");
     input_file(inspect->add_option("--script", o.script,
                                    "Run actions from a file, one per line: next/prev step|contact|iteration|item|phase "
-                                   "[N], first, last, goto SPEC, set NAME VALUE, view front|top|side|3d, key NAME, "
-                                   "type TEXT, screenshot FILE, export trace FILE, export table FILE, quit"),
+                                   "[N], first, last, goto SPEC, set NAME VALUE, view front|top|side|3d, key NAME (key "
+                                   "ctrl+s), type what is typed (type 7,5 m/s), screenshot FILE, export trace FILE, "
+                                   "export table FILE, quit"),
                c);
     CLI::Option* screenshot = output_file(
         inspect->add_option("--screenshot", o.screenshot, "Save a PNG of the window at the end, then close"), c);

@@ -63,6 +63,8 @@ Columns column_widths(const model::DerivationView& view, const std::vector<std::
         const std::string_view shown = is_hidden ? std::string_view(hidden[i]) : std::string_view(r.value);
         // No word of a value is split ("frictionless"), a number least of all.
         least[value] = std::max(least[value], widest_word(is_hidden ? std::string_view(hidden[i]) : r.value));
+        // A hidden value's words read as a phrase, not one to a line.
+        if (is_hidden) least[value] = std::max(least[value], ImGui::CalcTextSize("? hidden until you").x);
         natural[value] = std::max(natural[value], longest_line(shown));
         any_other = any_other || !r.other_frame.empty();
         if (!other_hidden[i]) {

@@ -61,10 +61,12 @@ PanelSizes layout_from_text(std::string_view text, float width, float height) {
 PanelSizes load_layout(float width, float height) {
     const std::optional<std::filesystem::path> file = layout_file();
     if (!file) return {};
+    std::error_code missing;
+    if (!std::filesystem::is_regular_file(*file, missing)) return {};  // none yet: the defaults
     try {
         return layout_from_text(formats::read_input_file(file->string()), width, height);
-    } catch (const std::exception&) {
-        return {};  // none yet, or unreadable: the defaults
+    } catch (...) {
+        return {};  // unreadable: the defaults, as for none
     }
 }
 
@@ -75,8 +77,8 @@ bool save_layout(const PanelSizes& sizes, float width, float height) {
         std::filesystem::create_directories(file->parent_path());
         formats::write_file_atomically(file->string(), layout_text(sizes, width, height), "layout");
         return true;
-    } catch (const std::exception&) {
-        return false;
+    } catch (...) {
+        return false;  // a layout not kept is no error: the next window starts from the defaults
     }
 }
 

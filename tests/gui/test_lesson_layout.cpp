@@ -57,6 +57,9 @@ TEST_CASE("dragging the border beside the lesson widens its panel, and the layou
 }  // namespace impulse::test
 
 #include "gui/layout_memory.hpp"
+#include "support/temp_dir.hpp"
+
+#include <cstdlib>
 
 namespace impulse::test {
 
@@ -72,6 +75,13 @@ TEST_CASE("a window's panel layout is remembered as shares of the window, and a 
     CHECK(wide.derivation_share == doctest::Approx(0.4));
     CHECK(wide.scene_share == doctest::Approx(0.6));
     CHECK(wide.left_width == 0);  // never dragged: the default
+    // Kept beside the progress file; none there yet gives the defaults, and a kept one comes back.
+    TempDir dir;
+    ::setenv("XDG_CONFIG_HOME", dir.file("config").string().c_str(), 1);
+    CHECK(gui::load_layout(1280, 800).lesson_width == 0);
+    CHECK(gui::save_layout(s, 1280, 800));
+    CHECK(gui::load_layout(1280, 800).lesson_width == doctest::Approx(512));
+    ::unsetenv("XDG_CONFIG_HOME");
     for (const char* bad : {"", "not json", "{\"format\": \"something else\", \"lesson_width\": 0.4}",
                             "{\"format\": \"impulse-lab-layout\", \"lesson_width\": 3}"}) {
         const gui::PanelSizes d = gui::layout_from_text(bad, 1280, 800);

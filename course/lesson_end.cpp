@@ -38,15 +38,12 @@ LessonEnd lesson_end(const LessonRun& run) {
 }
 
 std::string score_text(const LessonEnd& end) {
-    std::string text = std::to_string(end.questions) + (end.questions == 1 ? " question" : " questions");
+    const std::string text = std::to_string(end.questions) + (end.questions == 1 ? " question" : " questions");
     std::string parts;
-    const auto part = [&parts](int n, const std::string& what) {
-        if (n > 0) parts += (parts.empty() ? "" : ", ") + std::to_string(n) + " " + what;
-    };
-    part(end.first_try, "right at the first try");
-    part(end.after_retries, "right after retries");
-    part(end.skipped, "skipped");
-    part(static_cast<int>(end.open_steps.size()), "still open");
+    if (end.first_try + end.after_retries + end.skipped > 0)
+        parts = tally_text(Tally{end.first_try, end.after_retries, end.skipped, 0});
+    if (const auto open = end.open_steps.size(); open > 0)
+        parts += (parts.empty() ? "" : ", ") + std::to_string(open) + " still open";
     return parts.empty() ? text : text + ": " + parts;
 }
 

@@ -1,4 +1,5 @@
 #include "gui/lesson_moves.hpp"
+#include "gui/lesson_colours.hpp"
 
 #include "gui/text_wrap.hpp"
 #include "formats/input_error.hpp"
@@ -12,11 +13,6 @@
 namespace impulse::gui {
 
 namespace {
-
-const ImVec4 open_colour(1.0f, 0.72f, 0.3f, 1.0f);
-const ImVec4 right_colour(0.5f, 0.9f, 0.5f, 1.0f);
-const ImVec4 skipped_colour(0.75f, 0.75f, 1.0f, 1.0f);
-const ImVec4 title_colour(1.0f, 0.9f, 0.4f, 1.0f);
 
 // Whether a text field has the keyboard at this moment. ImGui's io.WantTextInput lags a frame: it is still set in
 // the frame after Enter closed the answer field, which would take the → pressed right after the answer.

@@ -7,6 +7,7 @@
 // field, whether it has the keyboard yet or not.
 
 #include "gui/lesson_moves.hpp"
+#include "gui/lesson_colours.hpp"
 #include "gui/panels.hpp"
 #include "gui/text_wrap.hpp"
 #include "course/readings.hpp"
@@ -21,14 +22,6 @@
 namespace impulse::gui {
 
 namespace {
-
-const ImVec4 title_colour(1.0f, 0.9f, 0.4f, 1.0f);
-const ImVec4 heading_colour(0.75f, 0.95f, 0.55f, 1.0f);
-const ImVec4 question_colour(0.6f, 0.85f, 1.0f, 1.0f);
-const ImVec4 right_colour(0.5f, 0.9f, 0.5f, 1.0f);
-const ImVec4 wrong_colour(1.0f, 0.65f, 0.4f, 1.0f);
-const ImVec4 skipped_colour(0.75f, 0.75f, 1.0f, 1.0f);
-const ImVec4 error_colour(1.0f, 0.45f, 0.4f, 1.0f);
 
 std::string_view trim_left(std::string_view s) {
     while (!s.empty() && s.front() == ' ') s.remove_prefix(1);

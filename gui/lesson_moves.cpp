@@ -302,6 +302,7 @@ void draw_leaving_prompt(model::Session& session, UiState& state) {
     record_item(state, "button Stay");
 }
 
+// Drawn in a region that scrolls: what does not fit below is reached by scrolling.
 void draw_lesson_end(model::Session& session, UiState& state) {
     LessonState& l = *state.lesson;
     const course::LessonEnd end = course::lesson_end(l.run);
@@ -309,41 +310,41 @@ void draw_lesson_end(model::Session& session, UiState& state) {
     ImGui::PushStyleColor(ImGuiCol_Text, title_colour);
     wrapped_text("The end of lesson " + std::to_string(l.run.lesson().lesson.number));
     ImGui::PopStyleColor();
-    record_item(state, "text");
+    record_item(state, "text", true);
     wrapped_text("Score: " + course::score_text(end) + ".");
-    record_item(state, "score");
+    record_item(state, "score", true);
     if (!end.open_steps.empty()) {
         ImGui::Spacing();
         ImGui::PushStyleColor(ImGuiCol_Text, open_colour);
         wrapped_text("Still open (press its number to go to it):");
         ImGui::PopStyleColor();
-        record_item(state, "text");
+        record_item(state, "text", true);
         for (std::size_t k = 0; k < end.open_steps.size(); ++k) {
             const int step = end.open_steps[k];
             ImGui::PushID(step);
             const std::string key = k < 9 ? std::to_string(k + 1) : std::string("·");
             if (ImGui::SmallButton(key.c_str())) go(session, state, step);
-            record_item(state, "open question");
+            record_item(state, "open question", true);
             ImGui::SameLine();
             wrapped_text(course::open_question_text(l.run, step));
-            record_item(state, "text");
+            record_item(state, "text", true);
             ImGui::PopID();
         }
     }
     ImGui::Spacing();
     if (l.next_lesson) {
         wrapped_text("Next: lesson " + std::to_string(l.next_lesson->number) + " · " + l.next_lesson->title);
-        record_item(state, "text");
+        record_item(state, "text", true);
         if (ImGui::Button("Open the next lesson (Enter)")) l.open_next = true, state.quit = true;
-        record_item(state, "button Next lesson");
+        record_item(state, "button Next lesson", true);
     } else {
         wrapped_text("That was the last lesson of the course.");
-        record_item(state, "text");
+        record_item(state, "text", true);
     }
     if (ImGui::Button("◀ Back to the last step (←)")) go(session, state, l.run.step());
-    record_item(state, "button Back to steps");
+    record_item(state, "button Back to steps", true);
     ImGui::TextDisabled("Esc closes the window; your progress is kept.");
-    record_item(state, "text");
+    record_item(state, "text", true);
 }
 
 }  // namespace impulse::gui

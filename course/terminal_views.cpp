@@ -39,7 +39,7 @@ std::string hidden_until(const Lesson& lesson, int step, int current) {
 
 void write_bodies(std::ostream& out, const Trace& trace, const Cursor& at, const Mask& mask, int width) {
     const model::BodiesAtCursor bodies = model::bodies_at(trace, at);
-    out << "Bodies before → after this item (" << model::describe(trace, at) << ")\n";
+    write_wrapped(out, "", "Bodies before → after this item (" + model::describe(trace, at) + ")", width);
     if (!bodies.exact) out << "  (frame start and end only: the recording's contact filter left out a move)\n";
     for (std::size_t b = 0; b < bodies.after.size(); ++b) {
         const int body = static_cast<int>(b);

@@ -45,12 +45,18 @@ RunResult read_row(const json& j) {
     a.top_drift_end = number_or_nan(j.at("top_drift_end_m"));
     a.top_drift_most = number_or_nan(j.at("top_drift_most_m"));
     a.any_drift_most = number_or_nan(j.at("any_drift_most_m"));
+    a.top_sideways_drift_most = number_or_nan(j.at("top_sideways_drift_most_m"));
+    a.settled_drift = optional_number(j.at("settled_drift_most_m"));
+    a.least_travel = number_or_nan(j.at("least_travel_m"));
     a.collapse_time = optional_number(j.at("collapse_time_s"));
     a.end_kinetic_energy = number_or_nan(j.at("end_kinetic_energy_j"));
     a.jitter = number_or_nan(j.at("jitter_rms_m_per_s"));
     a.energy_gain = number_or_nan(j.at("energy_gain"));
     a.restitution_error = optional_number(j.at("restitution_error"));
     a.momentum_error = optional_number(j.at("momentum_error"));
+    a.recovery_time = optional_number(j.at("recovery_time_s"));
+    a.leave_speed = optional_number(j.at("leave_speed_m_per_s"));
+    a.slide_error = optional_number(j.at("slide_error"));
     a.nan_time = optional_number(j.at("nan_time_s"));
     return r;
 }
@@ -63,7 +69,10 @@ BenchScene read_scene_spec(const json& j) {
                                                        : std::numeric_limits<double>::infinity(),
                  j.at("frames").get<int>(),
                  j.at("stress").get<bool>(),
-                 j.at("verdict").get<bool>()};
+                 j.at("verdict").get<bool>(),
+                 optional_number(j.at("min_travel")),
+                 optional_number(j.at("leave_speed")),
+                 optional_number(j.at("settle_s"))};
     return s;
 }
 
@@ -71,8 +80,8 @@ BenchScene read_scene_spec(const json& j) {
 json matrix_of(const json& doc) {
     json scenes = json::array();
     for (const json& s : doc.at("scenes"))
-        scenes.push_back(
-            {s.at("name"), s.at("metric"), s.at("target"), s.at("failure_threshold"), s.at("frames"), s.at("verdict")});
+        scenes.push_back({s.at("name"), s.at("metric"), s.at("target"), s.at("failure_threshold"), s.at("frames"),
+                          s.at("verdict"), s.at("min_travel"), s.at("leave_speed"), s.at("settle_s")});
     return {{"scenes", scenes},
             {"methods", doc.at("methods")},
             {"iterations", doc.at("iterations")},

@@ -31,6 +31,26 @@ Vec3 ground_normal(const Scene& scene) {
     return scene.ground ? scene.ground->plane.normal : Vec3::UnitY();
 }
 
+// Against gravity (+y without gravity): "sideways" is across it.
+Vec3 up_of(const Scene& scene) {
+    return scene.world.gravity.isZero() ? Vec3::UnitY() : Vec3(-scene.world.gravity.normalized());
+}
+
+double deepest_penetration(const Scene& scene, const std::vector<RigidBody>& bodies) {
+    double deepest = 0.0;
+    for (const Contact& c : detect_contacts(scene, bodies).contacts) deepest = std::max(deepest, c.penetration);
+    return deepest;
+}
+
+double fastest(const std::vector<RigidBody>& bodies) {
+    double speed = 0.0;
+    for (const RigidBody& b : bodies) speed = std::max(speed, b.velocity.norm());
+    return speed;
+}
+
+// A separated overlap: the deepest penetration at most this share of the deepest at the start.
+constexpr double recovered_share = 0.05;
+
 }  // namespace
 
 AccuracyTracker::AccuracyTracker(const Scene& scene, const BenchScene& spec, int frames)
@@ -42,7 +62,11 @@ AccuracyTracker::AccuracyTracker(const Scene& scene, const BenchScene& spec, int
     previous_energy_ = mechanical_energy(scene.bodies);
     previous_kinetic_ = 0.0;
     for (const RigidBody& b : scene.bodies) previous_kinetic_ += kinetic_energy(b);
-    previous_normal_velocity_ = scene.bodies.empty() ? 0.0 : scene.bodies[0].velocity.dot(ground_normal(scene));
+    if (!scene.bodies.empty()) previous_body0_ = scene.bodies[0];
+    travel_.assign(scene.bodies.size(), 0.0);
+    for (const RigidBody& b : scene.bodies) start_positions_.push_back(b.position);
+    if (spec.settle) settle_frame_ = static_cast<int>(std::lround(*spec.settle / dt_)) - 1;
+    if (spec.metric == Metric::recovery_time) deepest_at_start_ = deepest_penetration(scene, scene.bodies);
     // The isolated impact's restitution: body 0's material against the ground's (or against body 1's).
     if (!scene.bodies.empty() && !scene.body_materials.empty()) {
         const Material& own = scene.materials.at(scene.body_materials[0]);
@@ -52,6 +76,20 @@ AccuracyTracker::AccuracyTracker(const Scene& scene, const BenchScene& spec, int
                                                                                          : scene.body_materials[0]);
         restitution_ = combine(own, other).restitution;
     }
+}
+
+double AccuracyTracker::drift(const std::vector<RigidBody>& bodies, const std::vector<Vec3>& from) const {
+    if (spec_.metric == Metric::any_drift) {
+        double any = 0.0;
+        for (std::size_t i = 0; i < bodies.size(); ++i) any = std::max(any, (bodies[i].position - from[i]).norm());
+        return any;
+    }
+    const Vec3 move = bodies[top_].position - from[top_];
+    if (spec_.metric == Metric::top_sideways_drift) {
+        const Vec3 up = up_of(scene_);
+        return (move - move.dot(up) * up).norm();
+    }
+    return move.norm();
 }
 
 double AccuracyTracker::mechanical_energy(const std::vector<RigidBody>& bodies) const {
@@ -71,17 +109,27 @@ bool AccuracyTracker::observe(int frame, const std::vector<RigidBody>& bodies, c
         a_.nan_time = time;
         return false;
     }
-    const double top_drift = (bodies[top_].position - scene_.bodies[top_].position).norm();
+    const Vec3 top_move = bodies[top_].position - scene_.bodies[top_].position;
+    const double top_drift = top_move.norm();
     a_.top_drift_most = std::max(a_.top_drift_most, top_drift);
     a_.top_drift_end = top_drift;
+    // Across gravity: the move less its part along up, d - (d . u) u.
+    const Vec3 up = up_of(scene_);
+    a_.top_sideways_drift_most = std::max(a_.top_sideways_drift_most, (top_move - top_move.dot(up) * up).norm());
     double any = 0.0;
-    for (std::size_t i = 0; i < bodies.size(); ++i)
-        any = std::max(any, (bodies[i].position - scene_.bodies[i].position).norm());
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const double moved = (bodies[i].position - scene_.bodies[i].position).norm();
+        travel_[i] = std::max(travel_[i], moved);
+        any = std::max(any, moved);
+    }
     a_.any_drift_most = std::max(a_.any_drift_most, any);
-    const double drift = spec_.metric == Metric::any_drift ? any : top_drift;
-    if (!a_.collapse_time && (spec_.metric == Metric::top_drift || spec_.metric == Metric::any_drift) &&
-        drift > spec_.failure_threshold)
-        a_.collapse_time = time;
+    if (is_drift(spec_.metric)) {
+        // A collapse is judged from the start, whatever the settle time.
+        if (!a_.collapse_time && drift(bodies, start_positions_) > spec_.failure_threshold) a_.collapse_time = time;
+        if (frame == settle_frame_)
+            for (const RigidBody& b : bodies) settled_.push_back(b.position);
+        if (!settled_.empty()) a_.settled_drift = std::max(a_.settled_drift.value_or(0.0), drift(bodies, settled_));
+    }
 
     // Jitter is the motion the eye sees: each body's displacement over the frame / the frame's duration. The
     // velocity left after a step is not it: with Baumgarte and the integrate-first step, a resting box leaves
@@ -109,20 +157,61 @@ bool AccuracyTracker::observe(int frame, const std::vector<RigidBody>& bodies, c
     previous_energy_ = energy;
     previous_kinetic_ = kinetic;
 
+    observe_bounce(bodies, report);
+    if (spec_.metric == Metric::recovery_time) observe_recovery(time, bodies);
+    return true;
+}
+
+void AccuracyTracker::observe_bounce(const std::vector<RigidBody>& bodies, const StepReport& report) {
     // Restitution of body 0's first bounce: v_before is its normal velocity at the end of the frame before the
     // first contact, v_after at the end of the last frame of that contact. The velocity this frame's gravity
     // added before the contact is not part of the collision (the book removes it: velocity_from_acceleration).
-    const double normal_velocity = bodies[0].velocity.dot(ground_normal(scene_));
+    const Vec3 normal = ground_normal(scene_);
+    const double normal_velocity = bodies[0].velocity.dot(normal);
     if (!bounce_done_) {
         if (report.contacts > 0) {
-            if (!arriving_) arriving_ = previous_normal_velocity_;
+            if (!arriving_) arriving_ = previous_body0_.velocity.dot(normal);
             leaving_ = normal_velocity;
         } else if (arriving_) {
             bounce_done_ = true;
         }
     }
-    previous_normal_velocity_ = normal_velocity;
-    return true;
+    previous_body0_ = bodies[0];
+}
+
+void AccuracyTracker::observe_recovery(double time, const std::vector<RigidBody>& bodies) {
+    // Separated once the deepest penetration the collision tests find after the frame is at most 5 % of the
+    // deepest at the start; from then on, the fastest any body moves is what the push left it with.
+    if (!a_.recovery_time) {
+        if (deepest_penetration(scene_, bodies) > recovered_share * deepest_at_start_) return;
+        a_.recovery_time = time;
+        a_.leave_speed = 0.0;
+    }
+    a_.leave_speed = std::max(*a_.leave_speed, fastest(bodies));
+    if (!explode_time_ && spec_.leave_speed && *a_.leave_speed > *spec_.leave_speed) explode_time_ = time;
+}
+
+std::optional<double> AccuracyTracker::slide_error(const std::vector<RigidBody>& bodies, double time) const {
+    // Coulomb on level ground: a body sliding at v0 decelerates at a = mu g until it stops, after t_s = v0 / a,
+    // so at time t it has slid d = v0 t' - a t'^2 / 2 with t' = min(t, t_s) (v0^2 / (2 mu g) once stopped).
+    // d is measured along its first velocity; mu is its material's with the ground's (docs/scenes.md).
+    const double g = scene_.world.gravity.norm();
+    std::optional<double> worst;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const RigidBody& start = scene_.bodies[i];
+        const double v0 = start.velocity.norm();
+        if (start.inverse_mass == 0.0 || v0 == 0.0 || !scene_.ground) continue;
+        const double mu =
+            combine(scene_.materials.at(scene_.body_materials[i]), scene_.materials.at(scene_.ground->material))
+                .friction;
+        const double a = mu * g;
+        const double t = a > 0.0 ? std::min(time, v0 / a) : time;
+        const double exact = v0 * t - 0.5 * a * t * t;
+        const double slid = (bodies[i].position - start.position).dot(start.velocity / v0);
+        const double error = std::abs(slid - exact) / exact;
+        worst = std::max(worst.value_or(0.0), error);
+    }
+    return worst;
 }
 
 Accuracy AccuracyTracker::finish(const std::vector<RigidBody>& bodies) const {
@@ -133,6 +222,8 @@ Accuracy AccuracyTracker::finish(const std::vector<RigidBody>& bodies) const {
             a.end_penetration = std::max(a.end_penetration, c.penetration);
         for (const RigidBody& b : bodies) a.end_kinetic_energy += kinetic_energy(b);
         a.jitter = jitter_samples_ > 0 ? std::sqrt(jitter_sum_ / static_cast<double>(jitter_samples_)) : 0.0;
+        a.least_travel = travel_.empty() ? 0.0 : *std::min_element(travel_.begin(), travel_.end());
+        if (spec_.metric == Metric::slide_error) a.slide_error = slide_error(bodies, (last_frame_ + 1) * dt_);
         if (arriving_ && restitution_ > 0.0 && *arriving_ != 0.0)
             a.restitution_error = std::abs(leaving_ + restitution_ * *arriving_) / std::abs(restitution_ * *arriving_);
         if (scene_.world.gravity.isZero()) {
@@ -145,11 +236,21 @@ Accuracy AccuracyTracker::finish(const std::vector<RigidBody>& bodies) const {
     }
 
     switch (spec_.metric) {
+        // With a settle time, from the state then (from the start in a run that ended before it).
         case Metric::top_drift:
-            a.error = a.top_drift_most;
+            a.error = a.settled_drift.value_or(a.top_drift_most);
             break;
         case Metric::any_drift:
-            a.error = a.any_drift_most;
+            a.error = a.settled_drift.value_or(a.any_drift_most);
+            break;
+        case Metric::top_sideways_drift:
+            a.error = a.settled_drift.value_or(a.top_sideways_drift_most);
+            break;
+        case Metric::recovery_time:
+            a.error = a.recovery_time.value_or(nan);
+            break;
+        case Metric::slide_error:
+            a.error = a.slide_error.value_or(nan);
             break;
         case Metric::end_penetration:
             a.error = a.end_penetration;
@@ -187,6 +288,19 @@ Accuracy AccuracyTracker::finish(const std::vector<RigidBody>& bodies) const {
     } else if (spec_.metric == Metric::energy_gain && a.end_kinetic_energy > 0.01 * kinetic_before_contact_) {
         // It must come to rest: at the end at most 1 % of the kinetic energy it struck with.
         a.failure = "not at rest";
+        a.failure_time = end_time;
+    } else if (spec_.metric == Metric::recovery_time && !a.recovery_time) {
+        a.failure = "stays overlapped";
+        a.failure_time = end_time;
+    } else if (explode_time_) {
+        a.failure = "exploded";  // a body left the separated pile faster than the scene allows
+        a.failure_time = explode_time_;
+    } else if ((spec_.metric == Metric::recovery_time || spec_.metric == Metric::slide_error) &&
+               a.error > spec_.failure_threshold) {
+        a.failure = spec_.metric == Metric::recovery_time ? "separates late" : "slides wrong";
+        a.failure_time = end_time;
+    } else if (spec_.min_travel && a.least_travel < *spec_.min_travel) {
+        a.failure = "stalled";  // a body that should have moved (a domino that should have fallen) did not
         a.failure_time = end_time;
     } else if (std::isnan(a.error)) {
         a.failure = "no " + std::string(metric_meaning(spec_.metric));  // e.g. the ball never bounced

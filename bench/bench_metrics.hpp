@@ -18,12 +18,18 @@ struct Accuracy {
     double top_drift_end = 0.0;               // m: the top body's distance from its start after the last frame
     double top_drift_most = 0.0;              // m: its largest distance from its start
     double any_drift_most = 0.0;              // m: the largest distance any body moved from its start
+    double top_sideways_drift_most = 0.0;     // m: the top body's largest distance from its start across gravity
+    double least_travel = 0.0;                // m: the smallest of the bodies' largest distances from their start
+    std::optional<double> settled_drift;      // m: with a settle time, the metric's drift from the state then
     std::optional<double> collapse_time;      // s: when the scene's drift first passed its collapse threshold
     double end_kinetic_energy = 0.0;          // J
     double jitter = 0.0;                      // m/s: RMS of |displacement| / frame over the last second, every body
     double energy_gain = 0.0;                 // share of the kinetic energy at the first contact gained after it
     std::optional<double> restitution_error;  // the isolated impact, once it bounced
     std::optional<double> momentum_error;     // scenes without gravity
+    std::optional<double> recovery_time;      // s: recovery_time scenes, once the overlap is gone
+    std::optional<double> leave_speed;        // m/s: the fastest any body moved after that
+    std::optional<double> slide_error;        // slide_error scenes: the worst body's |d - d_exact| / d_exact
     std::optional<double> nan_time;           // s: when a state first became NaN or infinite
 
     double error = 0.0;  // the scene's metric (BenchScene::metric); NaN when the run produced NaN
@@ -47,6 +53,11 @@ public:
 
 private:
     double mechanical_energy(const std::vector<RigidBody>& bodies) const;
+    // The metric's drift (top, sideways or any) of `bodies` from the positions `from`.
+    double drift(const std::vector<RigidBody>& bodies, const std::vector<Vec3>& from) const;
+    void observe_bounce(const std::vector<RigidBody>& bodies, const StepReport& report);
+    void observe_recovery(double time, const std::vector<RigidBody>& bodies);
+    std::optional<double> slide_error(const std::vector<RigidBody>& bodies, double time) const;
 
     const Scene& scene_;
     BenchScene spec_;
@@ -64,12 +75,20 @@ private:
     double kinetic_before_contact_ = 0.0;
     double previous_energy_ = 0.0, previous_kinetic_ = 0.0;
     std::optional<double> energy_gain_time_;  // s: when the gain first passed the failure threshold
-    // Restitution: the normal velocity arriving, and the one leaving when the first contact ends.
-    double previous_normal_velocity_ = 0.0;
+    // Restitution: body 0 after the previous frame, the normal velocity arriving, and the one leaving when the
+    // first contact ends.
+    RigidBody previous_body0_;
     std::optional<double> arriving_;
     double leaving_ = 0.0;
     bool bounce_done_ = false;
     double restitution_ = 0.0;
+    // Overlap recovery: the deepest penetration at the start, and when it fell to 5 % of it.
+    double deepest_at_start_ = 0.0;
+    std::optional<double> explode_time_;  // s: when a body first left faster than the scene's leave_speed
+    std::vector<double> travel_;          // each body's largest distance from its start
+    // With a settle time: the frame that ends then, and the bodies' positions at its end.
+    int settle_frame_ = -1;
+    std::vector<Vec3> start_positions_, settled_;
 };
 
 }  // namespace impulse::bench

@@ -20,24 +20,49 @@ namespace impulse::bench {
 
 namespace {
 
-// Targets are stated once here and in docs/bench.md. Drift: 5 cm of the top body over the run (a stack that
-// holds settles by a few millimetres to a few centimetres); a collapse is half a box (0.5 m; a brick course is
-// 0.5 m high, so 0.25 m). Durations: 10 s (Bullet's figures are over 10 s), except the 1000-box grid (2 s:
-// 4000 contacts a frame for 30 configurations); the default matrix must finish within 15 minutes on 2 cores.
-const std::array<BenchScene, 12> scenes{{
-    {"stack_10", Metric::top_drift, 0.05, 0.5, 600, true, true},
-    {"stack_20", Metric::top_drift, 0.05, 0.5, 600, true, true},
-    {"pyramid_20", Metric::top_drift, 0.05, 0.5, 600, true, true},
-    {"brick_wall", Metric::top_drift, 0.05, 0.25, 600, true, true},
-    {"mass_ratio_100", Metric::top_drift, 0.05, 0.5, 600, true, true},
-    {"mass_ratio_1000", Metric::top_drift, 0.05, 0.5, 600, true, true},
-    {"deep_plank", Metric::end_penetration, 0.011, 0.05, 120, true, true},
-    {"box_resting", Metric::jitter, 0.005, 0.05, 600, true, true},
-    {"spinning_box", Metric::energy_gain, 0.01, 0.05, 300, true, true},
-    {"grid_1000", Metric::any_drift, 0.05, 0.5, 120, true, true},
-    {"sphere_drop", Metric::restitution_error, 0.01, 0.0, 120, false, true},
-    {"two_spheres", Metric::momentum_error, 1e-9, 0.0, 120, false, true},
+// The bench's scenes and their suites. Each scene's metric, target, duration and failure threshold are its
+// file's "bench" block (written by scripts/make-scenes, one place); docs/bench.md lists them. The default suite
+// is what the default matrix runs (about an hour on 2 cores with the other engines); the large suite's scenes
+// take minutes a configuration.
+constexpr std::array<ShippedScene, 23> shipped{{
+    {"stack_10", "stack_10.json", Suite::standard},
+    {"stack_20", "stack_20.json", Suite::standard},
+    {"pyramid_20", "pyramid_20.json", Suite::standard},
+    {"brick_wall", "brick_wall.json", Suite::standard},
+    {"mass_ratio_100", "mass_ratio_100.json", Suite::standard},
+    {"mass_ratio_1000", "mass_ratio_1000.json", Suite::standard},
+    {"deep_plank", "deep_plank.json", Suite::standard},
+    {"box_resting", "box_resting.json", Suite::standard},
+    {"spinning_box", "spinning_box.json", Suite::standard},
+    {"grid_1000", "grid_1000.json", Suite::standard},
+    {"card_house", "card_house.json", Suite::standard},
+    {"jenga_30", "jenga_30.json", Suite::standard},
+    {"double_domino", "double_domino.json", Suite::standard},
+    {"vertical_stack_15", "vertical_stack_15.json", Suite::standard},
+    {"box_stack_40", "box_stack_40.json", Suite::standard},
+    {"heavy_on_light", "heavy_on_light.json", Suite::standard},
+    {"stack_ratio_1024", "stack_ratio_1024.json", Suite::standard},
+    {"tiny_pyramid", "tiny_pyramid.json", Suite::standard},
+    {"overlap_recovery", "overlap_recovery.json", Suite::standard},
+    {"friction_static", "friction_static.json", Suite::standard},
+    {"friction_dynamic", "friction_dynamic.json", Suite::standard},
+    {"sphere_drop", "sphere_drop.json", Suite::standard},
+    {"two_spheres", "two_spheres.json", Suite::standard},
 }};
+
+constexpr std::array<ShippedScene, 1> shipped_large{{
+    {"large_pyramid", "large/large_pyramid.json", Suite::large},
+}};
+
+// Both lists as one, in order (the default suite first).
+const std::vector<ShippedScene>& every_shipped() {
+    static const std::vector<ShippedScene> all = [] {
+        std::vector<ShippedScene> v(shipped.begin(), shipped.end());
+        v.insert(v.end(), shipped_large.begin(), shipped_large.end());
+        return v;
+    }();
+    return all;
+}
 
 }  // namespace
 
@@ -48,14 +73,17 @@ struct MetricWords {
     Metric metric;
     std::string_view name, unit, meaning;
 };
-constexpr std::array<MetricWords, 7> metric_words{{
+constexpr std::array<MetricWords, 10> metric_words{{
     {Metric::top_drift, "top_drift", "m", "top-body drift"},
     {Metric::any_drift, "any_drift", "m", "largest drift of any body"},
+    {Metric::top_sideways_drift, "top_sideways_drift", "m", "top-body drift across gravity"},
     {Metric::end_penetration, "end_penetration", "m", "deepest penetration at the end"},
     {Metric::jitter, "jitter", "m/s", "RMS speed over the last second"},
     {Metric::energy_gain, "energy_gain", "", "energy gained after the first contact"},
     {Metric::restitution_error, "restitution_error", "", "restitution error"},
     {Metric::momentum_error, "momentum_error", "", "momentum error"},
+    {Metric::recovery_time, "recovery_time", "s", "time to push overlapping bodies apart"},
+    {Metric::slide_error, "slide_error", "", "slide distance against Coulomb's"},
 }};
 
 const MetricWords& words_of(Metric metric) {
@@ -78,12 +106,22 @@ std::string_view metric_meaning(Metric metric) {
     return words_of(metric).meaning;
 }
 
-std::span<const BenchScene> bench_scenes() {
-    return scenes;
+std::string_view suite_name(Suite suite) {
+    return suite == Suite::large ? "large" : "default";
 }
 
-const BenchScene* find_bench_scene(std::string_view name) {
-    for (const BenchScene& s : scenes)
+Suite suite_named(std::string_view name) {
+    if (name == "default") return Suite::standard;
+    if (name == "large") return Suite::large;
+    throw formats::InputError("--suite", "no suite named \"" + std::string(name) + "\" (default, large)");
+}
+
+std::span<const ShippedScene> shipped_bench_scenes() {
+    return every_shipped();
+}
+
+const ShippedScene* find_shipped_scene(std::string_view name) {
+    for (const ShippedScene& s : every_shipped())
         if (s.name == name) return &s;
     return nullptr;
 }
@@ -124,7 +162,30 @@ double half_height(const Scene& scene, std::size_t body) {
     return along.cwiseAbs().dot(std::get<Box>(*shape).half_size);
 }
 
+// slide_error compares each sliding body with Coulomb's answer on level ground: the ground must be level (its
+// normal against gravity) and some body must start moving along it.
+void check_sliding(const Scene& scene) {
+    const Vec3 up = -scene.world.gravity.normalized();
+    if (!scene.ground || scene.world.gravity.isZero() || scene.ground->plane.normal.dot(up) < 1.0 - 1e-12)
+        throw formats::InputError("bench.metric",
+                                  "slide_error needs gravity and level ground (its normal against gravity)");
+    for (const RigidBody& b : scene.bodies)
+        if (b.inverse_mass > 0.0 && b.velocity.norm() > 0.0) {
+            if (std::abs(b.velocity.dot(up)) > 1e-12 * b.velocity.norm())
+                throw formats::InputError("bench.metric",
+                                          "slide_error needs the sliding bodies to start moving along the "
+                                          "ground, not towards or away from it");
+            return;
+        }
+    throw formats::InputError("bench.metric",
+                              "slide_error needs a body that starts sliding (a velocity along the ground)");
+}
+
 }  // namespace
+
+bool is_drift(Metric metric) {
+    return metric == Metric::top_drift || metric == Metric::any_drift || metric == Metric::top_sideways_drift;
+}
 
 bool declares_bench_block(std::string_view scene_text) {
     const nlohmann::ordered_json document = formats::parse_json_text(scene_text);
@@ -159,10 +220,28 @@ BenchScene declared_bench_scene(std::string name, std::string_view scene_text) {
     spec.stress = spec.metric != Metric::restitution_error && spec.metric != Metric::momentum_error;
     if (block.contains("failure_threshold"))
         spec.failure_threshold = block["failure_threshold"].get<double>();
-    else if (spec.metric == Metric::top_drift || spec.metric == Metric::any_drift)
+    else if (is_drift(spec.metric))
         spec.failure_threshold = half_height(scene, highest_body(scene));
     else if (spec.stress)
         spec.failure_threshold = 10.0 * spec.target;
+    if (block.contains("min_travel")) spec.min_travel = block["min_travel"].get<double>();
+    if (block.contains("leave_speed")) {
+        if (spec.metric != Metric::recovery_time)
+            throw formats::InputError("bench.leave_speed", "applies to the metric recovery_time only");
+        spec.leave_speed = block["leave_speed"].get<double>();
+    } else if (spec.metric == Metric::recovery_time) {
+        spec.leave_speed = 1.0;
+    }
+    if (block.contains("settle")) {
+        if (!is_drift(spec.metric))
+            throw formats::InputError("bench.settle",
+                                      "applies to the drift metrics only (top_drift, any_drift, "
+                                      "top_sideways_drift)");
+        spec.settle = block["settle"].get<double>();
+        if (*spec.settle >= spec.frames * scene.settings.duration)
+            throw formats::InputError("bench.settle", "is not before the end of the run");
+    }
+    if (spec.metric == Metric::slide_error) check_sliding(scene);
     return spec;
 }
 

@@ -3,7 +3,6 @@
 // methods (preset names), and how one iteration count N maps onto each method's own knob.
 
 #include "settings/settings.hpp"
-#include "settings/settings.hpp"
 #include "scene/scene.hpp"
 
 #include <optional>
@@ -16,41 +15,66 @@ namespace impulse::bench {
 
 // The quantity a scene is judged by: its "error" in the results, smaller is better.
 enum class Metric {
-    top_drift,          // m: the farthest the body that started highest moved from its start
-    any_drift,          // m: the farthest any body moved from its start (a grid has no top)
-    end_penetration,    // m: the deepest penetration left after the last frame's resolution
-    jitter,             // m/s: RMS linear speed of every body over the last second
-    energy_gain,        // share of the impact's kinetic energy gained after the first contact
-    restitution_error,  // |v_after + c v_before| / |c v_before| at the first bounce
-    momentum_error,     // |p_end - p_start| / sum of m |v| at the start
+    top_drift,           // m: the farthest the body that started highest moved from its start
+    any_drift,           // m: the farthest any body moved from its start (a grid has no top)
+    top_sideways_drift,  // m: the farthest the top body moved across gravity (a settling tower's fall not counted)
+    end_penetration,     // m: the deepest penetration left after the last frame's resolution
+    jitter,              // m/s: RMS linear speed of every body over the last second
+    energy_gain,         // share of the impact's kinetic energy gained after the first contact
+    restitution_error,   // |v_after + c v_before| / |c v_before| at the first bounce
+    momentum_error,      // |p_end - p_start| / sum of m |v| at the start
+    recovery_time,       // s: until the deepest penetration is at most 5 % of the deepest at the start
+    slide_error,         // the largest |d - d_exact| / d_exact of a body sliding to a stop by Coulomb friction
 };
 
 std::string_view metric_name(Metric metric);  // "top_drift", ...
+// The drift metrics, judged by a collapse (the drift passing the failure threshold).
+bool is_drift(Metric metric);
 std::string_view metric_unit(Metric metric);  // "m", "m/s" or "" (a ratio)
 std::string_view metric_meaning(Metric metric);
 
 struct BenchScene {
-    std::string name;  // the file scenes/<name>.json
+    std::string name;  // the scene file's name without ".json"
     Metric metric;
     double target;  // a configuration meets the target when its error is at most this
     // Where the scene fails (the stability verdict): drift metrics, the drift that counts as a collapse
-    // (half the top body's height); end_penetration and jitter, the value beyond which it failed; energy_gain,
-    // the gain beyond which the box bounced higher than physics allows. Unused by the isolated impacts.
+    // (half the top body's height); end_penetration, jitter, recovery_time and slide_error, the value beyond which
+    // it failed; energy_gain, the gain beyond which the box bounced higher than physics allows. Unused by the
+    // isolated impacts.
     double failure_threshold;
     int frames;   // frames simulated (the scene's duration is frames x 1/60 s)
     bool stress;  // a column of the stability matrix
     // False for a scene file that declares no "bench" block: its error is the top body's drift (for the chart),
     // it has no target (NaN) and no verdict but NaN, and it is no column of the stability matrix.
     bool verdict;
+    std::optional<double> min_travel =
+        std::nullopt;  // m: every body must move at least this far from its start ("stalled")
+    std::optional<double> leave_speed =
+        std::nullopt;  // m/s, recovery_time: the fastest a body may move once apart ("exploded")
+    // s, drift metrics: the error is the drift from the state at this time, so a settling that is over by then
+    // does not count (a collapse is still judged from the start).
+    std::optional<double> settle = std::nullopt;
 };
 
-// The bench's scenes in the order they are run and drawn.
-std::span<const BenchScene> bench_scenes();
-const BenchScene* find_bench_scene(std::string_view name);
+// The bench's own scenes, by suite: `standard` is what `bench` runs by default, `large` what `--suite large` runs
+// (scenes of thousands of bodies, minutes a configuration).
+enum class Suite { standard, large };
+std::string_view suite_name(Suite suite);  // "default", "large"
+Suite suite_named(std::string_view name);  // throws formats::InputError("--suite", ...) for another name
+
+struct ShippedScene {
+    std::string_view name;  // the scene file's name without ".json"
+    std::string_view file;  // its path in the scenes folder
+    Suite suite;
+};
+// Every bench scene in the order they are run and drawn; each is judged by its file's "bench" block.
+std::span<const ShippedScene> shipped_bench_scenes();
+const ShippedScene* find_shipped_scene(std::string_view name);
 
 // The bench scene a scene file declares (its "bench" block, docs/scenes.md), named `name`: metric, target,
-// duration (default the scene's settings.frames) and failure threshold (default: for top_drift and any_drift half
-// the top body's height along gravity, for restitution_error and momentum_error none, else 10 x the target).
+// duration (default the scene's settings.frames) and failure threshold (default: for top_drift, any_drift and
+// top_sideways_drift half the top body's height along gravity, for restitution_error and momentum_error none,
+// else 10 x the target), min_travel, leave_speed (default 1 m/s for recovery_time, else none) and settle.
 // Without a block: the general measures and no verdict. Throws formats::InputError (a JSON path) for a bad scene.
 BenchScene declared_bench_scene(std::string name, std::string_view scene_text);
 // Whether the scene file's text has a "bench" block (after it was read by declared_bench_scene).

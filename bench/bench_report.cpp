@@ -146,8 +146,11 @@ std::string results_csv(const BenchRun& run) {
     std::string csv =
         "scene,metric,unit,target,method,n,iteration_setting,frames,simulated_s,contacts_per_frame,time_per_step_ms,"
         "timed_frames,error,meets_target,holds,failure,failure_time_s,end_penetration_m,top_drift_end_m,"
-        "top_drift_most_m,any_drift_most_m,collapse_time_s,end_kinetic_energy_j,jitter_rms_m_per_s,energy_gain,"
-        "restitution_error,momentum_error,nan,nan_time_s,on_pareto_front,recording_ratio\n";
+        "top_drift_most_m,any_drift_most_m,top_sideways_drift_most_m,settled_drift_most_m,least_travel_m,collapse_time_"
+        "s,"
+        "end_kinetic_energy_j,"
+        "jitter_rms_m_per_s,energy_gain,restitution_error,momentum_error,recovery_time_s,leave_speed_m_per_s,"
+        "slide_error,nan,nan_time_s,on_pareto_front,recording_ratio\n";
     const std::vector<bool> front = front_flags(run.rows);
     for (std::size_t i = 0; i < run.rows.size(); ++i) {
         const RunResult& r = run.rows[i];
@@ -175,12 +178,18 @@ std::string results_csv(const BenchRun& run) {
             formats::csv_number(a.top_drift_end),
             formats::csv_number(a.top_drift_most),
             formats::csv_number(a.any_drift_most),
+            formats::csv_number(a.top_sideways_drift_most),
+            optional_number(a.settled_drift),
+            formats::csv_number(a.least_travel),
             optional_number(a.collapse_time),
             formats::csv_number(a.end_kinetic_energy),
             formats::csv_number(a.jitter),
             formats::csv_number(a.energy_gain),
             optional_number(a.restitution_error),
             optional_number(a.momentum_error),
+            optional_number(a.recovery_time),
+            optional_number(a.leave_speed),
+            optional_number(a.slide_error),
             a.nan_time ? "true" : "false",
             optional_number(a.nan_time),
             front[i] ? "true" : "false",
@@ -235,6 +244,9 @@ nlohmann::ordered_json results_json(const BenchRun& run, const Provenance& prove
                       {"failure_threshold", s->stress ? json(s->failure_threshold) : json(nullptr)},
                       {"stress", s->stress},
                       {"verdict", s->verdict},
+                      {"min_travel", json_number(s->min_travel)},
+                      {"leave_speed", json_number(s->leave_speed)},
+                      {"settle_s", json_number(s->settle)},
                       {"frames", frames},
                       {"warm_up_frames", warm_up_for(frames, run.timing)},
                       {"window_frames", window_for(frames, run.timing)}};
@@ -282,12 +294,18 @@ nlohmann::ordered_json results_json(const BenchRun& run, const Provenance& prove
                         {"top_drift_end_m", json_number(a.top_drift_end)},
                         {"top_drift_most_m", json_number(a.top_drift_most)},
                         {"any_drift_most_m", json_number(a.any_drift_most)},
+                        {"top_sideways_drift_most_m", json_number(a.top_sideways_drift_most)},
+                        {"settled_drift_most_m", json_number(a.settled_drift)},
+                        {"least_travel_m", json_number(a.least_travel)},
                         {"collapse_time_s", json_number(a.collapse_time)},
                         {"end_kinetic_energy_j", json_number(a.end_kinetic_energy)},
                         {"jitter_rms_m_per_s", json_number(a.jitter)},
                         {"energy_gain", json_number(a.energy_gain)},
                         {"restitution_error", json_number(a.restitution_error)},
                         {"momentum_error", json_number(a.momentum_error)},
+                        {"recovery_time_s", json_number(a.recovery_time)},
+                        {"leave_speed_m_per_s", json_number(a.leave_speed)},
+                        {"slide_error", json_number(a.slide_error)},
                         {"nan", a.nan_time.has_value()},
                         {"nan_time_s", json_number(a.nan_time)},
                         {"on_pareto_front", static_cast<bool>(front[i])},

@@ -94,9 +94,14 @@ bench::Provenance provenance() {
     return p;
 }
 
+fs::path scenes_folder(const BenchOptions& options) {
+    return options.scene_dir ? fs::path(*options.scene_dir) : shipped_scenes_folder();
+}
+
+// A bench scene's file: where the table puts it in the scenes folder (scenes/large/ for the large suite).
 std::string scene_path(const BenchOptions& options, const std::string& name) {
-    const fs::path folder = options.scene_dir ? fs::path(*options.scene_dir) : shipped_scenes_folder();
-    return (folder / (name + ".json")).string();
+    const bench::ShippedScene* shipped = bench::find_shipped_scene(name);
+    return (scenes_folder(options) / (shipped ? std::string(shipped->file) : name + ".json")).string();
 }
 
 std::string fixed(const char* pattern, double value) {
@@ -155,12 +160,14 @@ int scaling(const BenchOptions& options, const fs::path& folder, std::ostream& o
 
 namespace {
 
-// The scenes --scenes names, each either a bench scene's name (scenes/<name>.json, judged as the table in
-// bench_plan.cpp says) or a scene file's path (judged by its "bench" block, or the general measures without one;
-// the file of a bench scene given by its path is that bench scene). `specs` owns what run.scenes points to.
+// The scenes --scenes names, each either a bench scene's name (its file in the scenes folder, bench_plan.cpp's
+// table) or a scene file's path; either is judged by its file's "bench" block, or the general measures without one.
+// Without --scenes, the scenes of --suite (default: the default suite). `specs` owns what run.scenes points to.
 void choose_scenes(const BenchOptions& options, bench::BenchRun& run, std::deque<bench::BenchScene>& specs,
                    std::vector<std::string>& texts, std::vector<std::string>& paths) {
     std::vector<std::string> entries;
+    if (options.scenes && options.suite)
+        throw formats::InputError("--suite", "cannot be combined with --scenes (name the scenes of any suite there)");
     if (options.scenes) {
         std::string_view list = *options.scenes;
         for (std::size_t start = 0;;) {
@@ -170,18 +177,20 @@ void choose_scenes(const BenchOptions& options, bench::BenchRun& run, std::deque
             start = comma + 1;
         }
     } else {
-        for (const bench::BenchScene& s : bench::bench_scenes()) entries.push_back(s.name);
+        const bench::Suite suite = options.suite ? bench::suite_named(*options.suite) : bench::Suite::standard;
+        for (const bench::ShippedScene& s : bench::shipped_bench_scenes())
+            if (s.suite == suite) entries.emplace_back(s.name);
     }
     std::string known;
-    for (const bench::BenchScene& s : bench::bench_scenes()) known += (known.empty() ? "" : ", ") + s.name;
+    for (const bench::ShippedScene& s : bench::shipped_bench_scenes())
+        known += (known.empty() ? "" : ", ") + std::string(s.name);
     for (const std::string& entry : entries) {
         const bool is_path = entry.find('/') != std::string::npos || fs::path(entry).extension() == ".json";
         if (entry.empty()) throw formats::InputError("--scenes", "an empty scene name in \"" + *options.scenes + "\"");
         std::string path = is_path ? entry : scene_path(options, entry);
-        const bench::BenchScene* table = is_path ? nullptr : bench::find_bench_scene(entry);
-        if (!is_path && !table) {
+        if (!is_path && !bench::find_shipped_scene(entry)) {
             std::vector<std::string> names;
-            for (const bench::BenchScene& s : bench::bench_scenes()) names.push_back(s.name);
+            for (const bench::ShippedScene& s : bench::shipped_bench_scenes()) names.emplace_back(s.name);
             const std::optional<std::string> meant = formats::closest_name(entry, names);
             throw formats::InputError("--scenes", "no bench scene named \"" + entry + "\"" +
                                                       (meant ? "; did you mean \"" + *meant + "\"?" : "") + " (" +
@@ -198,12 +207,6 @@ void choose_scenes(const BenchOptions& options, bench::BenchRun& run, std::deque
         bench::BenchScene spec;
         try {
             spec = bench::declared_bench_scene(name, text);
-            // A bench scene's own file given by its path is that bench scene, unless it declares its own block.
-            if (is_path && !bench::declares_bench_block(text))
-                if (const bench::BenchScene* named = bench::find_bench_scene(name)) {
-                    std::error_code error;
-                    if (fs::equivalent(path, scene_path(options, name), error)) table = named;
-                }
         } catch (const formats::InputError& e) {
             throw formats::FileError{path, e.where(), e.problem()};
         }
@@ -212,7 +215,7 @@ void choose_scenes(const BenchOptions& options, bench::BenchRun& run, std::deque
                 throw formats::InputError("--scenes", "two scenes are called \"" + name +
                                                           "\" (a scene is named by its "
                                                           "file's name)");
-        specs.push_back(table ? *table : spec);
+        specs.push_back(spec);
         run.scenes.push_back(&specs.back());
         texts.push_back(std::move(text));
         paths.push_back(path);

@@ -232,13 +232,22 @@ void add_bench(CLI::App& app, BenchOptions& o, FlagCatalog& c) {
         "Time every scene x method x iteration count (recorder off) and judge its accuracy; write results.csv,\n"
         "results.json, speed_accuracy.png, stability.md and stability.png (docs/bench.md).\n"
         "Example: impulse-lab bench --scenes stack_10,box_resting --methods book,pgs --iterations 1,4,16");
+    std::string standard, large;  // each suite's scenes, for the help
+    for (const bench::ShippedScene& s : bench::shipped_bench_scenes()) {
+        std::string& list = s.suite == bench::Suite::large ? large : standard;
+        list += (list.empty() ? "" : ", ") + std::string(s.name);
+    }
     bench
         ->add_option("--scenes", o.scenes,
-                     "Bench scenes or scene files, comma-separated: a name (default: all: stack_10, stack_20, "
-                     "pyramid_20, brick_wall, mass_ratio_100, mass_ratio_1000, deep_plank, box_resting, spinning_box, "
-                     "grid_1000, sphere_drop, two_spheres) or a path (e.g. scenes/stack_3.json), judged by its "
-                     "\"bench\" block or by the general measures")
+                     "Bench scenes or scene files, comma-separated: a name (the default suite: " + standard +
+                         "; the large suite: " + large +
+                         ") or a path (e.g. scenes/stack_3.json), judged by its \"bench\" block or by the general "
+                         "measures")
         ->type_name("LIST");
+    one_of(bench->add_option("--suite", o.suite,
+                             "Without --scenes: the default suite (default) or the large suite (" + large +
+                                 "), minutes a configuration"),
+           c, {"default", "large"}, "SUITE");
     std::string engines;
     for (const bench::EngineRow& e : bench::built_engines()) engines += std::string(", ") + std::string(e.name);
     bench

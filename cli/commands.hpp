@@ -107,7 +107,8 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
 
 // `bench` (docs/bench.md): scenes x methods x iteration counts, timed and judged; five files into `out`.
 struct BenchOptions {
-    std::optional<std::string> scenes;      // comma-separated bench scene names; default: all
+    std::optional<std::string> scenes;      // comma-separated bench scene names or files; default: the suite's
+    std::optional<std::string> suite;       // "default" (the default) or "large"
     std::optional<std::string> methods;     // comma-separated preset names; default: book, sweep, pgs, pgs_split,
                                             // soft_step
     std::optional<std::string> iterations;  // comma-separated counts; default 1,2,4,8,16,32

@@ -8,6 +8,7 @@
 #include "bench/bench_report.hpp"
 #include "bench/bench_runs.hpp"
 #include "bench/bench_charts.hpp"
+#include "support/bench_scenes.hpp"
 #include "support/png_image.hpp"
 #include "bench/bench_charts.hpp"
 #include "formats/input_error.hpp"
@@ -62,7 +63,7 @@ TEST_CASE("the Pareto front leaves out runs that failed, so it starts at the fas
 }
 
 TEST_CASE("a stability cell meets the target, holds but misses it (saying by how much), or fails") {
-    const bench::BenchScene* stack = bench::find_bench_scene("stack_10");  // top_drift, target 0.05 m
+    const bench::BenchScene* stack = bench_scene("stack_10");  // top_drift, target 0.05 m
     std::vector<bench::RunResult> rows{
         row("stack_10", "pgs_split", 4, 0.1, 0.03, true), row("stack_10", "pgs_split", 8, 0.2, 0.306, false),
         row("stack_10", "soft_step", 8, 0.1, 0.0295, true), row("stack_10", "book", 8, 0.4, 10.9, false)};
@@ -151,7 +152,7 @@ TEST_CASE("a sphere dropped with the book preset bounces with a restitution erro
     timing.frames = 40;
     timing.repeats = 1;
     const bench::RunResult r =
-        bench::run_configuration(scene_text("sphere_drop"), *bench::find_bench_scene("sphere_drop"), "book", 4, timing);
+        bench::run_configuration(scene_text("sphere_drop"), *bench_scene("sphere_drop"), "book", 4, timing);
     REQUIRE(r.accuracy.restitution_error.has_value());
     CHECK(*r.accuracy.restitution_error < 1e-9);
     CHECK(r.accuracy.error == *r.accuracy.restitution_error);
@@ -188,7 +189,7 @@ TEST_CASE("a top body sinking 0.1 m a frame is reported collapsed at the frame i
 
 TEST_CASE("results.csv of a tiny run has one row per configuration under the documented columns") {
     bench::BenchRun run;
-    run.scenes = {bench::find_bench_scene("two_spheres")};
+    run.scenes = {bench_scene("two_spheres")};
     run.methods = {"book"};
     run.iterations = {1, 2};
     run.timing.frames = 20;
@@ -413,7 +414,7 @@ TEST_CASE("a shard runs every N-th configuration from the K-th") {
 
 TEST_CASE("shards merged from their results.json give the files one run of the whole matrix gives") {
     bench::BenchRun whole;
-    whole.scenes = {bench::find_bench_scene("two_spheres"), bench::find_bench_scene("sphere_drop")};
+    whole.scenes = {bench_scene("two_spheres"), bench_scene("sphere_drop")};
     whole.methods = {"book", "pgs"};
     whole.iterations = {1, 2};
     whole.timing.frames = 12;

@@ -4,6 +4,7 @@
 #include "bench/bench_charts.hpp"
 #include "bench/bench_plan.hpp"
 #include "bench/chart_canvas.hpp"
+#include "support/bench_scenes.hpp"
 #include "support/png_image.hpp"
 
 #include <doctest/doctest.h>
@@ -97,7 +98,7 @@ TEST_CASE("a hand-made run's charts show each method's markers in its colour and
     // at N = 4 and 8 (collapsed at N = 8). One scene: one panel, 960 x 500. The matrix judges each method at its
     // largest N: book meets the target (green fill 198, 236, 198), pgs fails (red fill 248, 196, 196).
     bench::BenchRun run;
-    run.scenes = {bench::find_bench_scene("stack_10")};
+    run.scenes = {bench_scene("stack_10")};
     run.methods = {"book", "pgs"};
     run.iterations = {4, 8};
     run.rows = {row("book", 4, 0.5, 0.2, false), row("book", 8, 0.9, 0.01, true), row("pgs", 4, 0.2, 0.03, true),

@@ -75,8 +75,8 @@ private:
     double kinetic_before_contact_ = 0.0;
     double previous_energy_ = 0.0, previous_kinetic_ = 0.0;
     std::optional<double> energy_gain_time_;  // s: when the gain first passed the failure threshold
-    // Restitution: body 0 after the previous frame, the normal velocity arriving, and the one leaving when the
-    // first contact ends.
+    // Restitution: the normal velocity arriving, and the one leaving when the contact last acted in the first
+    // contact (the last frame whose change of velocity was not free flight's).
     RigidBody previous_body0_;
     std::optional<double> arriving_;
     double leaving_ = 0.0;

@@ -1,6 +1,7 @@
 #include "bench/bench_charts.hpp"
 
 #include "bench/chart_canvas.hpp"
+#include "settings/settings.hpp"
 
 #include <imgui.h>
 
@@ -59,6 +60,28 @@ void text(ImDrawList& list, ImVec2 at, ImU32 colour, const std::string& s, float
 
 float text_width(const std::string& s, float size = text_size) {
     return ImGui::GetFont()->CalcTextSizeA(size, 1e9f, 0.0f, s.c_str()).x;
+}
+
+// `s` cut to fit `width` pixels, ending in "…" when it had to be cut (a cell's text must not run into the next).
+std::string fitted(const std::string& s, float width, float size = text_size) {
+    if (text_width(s, size) <= width) return s;
+    std::string cut = s;
+    while (!cut.empty() && text_width(cut + "…", size) > width) {
+        cut.pop_back();
+        while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80) cut.pop_back();  // UTF-8
+    }
+    return cut + "…";
+}
+
+// The isolated bounce's one known artefact, said where it shows: a method with Baumgarte's bias (the pgs preset)
+// leaves faster than c v, by the push beta (p - slop) / h it adds to the separating velocity (docs/methods.md).
+std::string baumgarte_note(const BenchRun& run, const BenchScene& spec) {
+    if (spec.metric != bench::Metric::restitution_error) return {};
+    std::string methods;
+    for (const std::string& m : run.methods)
+        if (const std::optional<ResolverSettings> s = preset(m); s && s->baumgarte)
+            methods += (methods.empty() ? "" : ", ") + m;
+    return methods.empty() ? std::string() : methods + ": Baumgarte adds β(p − slop)/h to the bounce";
 }
 
 // Marker shapes by method, so series stay apart in grey too: filled when the run held, hollow when it failed.
@@ -172,9 +195,13 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
          17.0f);
     const ImVec2 p0{origin.x + 66, origin.y + 46};                    // plot's top left
     const ImVec2 p1{origin.x + size.x - 16, origin.y + size.y - 46};  // bottom right
-    text(list, {origin.x + 8, origin.y + 25}, faint,
-         "error" + (unit.empty() ? std::string(" (ratio)") : " (" + unit + ")") +
-             (nan_runs ? "   " + std::to_string(nan_runs) + " NaN run(s) not drawn" : ""));
+    const std::string axis = "error" + (unit.empty() ? std::string(" (ratio)") : " (" + unit + ")") +
+                             (nan_runs ? "   " + std::to_string(nan_runs) + " NaN run(s) not drawn" : "");
+    text(list, {origin.x + 8, origin.y + 25}, faint, axis);
+    if (const std::string note = baumgarte_note(run, spec); !note.empty()) {
+        const float from = origin.x + 8 + text_width(axis) + 16, room = origin.x + size.x - 12 - from;
+        text(list, {from, origin.y + 26}, IM_COL32(0, 120, 90, 255), fitted(note, room, 13.5f), 13.5f);
+    }
     const auto px = [&](double t) { return p0.x + x.at(t) * (p1.x - p0.x); };
     const auto py = [&](double e) { return p1.y - y.at(e) * (p1.y - p0.y); };
 
@@ -423,6 +450,7 @@ std::string stability_png(const BenchRun& run) {
                                    : cell.meets_target ? IM_COL32(20, 110, 20, 255)
                                                        : IM_COL32(140, 80, 0, 255);
                 list.AddRectFilled({a.x + 2, a.y + 2}, {b.x - 2, b.y - 2}, fill);
+                const float room = cell_w - 14;
                 if (!cell.ran) {
                     text(list, {a.x + 8, a.y + 6}, faint, "not run");
                     continue;
@@ -444,8 +472,8 @@ std::string stability_png(const BenchRun& run) {
                     std::snprintf(when, sizeof when, " at %.2f s", cell.failure_time.value_or(0.0));
                     second = cell.failure + when;
                 }
-                text(list, {a.x + 8, a.y + 26}, ink, second);
-                text(list, {a.x + 8, a.y + 46}, ink, third);
+                text(list, {a.x + 8, a.y + 26}, ink, fitted(second, room));
+                text(list, {a.x + 8, a.y + 46}, ink, fitted(third, room));
             }
         }
         text(list, {12, static_cast<float>(height) - 28}, faint,

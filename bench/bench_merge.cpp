@@ -32,7 +32,7 @@ RunResult read_row(const json& j) {
     r.frames = j.at("frames").get<int>();
     r.duration = r.frames > 0 ? j.at("simulated_s").get<double>() / r.frames : 0.0;
     r.contacts_per_frame = j.at("contacts_per_frame").get<double>();
-    r.time_per_step = j.at("time_per_step_ms").get<double>() * 1e-3;
+    r.time_per_step = number_or_nan(j.at("time_per_step_ms")) * 1e-3;  // null for a configuration not run
     r.timed_frames = j.at("timed_frames").get<int>();
     r.recording_ratio = optional_number(j.at("recording_ratio"));
     Accuracy& a = r.accuracy;

@@ -9,6 +9,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <span>
 
 namespace impulse::bench {
 
@@ -172,6 +174,16 @@ void dashed_line(ImDrawList& list, ImVec2 a, ImVec2 b, ImU32 colour, float dash 
     }
 }
 
+// The first of `options` where a box of w x h covers none of `taken`.
+std::optional<ImVec2> free_place(const std::vector<ChartBox>& taken, std::span<const ImVec2> options, float w,
+                                 float h) {
+    for (const ImVec2& o : options) {
+        const ChartBox box{o.x, o.y, o.x + w, o.y + h};
+        if (std::none_of(taken.begin(), taken.end(), [&](const ChartBox& t) { return t.overlaps(box); })) return o;
+    }
+    return std::nullopt;
+}
+
 void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, const BenchScene& spec) {
     std::vector<const RunResult*> rows;
     for (const RunResult& r : run.rows)
@@ -191,16 +203,22 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
     const LogAxis x = LogAxis::around(times), y = LogAxis::around(errors);
 
     const std::string unit(bench::metric_unit(spec.metric));
-    text(list, {origin.x + 8, origin.y + 4}, ink, spec.name + " — " + std::string(bench::metric_meaning(spec.metric)),
-         17.0f);
-    const ImVec2 p0{origin.x + 66, origin.y + 46};                    // plot's top left
-    const ImVec2 p1{origin.x + size.x - 16, origin.y + size.y - 46};  // bottom right
+    const std::string title = spec.name + " — " + std::string(bench::metric_meaning(spec.metric));
+    text(list, {origin.x + 8, origin.y + 4}, ink, title, 17.0f);
+    // Boxes no N label may cover: the words above the plot, the axes' labels, markers, labels.
+    std::vector<ChartBox> taken{{origin.x + 8, origin.y + 4, origin.x + 8 + text_width(title, 17.0f), origin.y + 22}};
+    const ImVec2 p0{origin.x + 66, origin.y + 46};  // plot's top left
+    // Bottom right; the time labels sit 12 px below the plot, clear of the markers an error of 0 puts on its edge.
+    const ImVec2 p1{origin.x + size.x - 16, origin.y + size.y - 54};
     const std::string axis = "error" + (unit.empty() ? std::string(" (ratio)") : " (" + unit + ")") +
                              (nan_runs ? "   " + std::to_string(nan_runs) + " NaN run(s) not drawn" : "");
     text(list, {origin.x + 8, origin.y + 25}, faint, axis);
+    taken.push_back({origin.x + 8, origin.y + 25, origin.x + 8 + text_width(axis), origin.y + 25 + text_size});
     if (const std::string note = baumgarte_note(run, spec); !note.empty()) {
         const float from = origin.x + 8 + text_width(axis) + 16, room = origin.x + size.x - 12 - from;
-        text(list, {from, origin.y + 26}, IM_COL32(0, 120, 90, 255), fitted(note, room, 13.5f), 13.5f);
+        const std::string shown = fitted(note, room, 13.5f);
+        text(list, {from, origin.y + 26}, IM_COL32(0, 120, 90, 255), shown, 13.5f);
+        taken.push_back({from, origin.y + 26, from + text_width(shown, 13.5f), origin.y + 26 + 13.5f});
     }
     const auto px = [&](double t) { return p0.x + x.at(t) * (p1.x - p0.x); };
     const auto py = [&](double e) { return p1.y - y.at(e) * (p1.y - p0.y); };
@@ -216,30 +234,29 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
         const float X = px(std::pow(10.0, k));
         list.AddLine({X, p0.y}, {X, p1.y}, grid_major);
         const std::string label = decade_label(k);
-        text(list, {X - text_width(label) / 2, p1.y + 4}, ink, label);
+        text(list, {X - text_width(label) / 2, p1.y + 12}, ink, label);
+        taken.push_back({X - text_width(label) / 2, p1.y + 12, X + text_width(label) / 2, p1.y + 12 + text_size});
     }
     for (int k = y.lo; k <= y.hi; ++k) {
         const float Y = py(std::pow(10.0, k));
         list.AddLine({p0.x, Y}, {p1.x, Y}, grid_major);
         const std::string label = decade_label(k);
         text(list, {p0.x - 6 - text_width(label), Y - 8}, ink, label);
+        taken.push_back({p0.x - 6 - text_width(label), Y - 8, p0.x - 6, Y - 8 + text_size});
     }
     list.AddRect(p0, p1, faint);
     const std::string x_name = "time per step (ms)";
-    text(list, {(p0.x + p1.x - text_width(x_name)) / 2, p1.y + 22}, ink, x_name);
+    text(list, {(p0.x + p1.x - text_width(x_name)) / 2, p1.y + 30}, ink, x_name);
 
-    std::vector<ChartBox> fixed_text;  // the labels drawn so far inside the plot, which a marker's label avoids
-    // The target: configurations below the dashed line meet it. A scene that declares none has no line.
+    // The target: configurations below the dashed line meet it (its label goes where no marker is, below). A
+    // scene that declares none has no line.
     if (spec.verdict) {
         const float target_y = py(spec.target);
         dashed_line(list, {p0.x, target_y}, {p1.x, target_y}, IM_COL32(90, 90, 90, 255));
-        const std::string target = "target " + bench::metric_text(spec, spec.target);
-        text(list, {p0.x + 4, target_y - 18}, IM_COL32(90, 90, 90, 255), target);
-        fixed_text.push_back({p0.x + 4, target_y - 18, p0.x + 4 + text_width(target), target_y - 2});
     } else {
         const std::string none = "no bench target declared: no verdict";
         text(list, {p0.x + 4, p0.y + 4}, IM_COL32(90, 90, 90, 255), none);
-        fixed_text.push_back({p0.x + 4, p0.y + 4, p0.x + 4 + text_width(none), p0.y + 20});
+        taken.push_back({p0.x + 4, p0.y + 4, p0.x + 4 + text_width(none), p0.y + 20});
     }
 
     // Every run's marker where its data puts it, then moved aside (with a thin line back to that place) when
@@ -260,7 +277,7 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
             places.push_back({at.x, at.y});
         }
     // A marker is about 12 px across; the bottom edge holds errors of 0, so markers may sit a little below it.
-    const std::vector<ChartPoint> drawn = dodged_markers(places, 15.0f, {p0.x - 2, p0.y - 2}, {p1.x + 2, p1.y + 8});
+    const std::vector<ChartPoint> drawn = dodged_markers(places, 15.0f, {p0.x - 2, p0.y - 2}, {p1.x + 2, p1.y + 5});
     for (std::size_t i = 0; i < placed.size(); ++i) placed[i].marker = {drawn[i].x, drawn[i].y};
 
     // The Pareto front of the runs that held, under the markers: a thick grey line through them in time order.
@@ -294,14 +311,29 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
         const MethodStyle style = method_style(run.methods, p.method);
         marker(list, style.shape, p.marker, style.colour, p.run->accuracy.holds);
     }
-    // N beside each marker, where no label covers another or a marker (a front marker's ring, radius 10,
-    // included), with a thin line back when it had to go farther out.
-    std::vector<ChartBox> taken = fixed_text;
+    // Each marker's box, a front marker's ring (radius 10) included, so no label sits on either.
     for (std::size_t i = 0; i < placed.size(); ++i) {
         const float half = std::find(front.begin(), front.end(), i) != front.end() ? 11.0f : 7.0f;
         const ImVec2 c = placed[i].marker;
         taken.push_back({c.x - half, c.y - half, c.x + half, c.y + half});
     }
+    if (spec.verdict) {
+        // The target's words on the dashed line where no marker is: above it at its left end, at its right end,
+        // below it at either end, then anywhere along it.
+        const std::string target = "target " + bench::metric_text(spec, spec.target);
+        const float w = text_width(target), target_y = py(spec.target);
+        std::vector<ImVec2> options{{p0.x + 4, target_y - 18},
+                                    {p1.x - 4 - w, target_y - 18},
+                                    {p0.x + 4, target_y + 3},
+                                    {p1.x - 4 - w, target_y + 3}};
+        for (float x = p0.x + 40; x + w < p1.x - 4; x += 40)
+            for (const float y : {target_y - 18, target_y + 3}) options.push_back({x, y});
+        const ImVec2 at = free_place(taken, options, w, text_size).value_or(options[0]);
+        taken.push_back({at.x, at.y, at.x + w, at.y + text_size});
+        text(list, at, IM_COL32(90, 90, 90, 255), target);
+    }
+    // N beside each marker, where no label covers another, a marker or the words round the plot, with a thin line
+    // back when it had to go farther out; a marker with no free place keeps none, and the panel says how many.
     std::vector<ChartPoint> markers, sizes;
     for (const Placed& p : placed) {
         markers.push_back({p.marker.x, p.marker.y});
@@ -309,14 +341,22 @@ void panel(ImDrawList& list, ImVec2 origin, ImVec2 size, const BenchRun& run, co
     }
     const std::vector<std::optional<ChartPoint>> labels =
         placed_labels(markers, sizes, taken, {p0.x, p0.y - 4, p1.x + 14, p1.y + 10});
+    int crowded = 0;
     for (std::size_t i = 0; i < placed.size(); ++i) {
-        if (!labels[i]) continue;
+        if (!labels[i]) {
+            ++crowded;
+            continue;
+        }
         const ImVec2 at{labels[i]->x, labels[i]->y};
         const ImU32 colour = method_style(run.methods, placed[i].method).colour;
         const ImVec2 centre{at.x + sizes[i].x / 2, at.y + sizes[i].y / 2}, c = placed[i].marker;
         if (std::hypot(centre.x - c.x, centre.y - c.y) > 20.0f)
             list.AddLine(c, centre, (colour & 0x00FFFFFF) | 0x70000000, 1.0f);
         text(list, at, colour, std::to_string(placed[i].run->n), 14.0f);
+    }
+    if (crowded > 0) {
+        const std::string note = "N not shown: " + std::to_string(crowded) + " (no room)";
+        text(list, {origin.x + 8, p1.y + 31}, faint, note, 13.0f);  // left of the centred axis title
     }
 }
 
@@ -416,7 +456,7 @@ std::string speed_accuracy_png(const BenchRun& run) {
 std::string stability_png(const BenchRun& run) {
     // Rows are the stress scenes and columns the methods: ten scenes and five methods fit a screen this way.
     const bench::StabilityMatrix m = bench::stability_matrix(run.rows, run.methods, run.scenes);
-    const float left = 240.0f, cell_w = 250.0f, cell_h = 72.0f, top = 86.0f;
+    const float left = 240.0f, cell_w = 282.0f, cell_h = 72.0f, top = 86.0f;
     const int width =
         static_cast<int>(left + cell_w * static_cast<float>(std::max<std::size_t>(1, m.methods.size())) + 20);
     const int height = static_cast<int>(top + cell_h * static_cast<float>(m.scenes.size()) + 44);

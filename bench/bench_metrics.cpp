@@ -80,6 +80,11 @@ AccuracyTracker::AccuracyTracker(const Scene& scene, const BenchScene& spec, int
     }
 }
 
+double AccuracyTracker::whole_drift(const std::vector<RigidBody>& bodies, const std::vector<Vec3>& from) const {
+    if (spec_.metric == Metric::any_drift) return drift(bodies, from);
+    return (bodies[top_].position - from[top_]).norm();
+}
+
 double AccuracyTracker::drift(const std::vector<RigidBody>& bodies, const std::vector<Vec3>& from) const {
     if (spec_.metric == Metric::any_drift) {
         double any = 0.0;
@@ -126,11 +131,17 @@ bool AccuracyTracker::observe(int frame, const std::vector<RigidBody>& bodies, c
     }
     a_.any_drift_most = std::max(a_.any_drift_most, any);
     if (is_drift(spec_.metric)) {
-        // A collapse is judged from the start, whatever the settle time.
-        if (!a_.collapse_time && drift(bodies, start_positions_) > spec_.failure_threshold) a_.collapse_time = time;
+        // A collapse: the metric's drift from the start passes the threshold (a tower toppling while it settles),
+        // or, once settled, the whole move of the watched bodies from the settled state does (a pyramid crumbling
+        // straight down moves its top little sideways).
+        bool collapsed = drift(bodies, start_positions_) > spec_.failure_threshold;
         if (frame == settle_frame_)
             for (const RigidBody& b : bodies) settled_.push_back(b.position);
-        if (!settled_.empty()) a_.settled_drift = std::max(a_.settled_drift.value_or(0.0), drift(bodies, settled_));
+        if (!settled_.empty()) {
+            a_.settled_drift = std::max(a_.settled_drift.value_or(0.0), drift(bodies, settled_));
+            collapsed = collapsed || whole_drift(bodies, settled_) > spec_.failure_threshold;
+        }
+        if (!a_.collapse_time && collapsed) a_.collapse_time = time;
     }
 
     // Jitter is the motion the eye sees: each body's displacement over the frame / the frame's duration. The

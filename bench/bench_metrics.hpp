@@ -55,6 +55,8 @@ private:
     double mechanical_energy(const std::vector<RigidBody>& bodies) const;
     // The metric's drift (top, sideways or any) of `bodies` from the positions `from`.
     double drift(const std::vector<RigidBody>& bodies, const std::vector<Vec3>& from) const;
+    // The same bodies' move in every direction (top_sideways_drift's top body included along gravity).
+    double whole_drift(const std::vector<RigidBody>& bodies, const std::vector<Vec3>& from) const;
     void observe_bounce(const std::vector<RigidBody>& bodies, const StepReport& report);
     void observe_recovery(double time, const std::vector<RigidBody>& bodies);
     std::optional<double> slide_error(const std::vector<RigidBody>& bodies, double time) const;

@@ -113,6 +113,25 @@ TEST_CASE("with a settle time the drift counts from the state then, but a collap
     }
 }
 
+TEST_CASE("once settled, a top that crumbles straight down has collapsed, though it moved little sideways") {
+    // By hand: settle at 0.1 s (frame 5's end). The top drops 0.3 m by then (a tower falling into place: no
+    // collapse), then 1 cm aside and 0.1 m lower each frame: from the settled state it has moved
+    // sqrt(0.01^2 + (0.1 (f - 5))^2), past the 0.5 m threshold at frame 10's end, 11 / 60 s; sideways, 1 cm.
+    Tracked t =
+        tracked(two_cubes(R"({"metric": "top_sideways_drift", "target": 0.05, "settle": 0.1, "duration": 0.5})"));
+    bench::AccuracyTracker tracker(t.scene, t.spec, 30);
+    std::vector<RigidBody> bodies = t.scene.bodies;
+    for (int frame = 0; frame < 30; ++frame) {
+        const double drop = frame < 6 ? 0.05 * (frame + 1) : std::min(0.9, 0.3 + 0.1 * (frame - 5));
+        bodies[1].position = t.scene.bodies[1].position + Vec3(frame < 6 ? 0.0 : 0.01, -drop, 0);
+        tracker.observe(frame, bodies, StepReport{});
+    }
+    const bench::Accuracy a = tracker.finish(bodies);
+    CHECK(a.error == doctest::Approx(0.01));
+    CHECK(a.failure == "collapsed");
+    CHECK(*a.failure_time == doctest::Approx(11 / 60.0));
+}
+
 TEST_CASE("a bounce is measured where the contact last acted: free flight still inside the ground is no part of it") {
     // A ball of restitution 0.5 arrives at -4 m/s (the end of the frame before contact). In the first contact frame
     // it leaves at +2 m/s; it is still below the ground's surface for the next frame, which only gravity acts on

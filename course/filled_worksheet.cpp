@@ -64,9 +64,9 @@ FilledWorksheet read_worksheet_json(const formats::json& document) {
 }
 
 FilledWorksheet read_worksheet_csv(std::string_view text) {
-    const std::vector<formats::CsvRow> rows = formats::parse_csv(text);
-    if (rows.empty()) throw formats::InputError("line 1", "no header: expected " + std::string(worksheet_csv_header));
-    const std::vector<std::string>& header = rows.front().fields;
+    FilledWorksheet sheet;
+    std::vector<std::string> header;
+    std::size_t kind = 0, path = 0, value = 0, needed = 0;
     const auto column = [&header](const char* name) {
         const auto found =
             std::find_if(header.begin(), header.end(), [name](const std::string& h) { return trimmed(h) == name; });
@@ -75,23 +75,27 @@ FilledWorksheet read_worksheet_csv(std::string_view text) {
                                                     std::string(worksheet_csv_header) + ")");
         return static_cast<std::size_t>(found - header.begin());
     };
-    const std::size_t kind = column("kind"), path = column("path"), value = column("value");
-    // A row may stop early when its last fields are empty (some programs write it so): a missing value is blank.
-    const std::size_t needed = std::max(kind, path) + 1;
-
-    FilledWorksheet sheet;
-    for (auto row = rows.begin() + 1; row != rows.end(); ++row) {
-        const std::string where = "line " + std::to_string(row->line);
-        if (row->fields.size() < needed)
-            throw formats::InputError(where, "has " + std::to_string(row->fields.size()) + " columns, the header " +
+    formats::for_each_csv_row(text, [&](const formats::CsvRow& row) {
+        if (header.empty()) {
+            header = row.fields;
+            kind = column("kind"), path = column("path"), value = column("value");
+            // A row may stop early when its last fields are empty (some programs write it so): a missing value is
+            // blank.
+            needed = std::max(kind, path) + 1;
+            return;
+        }
+        const std::string where = "line " + std::to_string(row.line);
+        if (row.fields.size() < needed)
+            throw formats::InputError(where, "has " + std::to_string(row.fields.size()) + " columns, the header " +
                                                  std::to_string(header.size()));
-        const std::string k = trimmed(row->fields[kind]);
-        if (k == "input") continue;
+        const std::string k = trimmed(row.fields[kind]);
+        if (k == "input") return;
         if (k != "cell") throw formats::InputError(where, "kind must be \"input\" or \"cell\", got \"" + k + "\"");
-        const std::string p = trimmed(row->fields[path]);
-        const std::string filled = value < row->fields.size() ? row->fields[value] : "";
+        const std::string p = trimmed(row.fields[path]);
+        const std::string filled = value < row.fields.size() ? row.fields[value] : "";
         sheet.cells.push_back({p, parse_json_path(p, where + ": path"), csv_value(filled), where});
-    }
+    });
+    if (header.empty()) throw formats::InputError("line 1", "no header: expected " + std::string(worksheet_csv_header));
     return sheet;
 }
 

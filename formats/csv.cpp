@@ -1,16 +1,37 @@
 #include "formats/csv.hpp"
 
 #include "formats/input_error.hpp"
+#include "formats/input_limits.hpp"
 #include "formats/json_text.hpp"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 
 namespace impulse::formats {
 
+namespace {
+
+// Whether the whole text is one number as a spreadsheet reads it (a sign, digits, a point, an exponent).
+bool is_number(std::string_view text) {
+    if (text.starts_with('+')) text.remove_prefix(1);
+    double value = 0.0;
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    return error == std::errc() && end == text.data() + text.size();
+}
+
+// A spreadsheet takes a cell starting with these as a formula (or, for a tab or CR, may strip them and then do).
+bool starts_like_formula(std::string_view text) {
+    return !text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos &&
+           !is_number(text);
+}
+
+}  // namespace
+
 std::string csv_field(std::string_view text) {
-    if (text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
-    std::string quoted = "\"";
+    const bool guarded = starts_like_formula(text);
+    if (!guarded && text.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(text);
+    std::string quoted = guarded ? "\"'" : "\"";
     for (char c : text) {
         if (c == '"') quoted += '"';
         quoted += c;
@@ -31,16 +52,21 @@ std::string csv_row(const std::vector<std::string>& fields) {
     return row + '\n';
 }
 
-std::vector<CsvRow> parse_csv(std::string_view text) {
+void for_each_csv_row(std::string_view text, const std::function<void(const CsvRow&)>& visit) {
     if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     formats::require_utf8(text);  // its cells end up in JSON reports, which hold only UTF-8
-    std::vector<CsvRow> rows;
     std::size_t line = 1, at = 0;
+    CsvRow row{line, {}};
     while (at < text.size()) {
-        CsvRow row{line, {}};
+        row.line = line;
+        row.fields.clear();
         std::string field;
         bool row_done = false;
         while (!row_done) {
+            if (row.fields.size() == max_csv_fields)
+                throw formats::InputError("line " + std::to_string(row.line),
+                                          "more than " + std::to_string(max_csv_fields) +
+                                              " fields in one row: not a worksheet (is the separator a comma?)");
             if (at < text.size() && text[at] == '"') {
                 // A quoted field: up to the closing quote, "" standing for one quote.
                 const std::size_t opened = line;
@@ -77,8 +103,13 @@ std::vector<CsvRow> parse_csv(std::string_view text) {
             row_done = true;
         }
         const bool empty = row.fields.size() == 1 && row.fields[0].empty();
-        if (!empty) rows.push_back(std::move(row));
+        if (!empty) visit(row);
     }
+}
+
+std::vector<CsvRow> parse_csv(std::string_view text) {
+    std::vector<CsvRow> rows;
+    for_each_csv_row(text, [&rows](const CsvRow& row) { rows.push_back(row); });
     return rows;
 }
 

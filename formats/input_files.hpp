@@ -1,6 +1,7 @@
 #pragma once
 // Reading the files a user names, and the parts of flags shared by several commands.
 
+#include "formats/input_limits.hpp"
 #include "record/trace.hpp"
 
 #include <cstddef>
@@ -9,12 +10,6 @@
 #include <string_view>
 
 namespace impulse::formats {
-
-// The most a command reads from one file, stated in docs/fuzzing.md. JSON documents (traces, scenes, worksheets)
-// may be as large as the largest trace --max-trace-mb lets us write; text a person writes (lessons, inspect
-// scripts, the progress file) is far smaller, so a wrong file named there is refused early.
-inline constexpr std::size_t max_input_bytes = 256u << 20;     // 256 MiB: larger than any trace we write
-inline constexpr std::size_t max_text_input_bytes = 4u << 20;  // 4 MiB: lessons, scripts, progress
 
 // The default --max-trace-mb: the estimate has come to at least 0.91 of the size written (tests/formats/
 // test_trace_file.cpp), so a trace stopped at 200 MB is at most about 220 MB and can still be read back under the

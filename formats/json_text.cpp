@@ -4,98 +4,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <set>
-#include <vector>
 
 namespace impulse::formats {
 
 namespace {
 
 using json = nlohmann::ordered_json;
-
-// Where the parser is inside the document, to name the path of a duplicate key.
-struct Level {
-    bool is_array;
-    std::size_t index = 0;       // next element's index, for arrays
-    std::string key;             // current key, for objects
-    std::set<std::string> keys;  // keys seen so far, for objects
-};
-
-// The path of the innermost open level, or with `pending`, of the value being read inside it.
-std::string path_of(const std::vector<Level>& levels, bool pending = false) {
-    std::string path;
-    for (std::size_t i = 0; i + (pending ? 0 : 1) < levels.size(); ++i) {
-        const Level& level = levels[i];
-        path = level.is_array ? json_path_index(path, level.index) : json_path_child(path, level.key);
-    }
-    return path;
-}
-
-// After a complete value inside an array, the next element gets the next index.
-void value_done(std::vector<Level>& levels) {
-    if (!levels.empty() && levels.back().is_array) ++levels.back().index;
-}
-
-}  // namespace
-
-json parse_json_text(std::string_view text) {
-    std::vector<Level> levels;
-    const json::parser_callback_t track = [&levels](int depth, json::parse_event_t event, json& parsed) {
-        switch (event) {
-            case json::parse_event_t::object_start:
-            case json::parse_event_t::array_start:
-                levels.push_back(Level{event == json::parse_event_t::array_start, 0, {}, {}});
-                if (depth >= max_json_depth) {
-                    levels.back().is_array = false;
-                    throw InputError(path_of(levels),
-                                     "nested too deeply (more than " + std::to_string(max_json_depth) + " levels)");
-                }
-                break;
-            case json::parse_event_t::key: {
-                Level& level = levels.back();
-                level.key = parsed.get<std::string>();
-                if (!level.keys.insert(level.key).second) {
-                    levels.push_back(Level{false, 0, {}, {}});  // so path_of includes the key itself
-                    throw InputError(path_of(levels), "key given twice in the same object");
-                }
-                break;
-            }
-            case json::parse_event_t::object_end:
-            case json::parse_event_t::array_end:
-                levels.pop_back();
-                value_done(levels);
-                break;
-            case json::parse_event_t::value:
-                value_done(levels);
-                break;
-        }
-        return true;
-    };
-    try {
-        return json::parse(text.begin(), text.end(), track);
-    } catch (const json::parse_error& e) {
-        // nlohmann's own "line 3, column 0" can point past a newline it read ahead; its byte offset is the
-        // offending character itself, so the position is counted from that.
-        const std::size_t at = std::min<std::size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size());
-        const std::size_t line = 1 + static_cast<std::size_t>(std::count(
-                                         text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
-        const std::size_t line_start = text.rfind('\n', at == 0 ? 0 : at - 1);
-        const std::size_t column = line_start == std::string_view::npos || at == 0 ? at + 1 : at - line_start;
-        const std::string what = e.what();
-        const std::size_t colon = what.find(": ", what.find("parse error"));
-        throw InputError("", "invalid JSON at line " + std::to_string(line) + ", column " + std::to_string(column) +
-                                 ": " + (colon == std::string::npos ? what : what.substr(colon + 2)));
-    } catch (const json::out_of_range& e) {
-        // A number too large for a double (1e999): nlohmann reports it as out_of_range, not as a parse error,
-        // while the value's key or index is the one the parser is at.
-        const std::string what = e.what();
-        const std::size_t bracket = what.find("] ");
-        throw InputError(path_of(levels, true),
-                         "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
-    }
-}
-
-namespace {
 
 bool is_scalar(const json& v) {
     return !v.is_object() && !v.is_array();

@@ -1,7 +1,10 @@
 #pragma once
 // JSON text in and out. Reading is strict where nlohmann is lenient: a key given twice in one object is an
-// error (the second would silently win), and so is nesting deeper than a fixed limit. Writing keeps short
+// error (the second would silently win), and so is nesting deeper than a fixed limit or a document larger in
+// memory than a file within the input limit can need. Writing keeps short
 // arrays (vectors, matrix rows) on one line so a person can read a trace.
+
+#include "formats/input_limits.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -12,10 +15,10 @@
 
 namespace impulse::formats {
 
-inline constexpr int max_json_depth = 64;
-
-// Throws InputError: "invalid JSON at line 3, column 7: ..." (no path), or "<path>: key given twice".
-nlohmann::ordered_json parse_json_text(std::string_view text);
+// Throws InputError: "invalid JSON at line 3, column 7: ..." (no path), "<path>: key given twice", or at the
+// value where it happens, nesting deeper than max_json_depth or a document that would take more memory than
+// `memory_limit` (formats/json_reader.cpp). Time and memory grow linearly with the text.
+nlohmann::ordered_json parse_json_text(std::string_view text, std::size_t memory_limit = max_json_memory_bytes);
 
 // Where `text` stops being UTF-8: the offset of the first byte that does not belong (none: it is all UTF-8).
 // For text read outside JSON (CSV, Markdown), which nlohmann would otherwise refuse only when writing it.

@@ -5,9 +5,32 @@
 #include "formats/physical_values.hpp"
 #include "record/word_table.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <string_view>
 
 namespace impulse::formats {
+
+namespace {
+
+// An update changes its contact through the body in its slot: that body must be the contact's, in that slot.
+void check_update_body(const json& records, const json& update, const std::string& where) {
+    const json& number = update["contact"];
+    const auto record =
+        std::find_if(records.begin(), records.end(), [&number](const json& c) { return c["contact"] == number; });
+    if (record == records.end()) return;  // not recorded (a contact filter): nothing to hold it to
+    const json& body = (*record)["bodies"][update["slot"].get<std::size_t>()];
+    if (body != update["body"])
+        throw InputError(where, "is " + update["body"].dump() + ", but contact " + number.dump() + " has " +
+                                    (body.is_null() ? std::string("the world") : "body " + body.dump()) + " in slot " +
+                                    update["slot"].dump());
+}
+
+std::string count_text(std::size_t n, const char* one, const char* many) {
+    return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
 
 void check_references(const json& frame, const std::string& path, std::size_t bodies) {
     const std::size_t contacts = frame["contact_count"].get<std::size_t>();
@@ -51,11 +74,83 @@ void check_references(const json& frame, const std::string& path, std::size_t bo
                 const std::string update = json_path_index(json_path_child(at, "updates"), u);
                 in_range(updates[u]["contact"], contacts, json_path_child(update, "contact"), "contact");
                 in_range(updates[u]["body"], bodies, json_path_child(update, "body"), "body");
+                check_update_body(records, updates[u], json_path_child(update, "body"));
             }
         }
     }
     if (phases[0]["phase"] == phases[1]["phase"])
         throw InputError(json_path_child(path, "phases"), "needs one position phase and one velocity phase");
+}
+
+void check_counts(const json& document) {
+    const json& recording = document["recording"];
+    const auto first = recording["first_frame"].get<long long>();
+    const bool open_ended = recording["last_frame"].is_null();
+    const long long last = open_ended ? LLONG_MAX : recording["last_frame"].get<long long>();
+    // A run stopped before its first recorded frame records none: its range ends just before it starts
+    // (end_recording_before writes first 1, last 0). Further back, the range contradicts itself.
+    if (last < first - 1)
+        throw InputError("recording.last_frame", "must be >= first_frame (" + std::to_string(first) +
+                                                     "), or first_frame - 1 for a recording of no frames, got " +
+                                                     std::to_string(last));
+    const json& filter = recording["contacts"];
+    const json& frames = document["frames"];
+    long long previous = -1;
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        const std::string path = json_path_index("frames", f);
+        const auto number = frames[f]["frame"].get<long long>();
+        if (number <= previous)
+            throw InputError(json_path_child(path, "frame"), "frame " + std::to_string(number) + " comes after frame " +
+                                                                 std::to_string(previous) +
+                                                                 ": frames are listed in increasing order, each once");
+        if (number < first || number > last)
+            throw InputError(json_path_child(path, "frame"),
+                             "frame " + std::to_string(number) + " is outside the recording's frames " +
+                                 std::to_string(first) + ".." + (open_ended ? "" : std::to_string(last)));
+        previous = number;
+
+        const json& contacts = frames[f]["contacts"];
+        const auto contact_count = frames[f]["contact_count"].get<std::size_t>();
+        long long previous_contact = -1;
+        for (std::size_t k = 0; k < contacts.size(); ++k) {
+            const std::string at = json_path_child(json_path_index(json_path_child(path, "contacts"), k), "contact");
+            const auto contact = contacts[k]["contact"].get<long long>();
+            if (contact <= previous_contact)
+                throw InputError(at, "contact " + std::to_string(contact) + " comes after contact " +
+                                         std::to_string(previous_contact) +
+                                         ": contacts are listed in increasing order, each once");
+            if (!filter.is_null() && std::find(filter.begin(), filter.end(), contacts[k]["contact"]) == filter.end())
+                throw InputError(at, "contact " + std::to_string(contact) +
+                                         " is not one of the contacts the recording keeps (recording.contacts)");
+            previous_contact = contact;
+        }
+        if (filter.is_null() && contacts.size() != contact_count)
+            throw InputError(json_path_child(path, "contacts"),
+                             "lists " + count_text(contacts.size(), "contact", "contacts") + ", but contact_count is " +
+                                 std::to_string(contact_count) + " and the recording keeps every contact");
+
+        const json& phases = frames[f]["phases"];
+        for (std::size_t p = 0; p < phases.size(); ++p) {
+            const std::string phase_path = json_path_index(json_path_child(path, "phases"), p);
+            const json& phase = phases[p];
+            const json& iterations = phase["iterations"];
+            const auto used = phase["iterations_used"].get<long long>();
+            if (used != static_cast<long long>(iterations.size()))
+                throw InputError(json_path_child(phase_path, "iterations_used"),
+                                 "is " + std::to_string(used) + ", but the phase lists " +
+                                     count_text(iterations.size(), "iteration", "iterations"));
+            if (!phase["iteration_limit"].is_null() && used > phase["iteration_limit"].get<long long>())
+                throw InputError(json_path_child(phase_path, "iterations_used"),
+                                 "is " + std::to_string(used) + ", more than its iteration_limit " +
+                                     phase["iteration_limit"].dump());
+            for (std::size_t i = 0; i < iterations.size(); ++i)
+                if (iterations[i]["iteration"].get<long long>() != static_cast<long long>(i))
+                    throw InputError(
+                        json_path_child(json_path_index(json_path_child(phase_path, "iterations"), i), "iteration"),
+                        "must be " + std::to_string(i) + " (iterations are numbered in order from 0), got " +
+                            iterations[i]["iteration"].dump());
+        }
+    }
 }
 
 void check_frame_values(const FrameRecord& f, const std::string& path) {

@@ -566,6 +566,7 @@ Trace read_trace(const json& given) {
     trace.recording.first_frame = r["first_frame"].get<int>();
     trace.recording.last_frame = r["last_frame"].is_null() ? INT_MAX : r["last_frame"].get<int>();
     if (!r["contacts"].is_null()) trace.recording.contacts = r["contacts"].get<std::vector<int>>();
+    check_counts(document);
     const json& frames = document["frames"];
     for (std::size_t i = 0; i < frames.size(); ++i) {
         check_references(frames[i], json_path_index("frames", i), trace.scene.bodies.size());

@@ -15,7 +15,53 @@ std::string eigenvalues_text(const Eigen::Vector3d& values) {
     return number_text(values[0]) + ", " + number_text(values[1]) + ", " + number_text(values[2]);
 }
 
+std::string range_words(double lowest, double highest) {
+    return number_text(lowest) + " to " + number_text(highest);
+}
+
 }  // namespace
+
+double require_size(double value, const std::string& path) {
+    if (!(value >= smallest_size && value <= largest_size))
+        throw InputError(path, "must be from " + range_words(smallest_size, largest_size) +
+                                   " (the engine multiplies sizes and masses together; outside this range the "
+                                   "products overflow or vanish), got " +
+                                   number_text(value));
+    return value;
+}
+
+double require_size_or_zero(double value, const std::string& path) {
+    if (value == 0.0) return value;
+    if (!(value >= smallest_size && value <= largest_size))
+        throw InputError(path, "must be 0 or from " + range_words(smallest_size, largest_size) +
+                                   " (the engine multiplies sizes and masses together; outside this range the "
+                                   "products overflow or vanish), got " +
+                                   number_text(value));
+    return value;
+}
+
+Vec3 require_lengths(const Vec3& v, const std::string& path) {
+    for (int i = 0; i < 3; ++i)
+        if (!(std::abs(v[i]) <= largest_length))
+            throw InputError(json_path_index(path, static_cast<std::size_t>(i)),
+                             "must be from -" + number_text(largest_length) + " to " + number_text(largest_length) +
+                                 " (the engine squares lengths and multiplies them with inertia; beyond this the "
+                                 "products overflow), got " +
+                                 number_text(v[i]));
+    return v;
+}
+
+void require_inertia_entries(const Mat3& m, const std::string& path) {
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            const double x = std::abs(m(r, c));
+            if (x != 0.0 && !(x >= smallest_inertia && x <= largest_inertia))
+                throw InputError(
+                    json_path_index(json_path_index(path, static_cast<std::size_t>(r)), static_cast<std::size_t>(c)),
+                    "must be 0 or from " + range_words(smallest_inertia, largest_inertia) +
+                        " in size (the inertia of a body of 1e-30 to 1e30 kg and m), got " + number_text(m(r, c)));
+        }
+}
 
 Quat unit_quaternion(const Quat& q, const std::string& path) {
     const double norm = q.norm();
@@ -26,6 +72,7 @@ Quat unit_quaternion(const Quat& q, const std::string& path) {
 }
 
 Vec3 nonzero_direction(const Vec3& n, const std::string& path) {
+    require_lengths(n, path);
     const double length = n.norm();
     if (!(length > 1e-12)) throw InputError(path, "must not be zero");
     return std::abs(length - 1.0) > unit_rounding ? Vec3(n / length) : n;

@@ -35,12 +35,12 @@ std::optional<Shape> read_shape(const json& body, const std::string& path) {
         throw InputError(json_path_child(shape_path, size_key), "missing (a " + type + " needs a " + size_key + ")");
     if (shape.contains(other_key))
         throw InputError(json_path_child(shape_path, other_key), "does not belong to a " + type);
-    if (type == "sphere") return Sphere{shape["radius"].get<double>()};
+    if (type == "sphere")
+        return Sphere{require_size(shape["radius"].get<double>(), json_path_child(shape_path, "radius"))};
     const Vec3 half_size = read_vec3(shape["half_size"]);
     for (int i = 0; i < 3; ++i)
-        if (!(half_size[i] > 0.0))
-            throw InputError(json_path_index(json_path_child(shape_path, "half_size"), static_cast<std::size_t>(i)),
-                             "must be > 0, got " + number_text(half_size[i]));
+        require_size(half_size[i],
+                     json_path_index(json_path_child(shape_path, "half_size"), static_cast<std::size_t>(i)));
     return Box{half_size};
 }
 
@@ -51,11 +51,17 @@ Mat3 read_inverse_inertia(const json& body, double inverse_mass, const std::opti
         throw InputError(json_path_child(path, "inverse_inertia"), "give inertia or inverse_inertia, not both");
     if (body.contains("inverse_inertia")) {
         const Mat3 m = read_mat3(body["inverse_inertia"]);
+        require_inertia_entries(m, json_path_child(path, "inverse_inertia"));
         check_inverse_inertia(m, json_path_child(path, "inverse_inertia"));
         return m;
     }
-    if (body.contains("inertia"))
-        return inverse_of_inertia(read_mat3(body["inertia"]), json_path_child(path, "inertia"));
+    if (body.contains("inertia")) {
+        const Mat3 inertia = read_mat3(body["inertia"]);
+        require_inertia_entries(inertia, json_path_child(path, "inertia"));
+        const Mat3 inverse = inverse_of_inertia(inertia, json_path_child(path, "inertia"));
+        require_inertia_entries(inverse, json_path_child(path, "inertia"));
+        return inverse;
+    }
     if (shape) return solid_inverse_inertia(*shape, inverse_mass);
     if (inverse_mass == 0.0) return Mat3::Zero();  // immovable: nothing turns it either
     throw InputError(path, "needs inertia, inverse_inertia or shape: a body with finite mass must resist rotation");
@@ -75,16 +81,18 @@ std::string read_material_name(const json& j, const std::map<std::string, Materi
 RigidBody read_body(const json& j, const std::optional<Shape>& shape, const std::string& path) {
     RigidBody body;
     const auto vec_or_zero = [&j](const char* key) { return j.contains(key) ? read_vec3(j[key]) : Vec3::Zero(); };
-    body.position = vec_or_zero("position");
+    body.position = require_lengths(vec_or_zero("position"), json_path_child(path, "position"));
     body.orientation = read_orientation(j, path);
     body.velocity = vec_or_zero("velocity");
     body.angular_velocity = vec_or_zero("angular_velocity");
     body.last_frame_acceleration = vec_or_zero("last_frame_acceleration");
     if (j.contains("mass") && j.contains("inverse_mass"))
         throw InputError(json_path_child(path, "inverse_mass"), "give mass or inverse_mass, not both");
-    body.inverse_mass = j.contains("inverse_mass") ? j["inverse_mass"].get<double>()
-                        : j.contains("mass")       ? 1.0 / j["mass"].get<double>()
-                                                   : 1.0;
+    body.inverse_mass =
+        j.contains("inverse_mass")
+            ? require_size_or_zero(j["inverse_mass"].get<double>(), json_path_child(path, "inverse_mass"))
+        : j.contains("mass") ? 1.0 / require_size(j["mass"].get<double>(), json_path_child(path, "mass"))
+                             : 1.0;
     body.inverse_inertia_body = read_inverse_inertia(j, body.inverse_mass, shape, path);
     return body;
 }
@@ -116,9 +124,13 @@ Contact read_contact(const json& j, const std::vector<std::string>& names, const
     if (c.bodies[0] == c.bodies[1])
         throw InputError(bodies_path, "a body cannot touch itself (both are \"" +
                                           names[static_cast<std::size_t>(c.bodies[0])] + "\")");
-    c.point = read_vec3(j["point"]);
+    c.point = require_lengths(read_vec3(j["point"]), json_path_child(path, "point"));
     c.normal = nonzero_direction(read_vec3(j["normal"]), json_path_child(path, "normal"));
     c.penetration = j.value("penetration", 0.0);
+    if (!(std::abs(c.penetration) <= largest_length))
+        throw InputError(json_path_child(path, "penetration"), "must be from -" + number_text(largest_length) + " to " +
+                                                                   number_text(largest_length) + ", got " +
+                                                                   number_text(c.penetration));
     c.restitution = j.value("restitution", 0.0);
     c.friction = j.value("friction", 0.0);
     return c;
@@ -142,6 +154,10 @@ std::optional<Ground> read_ground(const json& document, const std::map<std::stri
     Ground ground;
     if (j.contains("normal")) ground.plane.normal = nonzero_direction(read_vec3(j["normal"]), "ground.normal");
     ground.plane.offset = j.value("offset", 0.0);
+    if (!(std::abs(ground.plane.offset) <= largest_length))
+        throw InputError("ground.offset", "must be from -" + number_text(largest_length) + " to " +
+                                              number_text(largest_length) + ", got " +
+                                              number_text(ground.plane.offset));
     ground.material = read_material_name(j, materials, "ground");
     return ground;
 }

@@ -7,6 +7,8 @@
 #include "formats/input_limits.hpp"
 #include "formats/json_text.hpp"
 #include "formats/printable_text.hpp"
+#include "formats/scene_file.hpp"
+#include "formats/settings_json.hpp"
 #include "formats/trace_json.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
@@ -185,4 +187,52 @@ TEST_CASE("a trace whose update names another body than its contact's slot holds
     REQUIRE(update != nullptr);
     (*update)["slot"] = 1;  // the ruler's one contact has the world in slot 1
     CHECK(refusal(t).find("but contact 0 has the world in slot 1") != std::string::npos);
+}
+
+namespace {
+
+std::string scene_refusal(const std::string& text) {
+    try {
+        formats::read_scene_text(text);
+    } catch (const formats::InputError& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+std::string sphere_scene(const std::string& body_fields, const std::string& rest = "") {
+    return R"({"bodies": [{"name": "ball", "shape": {"type": "sphere", "radius": 0.5}, )" + body_fields + "}]" + rest +
+           "}";
+}
+
+}  // namespace
+
+TEST_CASE("masses, sizes, normals and lengths whose products overflow or vanish are refused with their range") {
+    // A 1e-320 kg mass (m⁻¹ = inf), a 1e-200 m radius (r² = 0) and a [1e308, 1e308, 0] normal (its length inf)
+    // were accepted, and the runs then wrote traces validate refuses or lost a contact.
+    CHECK(scene_refusal(sphere_scene(R"("mass": 1e-320)")) ==
+          "bodies[0].mass: must be from 1e-30 to 1e+30 (the engine multiplies sizes and masses together; outside this "
+          "range the products overflow or vanish), got 1e-320");
+    CHECK(scene_refusal(R"({"bodies": [{"shape": {"type": "sphere", "radius": 1e-200}}]})")
+              .starts_with("bodies[0].shape.radius: must be from 1e-30 to 1e+30"));
+    CHECK(scene_refusal(R"({"bodies": [{"shape": {"type": "box", "half_size": [1, 1e31, 1]}}]})")
+              .starts_with("bodies[0].shape.half_size[1]: must be from 1e-30 to 1e+30"));
+    CHECK(scene_refusal(sphere_scene(R"("inverse_mass": 1e-40)")).starts_with("bodies[0].inverse_mass: must be 0 or "));
+    CHECK(scene_refusal(sphere_scene(R"("inverse_mass": 0)")) == "accepted");
+    CHECK(scene_refusal(sphere_scene(R"("position": [0, 1e200, 0])"))
+              .starts_with("bodies[0].position[1]: must be from "));
+    CHECK(scene_refusal(R"({"bodies": [{"inertia": [[1e-100, 0, 0], [0, 1, 0], [0, 0, 1]]}]})")
+              .starts_with("bodies[0].inertia[0][0]: must be 0 or from 1e-90 to 1e+90 in size"));
+    CHECK(scene_refusal(sphere_scene(R"("mass": 1)", R"(, "contacts": [{"bodies": ["ball", null], "point": [0, 0, 0],
+        "normal": [1e308, 1e308, 0]}])"))
+              .starts_with("contacts[0].normal[0]: must be from -1e+30 to 1e+30"));
+}
+
+TEST_CASE("a frame duration --dt refuses is refused in a file and by --set too") {
+    // 5e-324 s was accepted in a file although --dt takes 1e-6 to 10.
+    CHECK(scene_refusal(sphere_scene(R"("mass": 1)", R"(, "settings": {"duration": 5e-324})")) ==
+          "settings.duration: must be >= 1e-06, got 5e-324");
+    Scene scene = formats::read_scene_text(sphere_scene(R"("mass": 1)"));
+    CHECK_THROWS_WITH_AS(formats::apply_setting(scene, "duration=5e-324", "--set"),
+                         "--set duration: must be >= 1e-06, got 5e-324", formats::InputError);
 }

@@ -1,7 +1,9 @@
 #include "cli/data_folder.hpp"
 
+#include "course/lesson.hpp"
 #include "formats/input_error.hpp"
 
+#include <charconv>
 #include <cstdlib>
 #include <string>
 #include <system_error>
@@ -61,6 +63,20 @@ fs::path shipped_lessons_folder() {
 
 fs::path shipped_scenes_folder() {
     return resolved(data_folder() / "scenes");
+}
+
+std::string lesson_or_file(const std::string& argument, std::string_view where) {
+    int number = 0;
+    const auto [end, error] = std::from_chars(argument.data(), argument.data() + argument.size(), number);
+    std::error_code exists;
+    if (error != std::errc() || end != argument.data() + argument.size() || number < 1 || number > 99 ||
+        fs::exists(argument, exists))
+        return argument;
+    const fs::path folder = shipped_lessons_folder();
+    for (const fs::path& file : course::lesson_files(folder))
+        if (std::atoi(file.filename().string().c_str()) == number) return file.string();
+    throw formats::InputError(std::string(where), "there is no lesson " + argument + " in " + folder.string() +
+                                                      " (impulse-lab lesson lists them)");
 }
 
 }  // namespace impulse::cli

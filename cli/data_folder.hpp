@@ -4,6 +4,8 @@
 // directory, and nothing is compiled in as a path of the checkout it was built from.
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 namespace impulse::cli {
 
@@ -20,5 +22,10 @@ std::filesystem::path data_folder();
 // data_folder()'s lessons/ and scenes/, with links resolved: what the user is shown is where the files are.
 std::filesystem::path shipped_lessons_folder();
 std::filesystem::path shipped_scenes_folder();
+
+// What a command that takes a lesson file (`worksheet`, `diff`'s reference) reads for `argument`: a whole number
+// from 1 to 99 that names no file is the shipped lesson of that number (`worksheet 7`), anything else the file
+// itself. Throws formats::InputError(`where`, ...) for a number no lesson has.
+std::string lesson_or_file(const std::string& argument, std::string_view where);
 
 }  // namespace impulse::cli

@@ -4,6 +4,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
+#include "cli/data_folder.hpp"
 #include "formats/input_files.hpp"
 #include "cli/outputs.hpp"
 #include "course/class_report.hpp"
@@ -44,13 +45,14 @@ bool is_csv_text(const std::string& file, const std::string& text) {
     return first == std::string::npos || text[first] != '{';
 }
 
-// What the class is graded against: the reference run, its trace document, and — when the reference is a lesson
-// or a worksheet — the cells the worksheet was handed out with.
+// What the class is graded against: the reference run (none for an answer key), its trace document, and — when
+// the reference is a lesson or a worksheet — the cells the worksheet was handed out with.
 struct Reference {
-    model::Session session;
+    std::optional<model::Session> session;
     formats::json document;
     std::optional<std::vector<std::string>> asked;
-    std::string what;  // for the reports' headers
+    std::string what;                            // for the reports' headers
+    std::optional<course::FilledWorksheet> key;  // an answer key (a filled CSV sheet): its own words
 };
 
 std::vector<std::string> cell_paths(const course::Worksheet& sheet) {
@@ -60,21 +62,42 @@ std::vector<std::string> cell_paths(const course::Worksheet& sheet) {
     return paths;
 }
 
-// The reference: a lesson run as `worksheet` runs it (its worksheet is what was handed out), a worksheet re-run
-// from what it was made from, a case or scene run as `inspect` runs it, or a trace.
-Reference open_reference(const DiffOptions& o) {
-    if (lowered_extension(o.reference) == ".md") {
+// An answer key: a CSV worksheet filled in, given as the reference. Its cells are what was handed out and its
+// values the expected ones; there is nothing to re-run.
+Reference open_answer_key(const DiffOptions& o, const std::string& file, const std::string& text) {
+    if (const auto flag = o.open.first_given())
+        throw formats::InputError(std::string(*flag),
+                                  "a CSV reference is an answer key: its values are the expected ones, there is "
+                                  "nothing to run");
+    try {
+        course::FilledWorksheet key = course::read_worksheet_csv(text);
+        if (key.cells.empty()) throw formats::InputError("", "has no cells to grade against");
+        formats::json document = course::answer_key_document(key);
+        std::vector<std::string> asked;
+        for (const course::FilledCell& cell : key.cells) asked.push_back(cell.path);
+        return {std::nullopt, std::move(document), std::move(asked), "answer key", std::move(key)};
+    } catch (const formats::InputError& e) {
+        throw formats::FileError{formats::input_name(file), e.where(), e.problem()};
+    }
+}
+
+// The reference: a lesson run as `worksheet` runs it (its worksheet is what was handed out; a lesson may be named
+// by its number), a worksheet re-run from what it was made from, an answer key (a filled CSV sheet), a case or
+// scene run as `inspect` runs it, or a trace.
+Reference open_reference(const DiffOptions& o, const std::string& file) {
+    if (lowered_extension(file) == ".md") {
         if (const auto flag = o.open.first_given())
             throw formats::InputError(std::string(*flag),
                                       "a lesson runs with its own settings; give its scene file to run it differently");
-        course::PreparedLesson lesson = course::prepare_lesson(course::read_lesson(o.reference));
+        course::PreparedLesson lesson = course::prepare_lesson(course::read_lesson(file));
         formats::json document = formats::trace_json(lesson.session.trace());
         const std::vector<model::Cursor> places = course::places_with_cells(lesson.session, lesson.places, &document);
         std::vector<std::string> asked = cell_paths(course::make_worksheet(lesson.session, places, &document));
         const std::string what = "lesson " + std::to_string(lesson.lesson.number) + " · " + lesson.lesson.title;
-        return {std::move(lesson.session), std::move(document), std::move(asked), what};
+        return {std::move(lesson.session), std::move(document), std::move(asked), what, std::nullopt};
     }
-    const std::string text = formats::read_input_file(o.reference);
+    const std::string text = formats::read_input_file(file);
+    if (is_csv_text(file, text)) return open_answer_key(o, file, text);
     try {
         const formats::json document = formats::parse_json_text(text);
         if (course::is_worksheet(document)) {
@@ -85,21 +108,21 @@ Reference open_reference(const DiffOptions& o) {
             std::vector<std::string> asked;
             for (const course::FilledCell& cell : course::read_worksheet_json(document).cells)
                 asked.push_back(cell.path);
-            model::Session session = model::Session::from_trace(course::rerun_reference(document),
-                                                                model::SourceKind::trace_file, o.reference);
+            model::Session session =
+                model::Session::from_trace(course::rerun_reference(document), model::SourceKind::trace_file, file);
             formats::json trace = formats::trace_json(session.trace());
-            return {std::move(session), std::move(trace), std::move(asked), "worksheet"};
+            return {std::move(session), std::move(trace), std::move(asked), "worksheet", std::nullopt};
         }
     } catch (const formats::InputError& e) {
         if (e.where().starts_with("--")) throw;
-        throw formats::FileError{formats::input_name(o.reference), e.where(), e.problem()};
+        throw formats::FileError{formats::input_name(file), e.where(), e.problem()};
     }
-    model::Session session = model::Session::open_text(text, o.reference, o.open);
+    model::Session session = model::Session::open_text(text, file, o.open);
     formats::json trace = formats::trace_json(session.trace());
     const std::string what = session.kind() == model::SourceKind::case_file    ? "case"
                              : session.kind() == model::SourceKind::scene_file ? "scene"
                                                                                : "trace";
-    return {std::move(session), std::move(trace), std::nullopt, what};
+    return {std::move(session), std::move(trace), std::nullopt, what, std::nullopt};
 }
 
 course::DiffReport diff_file(const Reference& reference, const std::string& file, const course::Tolerance& tolerance,
@@ -117,6 +140,10 @@ course::DiffReport diff_file(const Reference& reference, const std::string& file
                     course::diff_worksheet(reference.document, course::read_worksheet_json(document), tolerance, asked);
             } else if (document.is_object() && document.contains("format") &&
                        document["format"] == formats::trace_format_name) {
+                if (reference.key)
+                    throw formats::InputError("",
+                                              "a trace is compared with a trace, case, scene, lesson or "
+                                              "worksheet it ran from, not with an answer key");
                 // A format-1 trace is compared in today's words: its renamed keys moved first.
                 if (formats::upgrade_trace_document(document)) err << formats::format1_note(file) << '\n';
                 formats::read_trace(document);  // its schema, and that every index names a body or contact
@@ -130,7 +157,10 @@ course::DiffReport diff_file(const Reference& reference, const std::string& file
                                               (has_format ? ", got " + document["format"].dump() : ""));
             }
         }
-        course::word_findings(report, reference.session.trace(), reference.document);
+        if (reference.key)
+            course::word_findings_by_key(report, *reference.key);
+        else
+            course::word_findings(report, reference.session->trace(), reference.document);
         return report;
     } catch (const formats::InputError& e) {
         throw formats::FileError{formats::input_name(file), e.where(), e.problem()};
@@ -209,8 +239,9 @@ void write_class_report(const fs::path& folder, const std::vector<course::ClassR
     for (const course::ClassRow& row : rows) names.push_back(row.file);
     const std::vector<std::string> pages = course::feedback_names(names);
 
-    std::vector<std::pair<fs::path, std::string>> texts{{folder / "summary.csv", course::summary_csv(rows)},
-                                                        {folder / "cells.csv", course::cells_csv(rows)}};
+    std::vector<std::pair<fs::path, std::string>> texts{
+        {folder / "summary.csv", course::summary_csv(rows)},
+        {folder / "cells.csv", course::cells_csv(rows, subject.tolerance)}};
     for (std::size_t i = 0; i < rows.size(); ++i)
         texts.emplace_back(folder / "feedback" / pages[i], course::feedback_markdown(rows[i], subject));
 
@@ -245,7 +276,8 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
             formats::check_writable(*options.out, "--out");
     }
 
-    const Reference reference = open_reference(options);
+    const std::string reference_file = lesson_or_file(options.reference, "diff");
+    const Reference reference = open_reference(options, reference_file);
     if (!whole_class) {
         // One file: its every mismatch; a file that cannot be read is bad input.
         const course::DiffReport r = diff_file(reference, files.front().file, tolerance, err);

@@ -3,6 +3,7 @@
 
 #include "cli/cli.hpp"
 #include "cli/commands.hpp"
+#include "cli/data_folder.hpp"
 #include "formats/input_files.hpp"
 #include "course/worksheet.hpp"
 #include "cli/outputs.hpp"
@@ -41,17 +42,19 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
 
     // A lesson (NN-name.md) gives its run and, unless --steps says otherwise, its steps' places: those that
     // compute something to fill in (a step that only shows a choice has no cells).
+    // A lesson may be named by its number: `worksheet 7`.
+    const std::string file = lesson_or_file(options.file, "worksheet");
     std::optional<course::PreparedLesson> lesson;
-    if (ends_with_case_blind(options.file, ".md")) {
+    if (ends_with_case_blind(file, ".md")) {
         if (options.open.preset || !options.open.settings.empty() || !options.open.record.empty() ||
             options.open.frames || options.open.max_trace_mb)
             throw formats::InputError("worksheet",
                                       "a lesson runs with its own settings; give its scene file to change "
                                       "them");
-        lesson.emplace(course::prepare_lesson(course::read_lesson(options.file)));
+        lesson.emplace(course::prepare_lesson(course::read_lesson(file)));
     }
-    const model::Session session = lesson ? lesson->session : model::Session::open(options.file, options.open);
-    if (session.trace().version != trace_format_version) err << formats::format1_note(options.file) << '\n';
+    const model::Session session = lesson ? lesson->session : model::Session::open(file, options.open);
+    if (session.trace().version != trace_format_version) err << formats::format1_note(file) << '\n';
     if (const auto note = session.recording_note())
         err << "impulse-lab: note: " << *note << "; raise --max-trace-mb or narrow --record to see later frames\n";
     // A worksheet's numbers must be re-made exactly by diff; a run that broke is not coursework.
@@ -70,23 +73,25 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
     else
         places = course::default_places(trace);
     if (places.empty())
-        throw formats::FileError{formats::input_name(options.file), "",
+        throw formats::FileError{formats::input_name(file), "",
                                  "the recording has no contact, so there is nothing to fill in"};
     const course::Worksheet sheet = course::make_worksheet(session, places, &document);
 
     outputs.write(
         {{"--out", csv ? course::worksheet_csv(sheet) : formats::format_json(course::worksheet_json(sheet))}});
-    std::size_t cells = 0, numbers = 0, inputs = 0;
-    for (const course::WorksheetStep& step : sheet.steps) {
-        cells += step.cells.size();
-        inputs += step.inputs.size();
-        for (const course::WorksheetEntry& cell : step.cells)
-            course::for_each_scalar(cell.value, "",
-                                    [&numbers](const std::string&, const formats::json&) { ++numbers; });
-    }
+    // The counts as the sheet shows them: a CSV sheet has a row per number and each input once, a JSON sheet an
+    // entry per cell and per input of each step.
+    const course::WorksheetCounts counts = csv ? course::csv_counts(sheet) : course::json_counts(sheet);
+    const auto plural = [](std::size_t n, const char* one, const char* many) {
+        return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
     report << "worksheet written to " << (to_standard_output ? "standard output" : options.out) << ": "
-           << sheet.steps.size() << (sheet.steps.size() == 1 ? " step, " : " steps, ") << cells << " cells (" << numbers
-           << " values to fill in), " << inputs << " inputs given\n";
+           << plural(sheet.steps.size(), "step", "steps") << ", "
+           << (csv ? plural(counts.numbers, "row", "rows") + " to fill in, " +
+                         plural(counts.inputs, "input row", "input rows")
+                   : plural(counts.cells, "cell", "cells") + " (" + plural(counts.numbers, "number", "numbers") +
+                         " to fill in), " + plural(counts.inputs, "input", "inputs") + " given over its steps")
+           << '\n';
     return 0;
 }
 

@@ -6,6 +6,7 @@
 #include "explain/text_table.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
+#include "formats/printable_text.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -21,9 +22,11 @@ std::string count_text(std::size_t n) {
 }
 
 std::string tolerance_words(const Tolerance& t) {
+    char percent[32];
+    std::snprintf(percent, sizeof percent, "%.6g", t.rtol * 100);  // 1e-07, not 1.0000000000000001e-07
     return "|yours − expected| ≤ " + formats::number_text(t.atol) + " + " + formats::number_text(t.rtol) +
-           "·|expected| (" + formats::number_text(t.rtol * 100) + " % of the expected value, or " +
-           formats::number_text(t.atol) + " when it is 0)";
+           "·|expected| (" + percent + " % of the expected value, or " + formats::number_text(t.atol) +
+           " when it is 0)";
 }
 
 // "10.4 % off", or for an expected 0 "off by 0.002 N·s".
@@ -46,7 +49,28 @@ std::string slip_of(const formats::json& expected, const formats::json& found) {
     return course::likely_slip(expected.get<double>(), found.get<double>());
 }
 
-// Markdown table cells may not hold a '|' (|v_s| in a formula) or a line break.
+// Text on a feedback page as text, whatever it holds: a student's answer or a file's name may hold Markdown
+// (`**`, `[link](…)`, a `|` that ends a table cell) or HTML (<script>, <img onerror=…>) that a page viewer would
+// render or run. HTML's three characters become entities, Markdown's punctuation is escaped with a backslash, and
+// controls and line breaks are shown as escapes (formats::one_line), so the text stays on its line of the table.
+std::string md_text(const std::string& text) {
+    std::string out;
+    for (const char c : formats::one_line(text)) {
+        if (c == '&')
+            out += "&amp;";
+        else if (c == '<')
+            out += "&lt;";
+        else if (c == '>')
+            out += "&gt;";
+        else if (std::string_view("\\`*_{}[]()#+!|~").find(c) != std::string_view::npos)
+            out += std::string("\\") + c;
+        else
+            out += c;
+    }
+    return out;
+}
+
+// Markdown table cells of our own words may not hold a '|' (|v_s| in a formula) or a line break.
 std::string md_cell(const std::string& text) {
     std::string out;
     for (const char c : text) {
@@ -60,14 +84,11 @@ std::string md_cell(const std::string& text) {
     return out;
 }
 
+// Our own words (a quantity, a place) in code style; anything a backtick could end is shown as text instead.
 std::string code(const std::string& text) {
-    return text.empty() ? "" : "`" + text + "`";
-}
-
-const Finding* finding_at(const DiffReport& r, const std::string& path) {
-    for (const Finding& f : r.findings)
-        if (f.path == path) return &f;
-    return nullptr;
+    if (text.empty()) return "";
+    if (text.find_first_of("`\n\r") != std::string::npos) return md_text(text);
+    return "`" + text + "`";
 }
 
 std::string first_words(const DiffReport& r) {
@@ -77,21 +98,20 @@ std::string first_words(const DiffReport& r) {
 
 // The lines of the summary table for one file.
 std::vector<std::string> summary_cells(const ClassRow& row) {
-    if (!row.report) return {row.file, "", "", "", "", "", "unreadable: " + row.error};
+    if (!row.report)
+        return {formats::one_line(row.file), "", "", "", "", "", "unreadable: " + formats::one_line(row.error)};
     const Score s = score_of(*row.report);
-    return {row.file,
-            s.percent ? percent_text(*s.percent) : "—",
-            count_text(s.cells),
-            count_text(s.right),
-            count_text(s.wrong),
-            count_text(s.blank),
+    return {formats::one_line(row.file), s.percent ? percent_text(*s.percent) : "—",
+            count_text(s.cells),         count_text(s.right),
+            count_text(s.wrong),         count_text(s.blank),
             first_words(*row.report)};
 }
 
 }  // namespace
 
 std::string summary_text(const std::vector<ClassRow>& rows, const ClassSubject& subject, std::size_t per_file) {
-    std::string text = "reference " + subject.reference + (subject.what.empty() ? "" : " (" + subject.what + ")") +
+    std::string text = "reference " + formats::one_line(subject.reference) +
+                       (subject.what.empty() ? "" : " (" + formats::one_line(subject.what) + ")") +
                        "\nnumbers match when |found − expected| ≤ " + formats::number_text(subject.tolerance.atol) +
                        " + " + formats::number_text(subject.tolerance.rtol) + "·|expected|\n\n";
     std::vector<std::vector<std::string>> table{
@@ -109,12 +129,13 @@ std::string summary_text(const std::vector<ClassRow>& rows, const ClassSubject& 
     for (const ClassRow& row : rows) {
         if (!row.report || row.report->findings.empty()) continue;
         const std::vector<Finding>& findings = row.report->findings;
-        text += "\n" + row.file + ": " + count_text(findings.size()) +
+        text += "\n" + formats::one_line(row.file) + ": " + count_text(findings.size()) +
                 (findings.size() == 1 ? " finding" : " findings") + "\n";
         text += findings_table(findings, per_file, subject.tolerance);
         if (findings.size() > per_file)
-            text += "… and " + count_text(findings.size() - per_file) + " more (diff " + subject.reference + " " +
-                    row.file + " shows them all; --out DIR writes every file's)\n";
+            text += "… and " + count_text(findings.size() - per_file) + " more (diff " +
+                    formats::one_line(subject.reference) + " " + formats::one_line(row.file) +
+                    " shows them all; --out DIR writes every file's)\n";
     }
     text += "\n" + count_text(rows.size()) + (rows.size() == 1 ? " file: " : " files: ") + count_text(perfect) +
             " all match, " + count_text(imperfect) + " with mismatches or blanks, " + count_text(unreadable) +
@@ -178,10 +199,18 @@ std::string summary_csv(const std::vector<ClassRow>& rows) {
     return text;
 }
 
-std::string cells_csv(const std::vector<ClassRow>& rows) {
+std::string cells_csv(const std::vector<ClassRow>& rows, const Tolerance& tolerance) {
     std::string text = "file,place,quantity,unit,expected,found,relative_error,verdict,first_divergence,path\n";
     const auto value = [](const formats::json& v) { return v.is_structured() ? v.dump() : scalar_text(v); };
-    const auto error = [](const std::optional<double>& e) { return e ? formats::number_text(*e) : std::string(); };
+    const auto expected = [&tolerance, &value](const formats::json& v) {
+        return v.is_number_float() ? formats::number_text(rounded_for_hand_work(v.get<double>(), tolerance)) : value(v);
+    };
+    const auto error = [](const std::optional<double>& e) {
+        if (!e) return std::string();
+        char digits[32];
+        std::snprintf(digits, sizeof digits, "%.3g", *e);
+        return std::string(digits);
+    };
     for (const ClassRow& row : rows) {
         if (!row.report) {
             text += formats::csv_row({row.file, "", "", "", "", "", "", "unreadable", "", row.error});
@@ -191,19 +220,20 @@ std::string cells_csv(const std::vector<ClassRow>& rows) {
         const Finding* first = r.first_divergence();
         if (r.other_kind == "worksheet") {
             for (const GradedNumber& g : r.graded)
-                text += formats::csv_row({row.file, g.place, g.quantity, g.unit, value(g.expected), value(g.found),
+                text += formats::csv_row({row.file, g.place, g.quantity, g.unit, expected(g.expected), value(g.found),
                                           error(g.relative_error), std::string(verdict_name(g.verdict)),
                                           first && first->path == g.path ? "true" : "false", g.path});
             // What the sheet was made with, where it differs: not the student's numbers, but why they may differ.
             for (const Finding& f : r.findings)
                 if (f.kind == FindingKind::setting || f.kind == FindingKind::scene)
-                    text += formats::csv_row({row.file, f.place, f.quantity, f.unit, value(f.expected), value(f.found),
-                                              error(f.relative_error), std::string(finding_kind_name(f.kind)),
-                                              f.first_divergence ? "true" : "false", f.path});
+                    text +=
+                        formats::csv_row({row.file, f.place, f.quantity, f.unit, expected(f.expected), value(f.found),
+                                          error(f.relative_error), std::string(finding_kind_name(f.kind)),
+                                          f.first_divergence ? "true" : "false", f.path});
             continue;
         }
         for (const Finding& f : r.findings)
-            text += formats::csv_row({row.file, f.place, f.quantity, f.unit, value(f.expected), value(f.found),
+            text += formats::csv_row({row.file, f.place, f.quantity, f.unit, expected(f.expected), value(f.found),
                                       error(f.relative_error), std::string(finding_kind_name(f.kind)),
                                       f.first_divergence ? "true" : "false", f.path});
     }
@@ -212,11 +242,12 @@ std::string cells_csv(const std::vector<ClassRow>& rows) {
 
 std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) {
     const std::string name = std::filesystem::path(row.file).filename().string();
-    std::string md = "# Feedback on " + name + "\n\n";
-    const std::string against =
-        subject.what.empty() ? code(subject.reference) : subject.what + " (" + code(subject.reference) + ")";
+    std::string md = "# Feedback on " + md_text(name) + "\n\n";
+    // The reference by its file's name alone: where the teacher keeps it is not the student's business.
+    const std::string reference = md_text(std::filesystem::path(subject.reference).filename().string());
+    const std::string against = subject.what.empty() ? reference : md_text(subject.what) + " (" + reference + ")";
     if (!row.report) {
-        md += "This file could not be graded:\n\n> " + row.error +
+        md += "This file could not be graded:\n\n> " + md_text(row.error) +
               "\n\nHand it in again as the worksheet was given out: the JSON file, or the CSV file with its header "
               "row (kind,path,step,quantity,value,…) and commas between the columns. A spreadsheet keeps that when "
               "you save as \"CSV (comma-separated)\".\n";
@@ -238,15 +269,15 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
         if (first->kind == FindingKind::setting || first->kind == FindingKind::scene) {
             md += "Your " + std::string(sheet ? "worksheet was made" : "trace ran") + " with a different " +
                   (first->kind == FindingKind::setting ? "setting" : "scene") + ": " + code(first->quantity) + " is " +
-                  shown_value(first->found, subject.tolerance) + " where the reference has " +
-                  shown_value(first->expected, subject.tolerance) +
+                  md_text(shown_value(first->found, subject.tolerance)) + " where the reference has " +
+                  md_text(shown_value(first->expected, subject.tolerance)) +
                   ". Every number computed after it may differ for that reason alone: get the worksheet again.\n\n";
         } else {
             md += "**" + (first->place.empty() ? std::string("the worksheet") : first->place) + "**, " +
                   code(first->quantity) + (first->unit.empty() ? "" : " (" + first->unit + ")") + ": ";
             if (first->kind == FindingKind::value)
-                md += "the engine has " + shown_value(first->expected, subject.tolerance) + ", you have " +
-                      shown_value(first->found, subject.tolerance) +
+                md += "the engine has " + md_text(shown_value(first->expected, subject.tolerance)) + ", you have " +
+                      md_text(shown_value(first->found, subject.tolerance)) +
                       (first->relative_error ? " (" + how_far(first->relative_error, first->expected, first->unit) + ")"
                                              : "") +
                       ".";
@@ -256,10 +287,18 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
                 md += std::string(finding_kind_name(first->kind)) + ".";
             if (!first->formula.empty())
                 md += " Its formula: " + first->formula + (first->equation.empty() ? "" : " " + first->equation) + ".";
-            md +=
-                "\n\nThe wrong numbers after it often follow from this one: put it right first, then work the steps "
-                "after it again.\n\n";
+            md += later_divergence(r, *first)
+                      ? "\n\nThe wrong numbers after it often follow from this one: put it right first, then work the "
+                        "steps after it again.\n\n"
+                      : "\n\n";
         }
+    } else if (s.wrong > 0) {
+        md += "Every number you wrote for a cell is right the first time, but " + count_text(s.wrong) +
+              (s.wrong == 1 ? " number is" : " numbers are") +
+              " given again or not asked for, and count as wrong: answer each cell of the worksheet once" +
+              (s.blank > 0 ? "; " + count_text(s.blank) + " left blank" : "") + ".\n\n";
+    } else if (sheet && empty_sheet(r)) {
+        md += "The file gives no cells: nothing of the worksheet is answered.\n\n";
     } else if (s.blank > 0) {
         md += "Every number you wrote is right; " + count_text(s.blank) + " left blank.\n\n";
     } else {
@@ -279,11 +318,22 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
     std::string made;
     for (const Finding& f : r.findings)
         if (f.kind == FindingKind::setting || f.kind == FindingKind::scene)
-            made += "- " + code(f.place + "." + f.quantity) + ": yours " + shown_value(f.found, subject.tolerance) +
-                    ", the reference " + shown_value(f.expected, subject.tolerance) + "\n";
+            made += "- " + code(f.place + "." + f.quantity) + ": yours " +
+                    md_text(shown_value(f.found, subject.tolerance)) + ", the reference " +
+                    md_text(shown_value(f.expected, subject.tolerance)) + "\n";
     if (!made.empty()) md += "## The worksheet you filled in\n\nIt differs from the one handed out:\n\n" + made + "\n";
 
     md += "## Your answers, step by step\n";
+    // Each wrong or blank number's finding: the findings of one path in the order its numbers were graded.
+    std::map<std::string, std::vector<const Finding*>> findings_of;
+    for (const Finding& f : r.findings) findings_of[f.path].push_back(&f);
+    std::map<std::string, std::size_t> used;
+    const auto next_finding = [&](const std::string& path) -> const Finding* {
+        const auto found = findings_of.find(path);
+        if (found == findings_of.end()) return nullptr;
+        std::size_t& n = used[path];
+        return n < found->second.size() ? found->second[n++] : found->second.back();
+    };
     std::string place = "\x01";
     std::string slips_named;  // in this step's table: a likely slip is named once, at its first number
     for (const GradedNumber& g : r.graded) {
@@ -293,11 +343,15 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
             md += "\n### " + (place.empty() ? std::string("elsewhere") : place) +
                   "\n\n|  | quantity | unit | expected | yours | verdict |\n|---|---|---|---|---|---|\n";
         }
-        const Finding* f = g.verdict == Verdict::right ? nullptr : finding_at(r, g.path);
+        const Finding* f = g.verdict == Verdict::right ? nullptr : next_finding(g.path);
         std::string verdict(verdict_name(g.verdict));
         if (g.verdict == Verdict::wrong) {
-            if (g.expected.is_null())
+            if (f && f->kind == FindingKind::duplicate)
+                verdict += ": given again (only its first answer is graded)";
+            else if (f && f->kind == FindingKind::not_asked)
                 verdict += ": this worksheet does not ask for it";
+            else if (g.expected.is_null())
+                verdict += ": the reference has no such value";
             else if (const std::string far = how_far(g.relative_error, g.expected, g.unit); !far.empty())
                 verdict += ", " + far;
             if (const std::string slip = slip_of(g.expected, g.found);
@@ -311,7 +365,7 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
         const bool marked = f && f->first_divergence;
         md += "| " + std::string(marked ? "▶" : "") + " | " + md_cell(code(g.quantity)) + " | " + md_cell(g.unit) +
               " | " + md_cell(shown_value(g.expected, subject.tolerance)) + " | " +
-              md_cell(g.found.is_null() ? "" : scalar_text(g.found)) + " | " +
+              (g.found.is_null() ? "" : md_text(scalar_text(g.found))) + " | " +
               md_cell(marked ? "**" + verdict + "**" : verdict) + " |\n";
     }
     return md;

@@ -33,11 +33,13 @@ std::string summary_json(const std::vector<ClassRow>& rows, const ClassSubject& 
 // summary.csv: file,kind,cells,matched,mismatched,blank,score_percent,first_divergence,first_divergence_path,error
 std::string summary_csv(const std::vector<ClassRow>& rows);
 
-// cells.csv: file,place,quantity,unit,expected,found,relative_error,verdict,first_divergence,path. A worksheet
+// cells.csv: file,place,quantity,unit,expected,found,relative_error,verdict,first_divergence,path; an expected
+// number as the shortest decimal that grades the same under `tolerance` (0.0856025404, not 0.08560254040000001:
+// rounded_for_hand_work), a relative error to 3 significant digits. A worksheet
 // has a row for every number of its cells (right, wrong, blank), then one per difference in the settings or
 // scene it was made with (verdict `setting` or `scene`); a trace a row per finding only (its verdict the
 // finding's kind: value, missing, extra, setting, scene); a file that could not be read one row saying why.
-std::string cells_csv(const std::vector<ClassRow>& rows);
+std::string cells_csv(const std::vector<ClassRow>& rows, const Tolerance& tolerance);
 
 // The feedback page handed back to the student who wrote `row.file` (Markdown).
 std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject);

@@ -1,6 +1,7 @@
 #include "course/diff.hpp"
 
 #include "course/step_keys.hpp"
+#include "course/trace_items.hpp"
 #include "course/worksheet.hpp"
 #include "formats/input_error.hpp"
 
@@ -174,9 +175,12 @@ FindingKind area_of(std::string_view top_key) {
     return FindingKind::value;
 }
 
+// The first value that differs from the reference's: a blank, a repeat or a cell not asked for diverges from
+// nothing.
 void mark_first_divergence(DiffReport& report) {
     for (Finding& f : report.findings)
-        if (f.kind != FindingKind::blank) {
+        if (f.kind != FindingKind::blank && f.kind != FindingKind::duplicate && f.kind != FindingKind::not_asked &&
+            f.kind != FindingKind::empty) {
             f.first_divergence = true;
             return;
         }
@@ -245,6 +249,96 @@ void sort_into_trace_order(const formats::json& reference, std::vector<Item>& it
     items = std::move(sorted);
 }
 
+// One number a worksheet gives: a cell's value, or one component of it.
+struct GivenNumber {
+    std::string path;     // its own: "frames[0].phases[1].iterations[0].impulse_world[1]"
+    formats::json value;  // null: blank
+    FindingKind area;     // what a difference in it is reported as
+    std::string name;     // the key that holds it
+};
+
+// The numbers of `cell` at the paths of `expected`'s: a blank vector is blank in each component, a vector given
+// is read component by component (so a component given twice, or one too many, is seen as such).
+void append_numbers(const FilledCell& cell, const formats::json& expected, std::vector<GivenNumber>& out) {
+    const auto* top = std::get_if<std::string>(&cell.tokens.front());
+    const auto* last = std::get_if<std::string>(&cell.tokens.back());
+    const FindingKind area = area_of(top ? *top : "");
+    const std::string name = last ? *last : "";
+    const formats::json& shape = cell.value.is_null() ? expected : cell.value;
+    for_each_scalar(shape, cell.path, [&](const std::string& at, const formats::json& value) {
+        out.push_back({at, cell.value.is_null() ? formats::json(nullptr) : value, area, name});
+    });
+}
+
+// Every number of the values at `paths` in the reference, by its own path.
+std::map<std::string, formats::json> numbers_of(const formats::json& reference, const std::vector<std::string>& paths) {
+    std::map<std::string, formats::json> numbers;
+    for (const std::string& path : paths)
+        if (const formats::json* expected = value_at(reference, parse_json_path(path, "")))
+            for_each_scalar(*expected, path, [&numbers](const std::string& at, const formats::json& value) {
+                numbers.emplace(at, value);
+            });
+    return numbers;
+}
+
+// The item (a prepared contact or an iteration) a path into a trace document lies in, and where its key starts.
+std::optional<std::pair<ItemAt, std::size_t>> item_of(const formats::json& reference,
+                                                      const std::vector<PathToken>& path) {
+    const auto key_is = [&path](std::size_t i, std::string_view key) {
+        const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
+        return k && *k == key;
+    };
+    const auto index = [&path](std::size_t i) -> std::optional<std::size_t> {
+        if (i >= path.size() || !std::holds_alternative<std::size_t>(path[i])) return std::nullopt;
+        return std::get<std::size_t>(path[i]);
+    };
+    if (!key_is(0, "frames") || !index(1)) return std::nullopt;
+    const formats::json* frame = value_at(reference, {path.begin(), path.begin() + 2});
+    if (!frame) return std::nullopt;
+    const std::string frame_path = formats::json_path_index("frames", *index(1));
+    if (key_is(2, "contacts") && index(3)) {
+        const formats::json* contact = value_at(reference, {path.begin(), path.begin() + 4});
+        if (!contact) return std::nullopt;
+        return std::pair{ItemAt{ItemKind::contact,
+                                formats::json_path_index(formats::json_path_child(frame_path, "contacts"), *index(3)),
+                                contact, frame_path, frame},
+                         std::size_t{4}};
+    }
+    if (key_is(2, "phases") && index(3) && key_is(4, "iterations") && index(5)) {
+        const formats::json* phase = value_at(reference, {path.begin(), path.begin() + 4});
+        const formats::json* iteration = value_at(reference, {path.begin(), path.begin() + 6});
+        if (!phase || !iteration || !phase->is_object()) return std::nullopt;
+        const std::string phase_path =
+            formats::json_path_index(formats::json_path_child(frame_path, "phases"), *index(3));
+        return std::pair{ItemAt{phase->value("phase", "") == "position" ? ItemKind::position_iteration
+                                                                        : ItemKind::velocity_iteration,
+                                formats::json_path_index(formats::json_path_child(phase_path, "iterations"), *index(5)),
+                                iteration, frame_path, frame, *index(3)},
+                         std::size_t{6}};
+    }
+    return std::nullopt;
+}
+
+// The cells, as `worksheet` makes them, of every step the sheet answers a cell of: the places a sheet made from a
+// case, a scene or a trace is graded at when the reference does not say which cells it handed out.
+std::vector<std::string> cells_of_answered_steps(const formats::json& reference, const FilledWorksheet& sheet) {
+    std::set<std::pair<std::string, std::string>> steps;  // (item path, step)
+    std::vector<std::string> paths;
+    for (const FilledCell& cell : sheet.cells) {
+        const auto item = item_of(reference, cell.tokens);
+        if (!item) continue;
+        const StepKey* key = find_step_key(item->first.kind, step_key_of(cell.tokens, item->second));
+        if (!key || key->role != Role::computed) continue;
+        if (!steps.emplace(item->first.path, std::string(key->step)).second) continue;
+        std::vector<WorksheetEntry> cells;
+        for (const StepKey& k : step_keys())
+            if (k.item == item->first.kind && k.role == Role::computed && k.step == key->step)
+                expand_key(item->first, k, std::string(k.step), cells);
+        for (const WorksheetEntry& e : cells) paths.push_back(e.path);
+    }
+    return paths;
+}
+
 }  // namespace
 
 std::string_view finding_kind_name(FindingKind kind) {
@@ -263,6 +357,12 @@ std::string_view finding_kind_name(FindingKind kind) {
             return "blank";
         case FindingKind::not_in_reference:
             return "not_in_reference";
+        case FindingKind::duplicate:
+            return "duplicate";
+        case FindingKind::not_asked:
+            return "not_asked";
+        case FindingKind::empty:
+            return "empty";
     }
     return "";
 }
@@ -293,7 +393,8 @@ DiffReport diff_traces(const formats::json& reference, const formats::json& othe
 DiffReport diff_worksheet(const formats::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance,
                           const std::vector<std::string>* asked) {
     Comparison comparison(reference, tolerance, true);
-    std::set<std::string> answered;  // the numbers the sheet has a row or a place for
+    // The numbers the sheet gives, each at its own path ("…impulse_world[1]"), in the sheet's order.
+    std::vector<GivenNumber> given;
     for (const FilledCell& cell : sheet.cells) {
         const formats::json* expected = value_at(reference, cell.tokens);
         if (!expected) {
@@ -303,19 +404,33 @@ DiffReport diff_worksheet(const formats::json& reference, const FilledWorksheet&
             });
             continue;
         }
-        for_each_scalar(*expected, cell.path,
-                        [&answered](const std::string& at, const formats::json&) { answered.insert(at); });
-        const auto* top = std::get_if<std::string>(&cell.tokens.front());
-        const auto* last = std::get_if<std::string>(&cell.tokens.back());
-        comparison.compare(*expected, cell.value, cell.path, area_of(top ? *top : ""), last ? *last : "");
+        append_numbers(cell, *expected, given);
     }
-    // What the sheet was handed out with and left out: blank, as an empty cell is.
-    if (asked)
-        for (const std::string& path : *asked)
-            if (const formats::json* expected = value_at(reference, parse_json_path(path, "")))
-                for_each_scalar(*expected, path, [&](const std::string& at, const formats::json& value) {
-                    if (!answered.count(at)) comparison.blank(at, value);
-                });
+    // The places' numbers, each graded once.
+    const std::map<std::string, formats::json> places =
+        asked ? numbers_of(reference, *asked) : numbers_of(reference, cells_of_answered_steps(reference, sheet));
+    std::set<std::string> graded;
+    for (const GivenNumber& number : given) {
+        const auto place = places.find(number.path);
+        if (!graded.insert(number.path).second) {
+            comparison.add(FindingKind::duplicate, number.path, place == places.end() ? nullptr : place->second,
+                           number.value);
+            comparison.grade(number.path, place == places.end() ? nullptr : place->second, number.value, std::nullopt,
+                             Verdict::wrong);
+        } else if (place == places.end()) {
+            const formats::json* there = value_at(reference, parse_json_path(number.path, ""));
+            comparison.add(there ? FindingKind::not_asked : FindingKind::not_in_reference, number.path,
+                           there ? *there : formats::json(nullptr), number.value);
+            comparison.grade(number.path, there ? *there : formats::json(nullptr), number.value, std::nullopt,
+                             Verdict::wrong);
+        } else {
+            comparison.compare(place->second, number.value, number.path, number.area, number.name);
+        }
+    }
+    // What the sheet leaves out: blank, as an empty cell is.
+    for (const auto& [path, expected] : places)
+        if (!graded.count(path)) comparison.blank(path, expected);
+    if (sheet.cells.empty()) comparison.add(FindingKind::empty, "", nullptr, nullptr);
     // What the sheet was made from: a difference explains every wrong cell after it. Its matches are not
     // the student's, so they are not counted.
     comparison.count_matches(false);
@@ -332,9 +447,10 @@ DiffReport diff_worksheet(const formats::json& reference, const FilledWorksheet&
 }
 
 void word_findings(DiffReport& report, const Trace& trace, const formats::json& reference) {
+    WordingCache cache;
     const auto word = [&](const std::string& path, std::string& place, std::string& quantity, std::string& unit) {
         try {
-            const Wording w = word_path(trace, reference, parse_json_path(path, ""));
+            const Wording w = word_path(trace, reference, parse_json_path(path, ""), &cache);
             place = w.place;
             quantity = w.quantity;
             unit = w.unit;
@@ -342,6 +458,33 @@ void word_findings(DiffReport& report, const Trace& trace, const formats::json& 
             place.clear();  // a scene's material names may be any text: such a path is shown as it is
             quantity = path;
         }
+    };
+    for (Finding& f : report.findings) word(f.path, f.place, f.quantity, f.unit);
+    for (GradedNumber& g : report.graded) word(g.path, g.place, g.quantity, g.unit);
+}
+
+void word_findings_by_key(DiffReport& report, const FilledWorksheet& key) {
+    std::map<std::string, const FilledCell*> cells;
+    for (const FilledCell& cell : key.cells) cells.emplace(cell.path, &cell);
+    const auto word = [&](const std::string& path, std::string& place, std::string& quantity, std::string& unit) {
+        // The key's cell holding the number: its own path, or a vector's or matrix's with the indices cut off.
+        std::string at = path;
+        auto found = cells.find(at);
+        while (found == cells.end() && at.ends_with(']')) {
+            at.resize(at.rfind('['));
+            found = cells.find(at);
+        }
+        if (found == cells.end()) {
+            place.clear();
+            quantity = path;
+            return;
+        }
+        const FilledCell& cell = *found->second;
+        const std::size_t item_end = cell.path.rfind('.');
+        place = (item_end == std::string::npos ? cell.path : cell.path.substr(0, item_end)) +
+                (cell.step.empty() ? "" : " · " + cell.step);
+        quantity = (cell.quantity.empty() ? cell.path.substr(item_end + 1) : cell.quantity) + path.substr(at.size());
+        unit = cell.unit;
     };
     for (Finding& f : report.findings) word(f.path, f.place, f.quantity, f.unit);
     for (GradedNumber& g : report.graded) word(g.path, g.place, g.quantity, g.unit);
@@ -371,6 +514,8 @@ Score score_of(const DiffReport& report) {
     }
     s.cells = s.right + s.wrong + s.blank;
     if (s.cells > 0) s.percent = 100.0 * static_cast<double>(s.right) / static_cast<double>(s.cells);
+    // A sheet with nothing on it earns nothing (it used to "all match").
+    if (s.cells == 0 && report.other_kind == "worksheet") s.percent = 0.0;
     return s;
 }
 

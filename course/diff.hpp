@@ -23,6 +23,9 @@ enum class FindingKind {
     extra,             // in the other file, not in the reference
     blank,             // a worksheet cell left blank: not a mismatch, not a match
     not_in_reference,  // a worksheet cell whose path the reference does not have
+    duplicate,         // a worksheet cell given again (its first answer is the one graded)
+    not_asked,         // a worksheet cell the reference has but did not ask for
+    empty,             // a worksheet that gives no cell at all
 };
 
 std::string_view finding_kind_name(FindingKind kind);  // "value", "setting", ..., "not_in_reference"
@@ -71,8 +74,9 @@ struct DiffReport {
 };
 
 // The grade of one file (docs/coursework.md, "Score"). A worksheet: every number of the cells it was asked for
-// counts once, right, wrong or blank. A trace: every number compared counts once and a missing or extra element
-// (an iteration, a key) once; there is nothing to leave blank. score = right / cells × 100, none for no cells.
+// counts once, right, wrong or blank, and every number given again, not asked for or not in the reference counts
+// as wrong; a sheet with no cells scores 0. A trace: every number compared counts once and a missing or extra
+// element (an iteration, a key) once; there is nothing to leave blank. score = right / cells × 100.
 struct Score {
     std::size_t cells = 0;
     std::size_t right = 0;
@@ -89,14 +93,19 @@ Score score_of(const DiffReport& report);
 // by index.
 DiffReport diff_traces(const formats::json& reference, const formats::json& other, const Tolerance& tolerance);
 
-// Each cell of the sheet against the reference's value at its path, then the sheet's settings and scene
-// against the reference's, sorted into trace order. `asked`, when known (the reference is a worksheet or a
-// lesson), holds the paths of the cells the sheet was handed out with: a number of them the sheet leaves out
-// is graded blank, as if its row had been deleted.
+// The sheet's cells matched, number by number, to the reference's places, then the sheet's settings and scene
+// against the reference's, sorted into trace order. The places are `asked` when it is known (the reference is a
+// worksheet or a lesson: the paths of the cells the sheet was handed out with), else every cell of each step the
+// sheet answers something of (the step's cells as `worksheet` makes them). Each number of those places is graded
+// once: right, wrong, or blank when the sheet leaves it empty or out. A number given again (a duplicate), one
+// the places do not hold (not asked, or not in the reference) is a finding and counts as wrong; a sheet with no
+// cells is a finding (empty) and scores 0.
 DiffReport diff_worksheet(const formats::json& reference, const FilledWorksheet& sheet, const Tolerance& tolerance,
                           const std::vector<std::string>* asked = nullptr);
 
 // Words every finding's and graded number's path as the worksheet does (word_path): its place and quantity.
 void word_findings(DiffReport& report, const Trace& trace, const formats::json& reference);
+// Words them as an answer key's own cells do (its step, quantity and unit columns): a key carries no trace.
+void word_findings_by_key(DiffReport& report, const FilledWorksheet& key);
 
 }  // namespace impulse::course

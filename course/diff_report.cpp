@@ -5,6 +5,7 @@
 #include "explain/text_table.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
+#include "formats/printable_text.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -62,6 +63,11 @@ std::string shown_value(const formats::json& value, const Tolerance& tolerance) 
     return exact.size() <= std::string(text).size() ? exact : text;
 }
 
+bool empty_sheet(const DiffReport& report) {
+    return std::any_of(report.findings.begin(), report.findings.end(),
+                       [](const Finding& f) { return f.kind == FindingKind::empty; });
+}
+
 std::string worded(const Finding& f) {
     return f.place.empty() ? f.quantity : f.place + ": " + f.quantity;
 }
@@ -78,25 +84,45 @@ std::string findings_table(const std::vector<Finding>& findings, std::size_t lim
     std::vector<std::string> places{""};
     for (std::size_t i = 0; i < findings.size() && i < limit; ++i) {
         const Finding& f = findings[i];
-        const bool no_found = f.kind == FindingKind::missing || f.kind == FindingKind::blank;
-        rows.push_back({f.first_divergence ? "▶" : "", std::string(finding_kind_name(f.kind)), f.quantity,
-                        f.kind == FindingKind::extra || f.kind == FindingKind::not_in_reference
-                            ? "—"
-                            : brief(f.expected, tolerance),
-                        no_found ? "—" : brief(f.found, std::nullopt), f.unit, error_text(f.relative_error), f.formula,
-                        f.equation});
-        places.push_back(f.place);
+        const bool no_found =
+            f.kind == FindingKind::missing || f.kind == FindingKind::blank || f.kind == FindingKind::empty;
+        const bool no_expected =
+            f.kind == FindingKind::extra || f.kind == FindingKind::not_in_reference || f.kind == FindingKind::empty;
+        // A found value is what a student wrote: a line break or an escape sequence in it is shown, not obeyed
+        // (a line break in a cell once split the table's rows from their places: a read past the end).
+        rows.push_back({f.first_divergence ? "▶" : "", std::string(finding_kind_name(f.kind)),
+                        formats::one_line(f.quantity),
+                        no_expected ? "—" : formats::one_line(brief(f.expected, tolerance)),
+                        no_found ? "—" : formats::one_line(brief(f.found, std::nullopt)), f.unit,
+                        error_text(f.relative_error), f.formula, f.equation});
+        places.push_back(formats::one_line(f.place));
     }
     // One line per row, under a line naming the place (the worksheet's step) whenever it changes.
     const std::string table = explain::aligned_columns(rows);
     std::string text;
     std::size_t row = 0, start = 0;
     for (std::size_t end = table.find('\n'); end != std::string::npos; start = end + 1, end = table.find('\n', start)) {
-        if (row > 0 && !places[row].empty() && places[row] != places[row - 1]) text += places[row] + "\n";
+        if (row > 0 && row < places.size() && !places[row].empty() && places[row] != places[row - 1])
+            text += places[row] + "\n";
         text += table.substr(start, end - start + 1);
         ++row;
     }
     return text;
+}
+
+namespace {}  // namespace
+
+bool later_divergence(const DiffReport& r, const Finding& first) {
+    bool after = false;
+    for (const Finding& f : r.findings) {
+        if (&f == &first) {
+            after = true;
+            continue;
+        }
+        if (after && (f.kind == FindingKind::value || f.kind == FindingKind::missing || f.kind == FindingKind::extra))
+            return true;
+    }
+    return false;
 }
 
 namespace {
@@ -123,15 +149,18 @@ formats::json first_divergence_json(const DiffReport& r) {
 }  // namespace
 
 std::string report_text(const DiffReport& report, const DiffSubject& subject) {
-    std::string text = "reference " + subject.reference + "\nother     " + subject.other + " (" + report.other_kind +
-                       ")\n" + tolerance_text(subject.tolerance) + "\n";
+    std::string text = "reference " + formats::one_line(subject.reference) + "\nother     " +
+                       formats::one_line(subject.other) + " (" + report.other_kind + ")\n" +
+                       tolerance_text(subject.tolerance) + "\n";
     if (!report.findings.empty())
         text += "\n" + findings_table(report.findings, report.findings.size(), subject.tolerance);
     text += "\n";
     if (const Finding* first = report.first_divergence())
-        text +=
-            "▶ first divergence: " + worded(*first) + " (" + first->path + "); later mismatches often follow from it\n";
+        text += "▶ first divergence: " + formats::one_line(worded(*first)) + " (" + first->path + ")" +
+                (later_divergence(report, *first) ? "; later mismatches often follow from it" : "") + "\n";
     const Score score = score_of(report);
+    if (report.other_kind == "worksheet" && empty_sheet(report))
+        text += "the worksheet gives no cells: nothing to grade\n";
     text += counts(report) + (report.all_match() ? ": all match" : "") +
             (score.percent ? "; score " + percent_text(*score.percent) : "") + "\n";
     return text;

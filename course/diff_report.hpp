@@ -26,6 +26,11 @@ std::string report_csv(const DiffReport& report);
 // The parts the class report shares: a finding's place and quantity ("frame 0 · … · impulse: impulse_world[1]"),
 // a score as a person reads it ("87.5 %"), and findings as aligned rows under their places (at most `limit`).
 std::string worded(const Finding& finding);
+// Whether a value after `first` (the first divergence) differs from the reference too: only then can the wrong
+// numbers after it follow from it (a blank or a repeat does not).
+bool later_divergence(const DiffReport& report, const Finding& first);
+// Whether the report holds the finding that its worksheet gives no cells.
+bool empty_sheet(const DiffReport& report);
 std::string percent_text(double percent);
 std::string findings_table(const std::vector<Finding>& findings, std::size_t limit, const Tolerance& tolerance);
 

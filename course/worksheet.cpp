@@ -92,7 +92,10 @@ std::string joined(const std::vector<std::string>& names) {
 }  // namespace
 
 double rounded_for_hand_work(double value) {
-    const Tolerance grading;  // diff's defaults
+    return rounded_for_hand_work(value, Tolerance{});  // diff's defaults
+}
+
+double rounded_for_hand_work(double value, const Tolerance& grading) {
     const double allowed = (grading.atol + grading.rtol * std::abs(value)) * hand_rounding_share;
     if (!std::isfinite(value)) return value;
     if (std::abs(value) <= allowed) return 0.0;  // rounding noise around 0 (and −0) is 0
@@ -113,7 +116,8 @@ formats::json rounded_for_hand_work(const formats::json& value) {
     return out;
 }
 
-Wording word_path(const Trace& trace, const formats::json& document, const std::vector<PathToken>& path) {
+Wording word_path(const Trace& trace, const formats::json& document, const std::vector<PathToken>& path,
+                  WordingCache* cache) {
     const auto key_is = [&path](std::size_t i, std::string_view key) {
         const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
         return k && *k == key;
@@ -152,16 +156,27 @@ Wording word_path(const Trace& trace, const formats::json& document, const std::
                           : c->stage == Stage::position  ? ItemKind::position_iteration
                                                          : ItemKind::velocity_iteration;
     const std::string key = step_key_of(path, rest);
-    const std::vector<std::string> order = step_order(trace, *c);
+    const std::tuple<int, int, int> item{c->frame, static_cast<int>(c->stage), c->item};
+    std::vector<std::string> made;
+    if (!cache) made = step_order(trace, *c);
+    const std::vector<std::string>& order =
+        cache ? cache->step_orders.try_emplace(item, step_order(trace, *c)).first->second : made;
+    const auto place = [&](const Cursor& at) {
+        if (!cache) return model::describe(trace, at);
+        const std::tuple<int, int, int, int> step{at.frame, static_cast<int>(at.stage), at.item, at.step};
+        const auto found = cache->places.find(step);
+        return found != cache->places.end() ? found->second
+                                            : cache->places.emplace(step, model::describe(trace, at)).first->second;
+    };
     const StepKey* step_key = find_step_key(kind, key);
     const auto at = step_key ? std::find(order.begin(), order.end(), std::string(step_key->step)) : order.end();
     w.quantity = path_text(path, rest);
     if (at != order.end()) {
         c->step = static_cast<int>(at - order.begin());
-        w.place = model::describe(trace, *c);
+        w.place = place(*c);
     } else {
         // A given of the item (the contact as detected, the iteration's choice): the item without a step.
-        w.place = model::describe(trace, *c);
+        w.place = place(*c);
         const std::string first = order.empty() ? "" : " · " + order.front();
         if (!first.empty() && w.place.ends_with(first)) w.place.resize(w.place.size() - first.size());
     }
@@ -322,6 +337,38 @@ formats::json worksheet_json(const Worksheet& sheet) {
             {"settings", sheet.settings},
             {"reference", sheet.reference},
             {"steps", steps}};
+}
+
+namespace {
+
+std::size_t numbers_in(const formats::json& value) {
+    std::size_t n = 0;
+    for_each_scalar(value, "", [&n](const std::string&, const formats::json&) { ++n; });
+    return n;
+}
+
+}  // namespace
+
+WorksheetCounts json_counts(const Worksheet& sheet) {
+    WorksheetCounts counts;
+    for (const WorksheetStep& s : sheet.steps) {
+        counts.cells += s.cells.size();
+        counts.inputs += s.inputs.size();
+        for (const WorksheetEntry& e : s.cells) counts.numbers += numbers_in(e.value);
+    }
+    return counts;
+}
+
+WorksheetCounts csv_counts(const Worksheet& sheet) {
+    WorksheetCounts counts;
+    std::set<std::string> shown;  // as worksheet_csv writes them: an input once, before the first step using it
+    for (const WorksheetStep& s : sheet.steps) {
+        for (const WorksheetEntry& e : s.inputs)
+            if (shown.insert(e.path).second) counts.inputs += numbers_in(e.value);
+        counts.cells += s.cells.size();
+        for (const WorksheetEntry& e : s.cells) counts.numbers += numbers_in(e.value);
+    }
+    return counts;
 }
 
 std::string worksheet_csv(const Worksheet& sheet) {

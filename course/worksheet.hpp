@@ -8,12 +8,15 @@
 // inspector's --goto syntax), the first frame by default, or a lesson's places.
 
 #include "course/json_path.hpp"
+#include "course/tolerance.hpp"
 #include "course/worksheet_entry.hpp"
 #include "formats/json_values.hpp"
 #include "model/session.hpp"
 
+#include <map>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 namespace impulse::course {
@@ -74,12 +77,24 @@ std::string worksheet_csv(const Worksheet& sheet);
 
 inline constexpr std::string_view worksheet_csv_header = "kind,path,step,quantity,value,unit,formula,equation,meaning";
 
+// What a written sheet shows: its cells (entries), the numbers in them, and its inputs. A CSV sheet has a row
+// per number, cell or input, each input once; a JSON sheet lists each step's inputs with the step.
+struct WorksheetCounts {
+    std::size_t cells = 0;
+    std::size_t numbers = 0;
+    std::size_t inputs = 0;
+};
+WorksheetCounts csv_counts(const Worksheet& sheet);   // inputs: the input rows
+WorksheetCounts json_counts(const Worksheet& sheet);  // inputs: the entries of every step's inputs
+
 // Inputs are written for work by hand: each number as the shortest decimal within `hand_rounding_share` of
 // what diff tolerates by default (|r − x| ≤ (atol + rtol·|x|) / 1000: 1e-15 + 1e-12·|x|), so 24.000000000000004
 // is given as 24 and 1.1e-16 as 0, while a cell worked out from the rounded inputs still matches the reference
 // (tests/course/test_blank_cells.cpp works every cell of every shipped lesson and case out that way).
 inline constexpr double hand_rounding_share = 1e-3;
 double rounded_for_hand_work(double value);
+// The same within a share of another tolerance (a class graded with --rtol 1e-4 shows its expected values so).
+double rounded_for_hand_work(double value, const Tolerance& grading);
 formats::json rounded_for_hand_work(const formats::json& value);  // numbers inside arrays too; other values as they are
 
 // How the worksheet names the value at a path of a trace document: the place of the step that computes it
@@ -91,7 +106,14 @@ struct Wording {
     std::string quantity;
     std::string unit;
 };
-Wording word_path(const Trace& trace, const formats::json& document, const std::vector<PathToken>& path);
+// Wording a path formats its item's tables to learn the order of its steps: `cache`, when given, keeps what it
+// learnt per item and step, so wording every number of a large sheet takes time linear in their count.
+struct WordingCache {
+    std::map<std::tuple<int, int, int>, std::vector<std::string>> step_orders;  // (frame, stage, item)
+    std::map<std::tuple<int, int, int, int>, std::string> places;               // (frame, stage, item, step)
+};
+Wording word_path(const Trace& trace, const formats::json& document, const std::vector<PathToken>& path,
+                  WordingCache* cache = nullptr);
 
 // How a scalar is written in a worksheet's or report's CSV: numbers as the shortest text that reads back to
 // the same double, booleans true/false, strings as they are, null empty.

@@ -86,7 +86,7 @@ inline void load_diff(std::string_view input) {
     course::summary_text(rows, class_subject);
     course::summary_json(rows, class_subject);
     course::summary_csv(rows);
-    course::cells_csv(rows);
+    course::cells_csv(rows, tolerance);
     course::feedback_markdown(rows.front(), class_subject);
 }
 

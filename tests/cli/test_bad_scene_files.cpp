@@ -103,7 +103,8 @@ TEST_CASE("malformed cases are rejected with one line naming the path, exit code
         {"an unknown shape", case_with(R"([{"shape": {"type": "cone", "radius": 1}}])", "[]"),
          "bodies[0].shape.type: must be one of \"sphere\", \"box\"; got \"cone\""},
         {"a flat box", case_with(R"([{"shape": {"type": "box", "half_size": [1, 0, 1]}}])", "[]"),
-         "bodies[0].shape.half_size[1]: must be > 0, got 0"},
+         "bodies[0].shape.half_size[1]: must be from 1e-30 to 1e+30 (the engine multiplies sizes and masses together; "
+         "outside this range the products overflow or vanish), got 0"},
         {"inertia given twice",
          case_with(
              R"([{"inertia": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "inverse_inertia": [[1, 0, 0], [0, 1, 0], [0, 0, 1]]}])",

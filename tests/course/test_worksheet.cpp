@@ -241,7 +241,9 @@ TEST_CASE("worksheet writes JSON that its schema accepts, with every cell blank"
     const test::CliResult r = test::run_cli({"worksheet", cases + "ruler.json", "--out", out});
     CHECK(r.code == 0);
     CHECK(r.err.empty());
-    CHECK(r.out == "worksheet written to " + out + ": 15 steps, 47 cells (89 values to fill in), 189 inputs given\n");
+    // A JSON sheet lists each step's inputs with the step: 189 entries over the 15 steps.
+    CHECK(r.out == "worksheet written to " + out +
+                       ": 15 steps, 47 cells (89 numbers to fill in), 189 inputs given over its steps\n");
     const formats::json sheet = formats::parse_json_text(read_text(out));
     CHECK_NOTHROW(course::validate_worksheet_document(sheet));
     CHECK(sheet["format"] == "impulse-lab-worksheet");

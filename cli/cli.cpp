@@ -8,6 +8,7 @@
 #include "formats/input_files.hpp"
 #include "cli/interrupt.hpp"
 #include "formats/input_error.hpp"
+#include "formats/printable_text.hpp"
 #include "formats/suggest.hpp"
 #include "record/trace.hpp"
 
@@ -363,6 +364,15 @@ std::vector<HelpSection> manual_sections() {
 
 }  // namespace
 
+std::string error_line(std::string_view file, std::string_view what) {
+    return "impulse-lab: " + (file.empty() ? std::string() : formats::one_line(file) + ": ") + formats::one_line(what) +
+           "\n";
+}
+
+std::string error_line(const formats::FileError& e) {
+    return error_line(e.file, e.where.empty() ? e.problem : e.where + ": " + e.problem);
+}
+
 int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err, bool err_is_terminal,
         std::istream* terminal_in) {
     install_deferred_signals();
@@ -450,10 +460,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         out << version_text << '\n';
         return exit_ok;
     } catch (const CLI::ParseError& e) {
-        err << "impulse-lab: " << parse_error_line(app, catalog, args, e) << '\n';
+        err << error_line("", parse_error_line(app, catalog, args, e));
         return exit_bad_input;
     } catch (const formats::InputError& e) {
-        err << "impulse-lab: " << e.what() << '\n';
+        err << error_line("", e.what());
         return exit_bad_input;
     }
 
@@ -478,13 +488,13 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
             << "): no file written, those already there are unchanged\n";
         return 128 + e.signal;
     } catch (const formats::FileError& e) {
-        err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
+        err << error_line(e);
         return exit_bad_input;
     } catch (const formats::InputError& e) {
-        err << "impulse-lab: " << e.what() << '\n';
+        err << error_line("", e.what());
         return exit_bad_input;
     } catch (const std::exception& e) {
-        err << "impulse-lab: internal error: " << e.what() << '\n';
+        err << error_line("", std::string("internal error: ") + e.what());
         return exit_internal_error;
     } catch (...) {
         err << "impulse-lab: internal error: an unknown exception\n";

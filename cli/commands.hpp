@@ -2,6 +2,7 @@
 // The commands behind the CLI, each taking its parsed options. They throw formats::InputError for bad input;
 // `where` is then prefixed with the file it concerns by the caller (cli.cpp).
 
+#include "formats/input_files.hpp"
 #include "model/script.hpp"
 #include "model/session.hpp"
 
@@ -9,10 +10,17 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace impulse::cli {
+
+// The one line an error is printed as: "impulse-lab: FILE: PATH: PROBLEM\n", each part with its control
+// characters and line breaks escaped (formats::one_line), so a file's name or a JSON key holding a line break or
+// an escape sequence cannot split the line or reach the terminal as a command.
+std::string error_line(const formats::FileError& e);
+std::string error_line(std::string_view file, std::string_view what);  // file "" for none
 
 struct ResolveOptions {
     std::string case_file;

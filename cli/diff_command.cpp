@@ -276,7 +276,24 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
             formats::check_writable(*options.out, "--out");
     }
 
+    // No report may replace the reference, a handed-in file, or another report file.
     const std::string reference_file = lesson_or_file(options.reference, "diff");
+    DistinctFiles distinct;
+    distinct.input("the reference REFERENCE", reference_file);
+    for (const std::string& other : options.others) distinct.input("OTHER '" + other + "'", other);
+    for (const Submission& s : files) distinct.input("the handed-in file '" + s.file + "'", s.file);
+    if (options.out && whole_class) {
+        const fs::path folder(*options.out);
+        distinct.output("--out", folder.string());
+        std::vector<std::string> names;
+        for (const Submission& s : files) names.push_back(formats::input_name(s.file));
+        distinct.output("--out", (folder / "summary.csv").string());
+        distinct.output("--out", (folder / "cells.csv").string());
+        for (const std::string& page : course::feedback_names(names))
+            distinct.output("--out", (folder / "feedback" / page).string());
+    } else if (out_is_file) {
+        distinct.output("--out", *options.out);
+    }
     const Reference reference = open_reference(options, reference_file);
     if (!whole_class) {
         // One file: its every mismatch; a file that cannot be read is bad input.
@@ -302,7 +319,7 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
             if (!rows.back().report->all_match()) code = exit_verdict;
         } catch (const formats::FileError& e) {
             const std::string error = (e.where.empty() ? "" : e.where + ": ") + e.problem;
-            err << "impulse-lab: " << e.file << ": " << error << '\n';
+            err << error_line(e);
             rows.push_back({formats::input_name(s.file), std::nullopt, error});
             code = exit_verdict;
         }

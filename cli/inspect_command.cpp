@@ -55,6 +55,15 @@ int inspect_command(const InspectOptions& options, std::ostream& out, std::ostre
         run.script_name = formats::input_name(*options.script);
         run.script = read_script_file(*options.script);
     }
+    // No picture or export may replace the file inspected, the script, or another of them.
+    DistinctFiles files;
+    files.input("the inspected FILE", options.file);
+    if (options.script) files.input("the script --script", *options.script);
+    for (const model::Action& a : run.script)
+        if (a.kind == model::ActionKind::screenshot || a.kind == model::ActionKind::export_trace ||
+            a.kind == model::ActionKind::export_table)
+            files.output(run.script_name + ": line " + std::to_string(a.line), a.argument);
+    if (options.screenshot) files.output("--screenshot", *options.screenshot);
     // One output may go to standard output: --screenshot -, or a script's export or screenshot to "-". A picture
     // only where that is not a terminal. What the command says goes to stderr then.
     std::optional<std::string> standard_output_by;

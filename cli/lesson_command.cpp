@@ -63,7 +63,7 @@ int list_lessons(const LessonOptions& options, const course::Progress& progress,
             else
                 out << course::tally_text(*tally) << '\n';
         } catch (const formats::FileError& e) {
-            err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
+            err << error_line(e);
             status = exit_bad_input;
         }
     }

@@ -5,6 +5,7 @@
 #include "formats/input_error.hpp"
 
 #include <algorithm>
+#include <filesystem>
 #include <iostream>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -15,6 +16,42 @@ bool is_terminal(const std::ostream& stream) {
     if (&stream == &std::cout) return ::isatty(STDOUT_FILENO) == 1;
     if (&stream == &std::cerr) return ::isatty(STDERR_FILENO) == 1;
     return false;
+}
+
+namespace {
+
+// What makes two paths one file; empty for what is never the same as anything.
+std::string identity_of(const std::string& path) {
+    if (path.empty() || path == formats::standard_stream) return {};
+    struct stat info {};
+    if (::stat(path.c_str(), &info) == 0) {
+        if (S_ISCHR(info.st_mode)) return {};
+        return std::to_string(info.st_dev) + ":" + std::to_string(info.st_ino);
+    }
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::weakly_canonical(std::filesystem::absolute(path), error);
+    return "path:" + (error ? std::filesystem::absolute(path).lexically_normal() : absolute).string();
+}
+
+}  // namespace
+
+void DistinctFiles::input(std::string what, const std::string& path) {
+    named_.push_back({std::move(what), path, identity_of(path), false});
+}
+
+void DistinctFiles::output(std::string what, const std::string& path) {
+    const std::string identity = identity_of(path);
+    if (!identity.empty())
+        for (const Named& n : named_) {
+            if (n.identity != identity) continue;
+            if (!n.output)
+                throw formats::InputError(what, "'" + path + "' is " + n.what +
+                                                    ", which this command reads: writing it would replace it; "
+                                                    "choose another file");
+            throw formats::InputError(what, "'" + path + "' is also " + n.what +
+                                                "'s file: one output would replace the other; choose another file");
+        }
+    named_.push_back({std::move(what), path, identity, true});
 }
 
 bool names_standard_output(const std::string& path, const std::ostream& out) {

@@ -20,6 +20,29 @@ bool is_terminal(const std::ostream& stream);
 // output is. Only when `out` is std::cout can a path name it (in-process tests give a string stream).
 bool names_standard_output(const std::string& path, const std::ostream& out);
 
+// The files one command reads and writes, told apart before anything runs: an output that is one of the inputs
+// would replace what is being read (`worksheet case.json --out case.json`, `diff --out` over a student's file), and
+// two outputs on one file would replace each other (`--trace X --states X` lost the trace). A file is the same
+// when its device and inode are (a link, or another spelling of the path), or, before it exists, when its path
+// is once made absolute and normal. Standard input and output ("-") and character devices such as /dev/null are
+// never the same as anything.
+class DistinctFiles {
+public:
+    // `what` names the file in messages: "the scene SCENE", "--trace".
+    void input(std::string what, const std::string& path);
+    // Throws formats::InputError(what, ...) when `path` is an input or an output already named.
+    void output(std::string what, const std::string& path);
+
+private:
+    struct Named {
+        std::string what;
+        std::string path;
+        std::string identity;  // "dev:inode", or the normal absolute path of a file not there yet
+        bool output;
+    };
+    std::vector<Named> named_;
+};
+
 class Outputs {
 public:
     Outputs(std::ostream& out, std::ostream& err) : out_(out), err_(err) {}

@@ -1,5 +1,7 @@
 #include "cli/progress.hpp"
 
+#include "cli/terminal_guard.hpp"
+
 #include <string>
 
 namespace impulse::cli {
@@ -13,14 +15,15 @@ void ProgressBar::update(int done) {
     const int filled = total_ > 0 ? width * done / total_ : width;
     const double elapsed = std::chrono::duration<double>(now - start_).count();
     const double left = done > 0 ? elapsed * (total_ - done) / done : 0.0;
-    *terminal_ << "\r[" << std::string(static_cast<std::size_t>(filled), '#')
-               << std::string(static_cast<std::size_t>(width - filled), ' ') << "] " << done << "/" << total_
-               << " frames, " << static_cast<int>(left + 0.5) << " s left " << std::flush;
+    std::ostream bar(raw_buffer(*terminal_));  // its carriage return is the program's own, not escaped
+    bar << "\r[" << std::string(static_cast<std::size_t>(filled), '#')
+        << std::string(static_cast<std::size_t>(width - filled), ' ') << "] " << done << "/" << total_ << " frames, "
+        << static_cast<int>(left + 0.5) << " s left " << std::flush;
     shown_ = true;
 }
 
 void ProgressBar::finish() {
-    if (terminal_ && shown_) *terminal_ << "\r\033[K" << std::flush;
+    if (terminal_ && shown_) std::ostream(raw_buffer(*terminal_)) << "\r\033[K" << std::flush;
     shown_ = false;
 }
 

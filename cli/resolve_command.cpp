@@ -16,6 +16,9 @@
 namespace impulse::cli {
 
 int resolve_command(const ResolveOptions& options, std::ostream& out, std::ostream& err) {
+    DistinctFiles files;
+    files.input("the case CASE", options.case_file);
+    if (options.trace_file) files.output("--trace", *options.trace_file);
     Outputs outputs(out, err);
     outputs.add("--trace", options.trace_file);
     Scene scene;

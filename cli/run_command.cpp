@@ -147,6 +147,10 @@ std::string bench_verdict(const bench::BenchScene& spec, const bench::Accuracy& 
 
 int run_command(const RunOptions& options, std::ostream& out, std::ostream& err, std::ostream* progress) {
     // A run can take minutes: find out now, not after it, if its results could not be written.
+    DistinctFiles files;
+    files.input("the scene SCENE", options.scene_file);
+    if (options.trace_file) files.output("--trace", *options.trace_file);
+    if (options.states_file) files.output("--states", *options.states_file);
     Outputs outputs(out, err);
     outputs.add("--trace", options.trace_file);
     outputs.add("--states", options.states_file);

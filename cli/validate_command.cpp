@@ -8,6 +8,7 @@
 #include "formats/input_files.hpp"
 #include "formats/scene_file.hpp"
 #include "formats/input_error.hpp"
+#include "formats/printable_text.hpp"
 #include "formats/json_text.hpp"
 #include "formats/trace_json.hpp"
 #include "course/lesson.hpp"
@@ -78,9 +79,7 @@ std::string check_file(const std::string& path, const std::string& text) {
 int validate_command(const std::vector<std::string>& files, std::ostream& out, std::ostream& err) {
     // An invalid file is the verdict asked for (1); a file that cannot be read at all is bad input (2).
     bool invalid = false, unreadable = false;
-    const auto report = [&err](const formats::FileError& e) {
-        err << "impulse-lab: " << e.file << ": " << (e.where.empty() ? "" : e.where + ": ") << e.problem << '\n';
-    };
+    const auto report = [&err](const formats::FileError& e) { err << error_line(e); };
     for (const std::string& file : files) {
         std::string text;
         try {
@@ -93,9 +92,9 @@ int validate_command(const std::vector<std::string>& files, std::ostream& out, s
         }
         try {
             const std::string verdict = check_file(file, text);
-            out << formats::input_name(file) << ": " << verdict << '\n';
+            out << formats::one_line(formats::input_name(file)) << ": " << verdict << '\n';
         } catch (const formats::InputError& e) {
-            err << "impulse-lab: " << formats::input_name(file) << ": " << e.what() << '\n';
+            err << error_line(formats::input_name(file), e.what());
             invalid = true;
         } catch (const formats::FileError& e) {
             report(e);

@@ -37,13 +37,16 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
     if (!to_standard_output && !csv && !ends_with_case_blind(options.out, ".json"))
         throw formats::InputError(
             "--out", "must end in .json or .csv (or be - for standard output), got \"" + options.out + "\"");
+    // A lesson may be named by its number: `worksheet 7`.
+    const std::string file = lesson_or_file(options.file, "worksheet");
+    DistinctFiles files;
+    files.input("the worksheet's FILE", file);
+    files.output("--out", options.out);
     outputs.add("--out", options.out);
     std::ostream& report = outputs.report();
 
     // A lesson (NN-name.md) gives its run and, unless --steps says otherwise, its steps' places: those that
     // compute something to fill in (a step that only shows a choice has no cells).
-    // A lesson may be named by its number: `worksheet 7`.
-    const std::string file = lesson_or_file(options.file, "worksheet");
     std::optional<course::PreparedLesson> lesson;
     if (ends_with_case_blind(file, ".md")) {
         if (options.open.preset || !options.open.settings.empty() || !options.open.record.empty() ||

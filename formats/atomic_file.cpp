@@ -3,6 +3,8 @@
 #include "formats/input_error.hpp"
 
 #include <cerrno>
+#include <charconv>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
@@ -111,6 +113,32 @@ void write_in_place(const fs::path& target, std::string_view text, std::string_v
     if (!reason.empty()) fail(flag, path, reason);
 }
 
+// A temporary's name: ".NAME.tmp-PID-XXXXXX" beside NAME, so that one left by a writer that was killed (SIGKILL,
+// a power cut) is known for an orphan by its process being gone.
+std::string temporary_prefix(const fs::path& target) {
+    return "." + target.filename().string() + ".tmp-";
+}
+
+// Removes the temporaries an earlier writer of `target` left when it was killed: those whose process no longer
+// exists. A writer still running (another impulse-lab writing the same file now) keeps its own.
+void remove_orphans(const fs::path& target) {
+    const std::string prefix = temporary_prefix(target);
+    std::error_code error;
+    for (fs::directory_iterator it(folder_of(target), error), end; !error && it != end; it.increment(error)) {
+        const std::string name = it->path().filename().string();
+        if (!name.starts_with(prefix)) continue;
+        const std::string rest = name.substr(prefix.size());
+        const std::size_t dash = rest.find('-');
+        if (dash == std::string::npos || dash == 0 || rest.size() - dash - 1 != 6) continue;
+        long pid = 0;
+        const auto [end_of_pid, bad] = std::from_chars(rest.data(), rest.data() + dash, pid);
+        if (bad != std::errc() || end_of_pid != rest.data() + dash || pid <= 0) continue;
+        if (::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH) continue;  // alive, or not ours to ask
+        struct stat info {};
+        if (::lstat(it->path().c_str(), &info) == 0 && S_ISREG(info.st_mode)) ::unlink(it->path().c_str());
+    }
+}
+
 }  // namespace
 
 OutputTarget output_target(const fs::path& path, std::string_view flag) {
@@ -144,7 +172,9 @@ StagedFile::StagedFile(const fs::path& path, std::string_view contents, std::str
         pending_ = true;
         return;
     }
-    std::string temporary = (folder_of(target_) / ("." + target_.filename().string() + ".tmp-XXXXXX")).string();
+    remove_orphans(target_);
+    std::string temporary =
+        (folder_of(target_) / (temporary_prefix(target_) + std::to_string(::getpid()) + "-XXXXXX")).string();
     const int fd = ::mkstemp(temporary.data());
     if (fd < 0) fail(flag, path, std::strerror(errno));
     // mkstemp creates the file 0600: give it the permissions of the file it replaces, or those a newly created

@@ -1,0 +1,124 @@
+// The program as an attacker or a careless user meets it (issue 29): each case is named after what went wrong
+// before it was held.
+
+#include "support/run_cli.hpp"
+#include "support/temp_dir.hpp"
+#include "support/terminal.hpp"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using impulse::test::CliResult;
+using impulse::test::run_cli;
+using impulse::test::TempDir;
+
+namespace {
+
+const std::string program = IMPULSE_LAB_PROGRAM;
+const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
+
+std::string read_text(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+}  // namespace
+
+TEST_CASE("an escape sequence in a body's name reaches a terminal shown, not obeyed") {
+    // Terminal escape sequences from a file reached the teacher's terminal.
+    TempDir dir;
+    const auto scene = dir.write("evil.json", R"({"bodies": [{"name": "\u001b[2J\u001b]0;owned\u0007ball",
+        "shape": {"type": "sphere", "radius": 0.5}, "position": [0, 2, 0]}], "ground": {}})");
+    impulse::test::Terminal t({program, "run", scene.string(), "--frames", "2"}, {});
+    const std::string shown = t.expect("mm from where it started");
+    CHECK(shown.find("\\x1b[2J\\x1b]0;owned\\x07ball") != std::string::npos);
+    CHECK(shown.find('\x1b') == std::string::npos);
+    CHECK(shown.find('\x07') == std::string::npos);
+}
+
+TEST_CASE("a JSON key holding a line break gives an error of one line") {
+    // The key's line break made a two-line error.
+    TempDir dir;
+    const auto scene = dir.write("key.json", "{\"bodies\": [], \"bad\\nkey\\u001b[31m\": 1}");
+    const CliResult r = run_cli({"validate", scene.string()});
+    CHECK(r.code == 1);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.find("bad\\nkey\\x1b[31m") != std::string::npos);
+}
+
+TEST_CASE("the same file as --trace and --states is one error before the run, and the trace is not lost") {
+    // `run --trace X --states X` exited 0 and the trace was lost.
+    TempDir dir;
+    const std::string same = dir.file("out.json").string();
+    const CliResult r =
+        run_cli({"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "3", "--trace", same, "--states", same});
+    CHECK(r.code == 2);
+    CHECK(r.err == "impulse-lab: --states: '" + same +
+                       "' is also --trace's file: one output would replace the other; choose another file\n");
+    CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(same));
+}
+
+TEST_CASE("no output replaces the file it is made from: run, resolve, worksheet and inspect") {
+    TempDir dir;
+    const std::string scene = dir.write("scene.json", read_text(IMPULSE_SOURCE_DIR "/scenes/stack_3.json")).string();
+    const std::string before = read_text(scene);
+    std::filesystem::create_symlink(scene, dir.file("link.json"));
+    const std::vector<std::vector<std::string>> commands{
+        {"run", scene, "--frames", "2", "--trace", scene},
+        {"run", scene, "--frames", "2", "--states", dir.file("link.json").string()},
+        {"resolve", scene, "--trace", dir.file("./scene.json").string()},
+        {"worksheet", scene, "--frames", "1", "--out", scene},
+        {"inspect", scene, "--headless", "--screenshot", scene},
+    };
+    for (const std::vector<std::string>& args : commands) {
+        CAPTURE(args[0]);
+        const CliResult r = run_cli(args);
+        CHECK(r.code == 2);
+        CHECK(r.err.find("which this command reads: writing it would replace it") != std::string::npos);
+        CHECK(read_text(scene) == before);
+    }
+}
+
+TEST_CASE("diff --out cannot replace a student's file, the reference, or a report file with another") {
+    TempDir dir;
+    std::filesystem::create_directory(dir.file("class"));
+    const std::string sheet = dir.file("class/ada.csv").string();
+    REQUIRE(run_cli({"worksheet", ruler, "--out", sheet}).code == 0);
+    REQUIRE(run_cli({"worksheet", ruler, "--out", dir.file("class/summary.csv").string()}).code == 0);
+    const std::string before = read_text(sheet);
+    // One file: --out over the student's file.
+    CliResult r = run_cli({"diff", ruler, sheet, "--out", sheet});
+    CHECK(r.code == 2);
+    CHECK(r.err.find("which this command reads: writing it would replace it") != std::string::npos);
+    // A class: the report into the class folder would replace its summary.csv (a student's file).
+    r = run_cli({"diff", ruler, dir.file("class").string(), "--out", dir.file("class").string()});
+    CHECK(r.code == 2);
+    CHECK(read_text(sheet) == before);
+    CHECK_FALSE(std::filesystem::exists(dir.file("class/cells.csv")));
+}
+
+TEST_CASE("a temporary left by a writer that was killed is removed by the next write to the same file") {
+    // SIGKILL during a write left a hidden temporary that nothing ever removed.
+    TempDir dir;
+    const std::string trace = dir.file("trace.json").string();
+    // A writer killed mid-write: its process is gone (a child that exited), its temporary is left.
+    const pid_t gone = ::fork();
+    if (gone == 0) ::_exit(0);
+    ::waitpid(gone, nullptr, 0);
+    const auto orphan = dir.write(".trace.json.tmp-" + std::to_string(gone) + "-Ab12Cd", "{\"half\": ");
+    // One whose writer still runs (this process) is not an orphan.
+    const auto live = dir.write(".trace.json.tmp-" + std::to_string(::getpid()) + "-Ef34Gh", "{\"being written");
+    REQUIRE(run_cli({"resolve", ruler, "--trace", trace}).code == 0);
+    CHECK_FALSE(std::filesystem::exists(orphan));
+    CHECK(std::filesystem::exists(live));
+    CHECK(std::filesystem::exists(trace));
+}

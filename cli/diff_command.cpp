@@ -185,20 +185,35 @@ std::vector<Submission> files_named(const std::vector<std::string>& others, bool
             continue;
         }
         folder = true;
-        std::vector<std::string> inside;
-        for (const auto& entry : fs::directory_iterator(other, error))
-            if (entry.is_regular_file(error) && !entry.path().filename().string().starts_with("."))
-                inside.push_back(entry.path().string());
+        // Every entry gets its row or is skipped for a stated reason, whatever order the folder lists them in: a
+        // link that points nowhere was once the whole folder's error, or no row at all.
+        std::vector<Submission> inside;
+        fs::directory_iterator it(other, error);
         if (error) throw formats::FileError{other, "", "cannot list the folder: " + error.message()};
-        if (inside.empty()) throw formats::FileError{other, "", "is a folder without files to compare"};
-        std::sort(inside.begin(), inside.end());
-        for (const std::string& file : inside) {
-            const std::string extension = lowered_extension(file);
-            files.push_back({file, extension == ".json" || extension == ".csv"
-                                       ? ""
-                                       : "not a worksheet or trace: only .json and .csv files are read (save a "
-                                         "spreadsheet as CSV, comma-separated)"});
+        for (; it != fs::directory_iterator(); it.increment(error)) {
+            if (error) throw formats::FileError{other, "", "cannot list the folder: " + error.message()};
+            const fs::path path = it->path();
+            if (path.filename().string().starts_with(".")) continue;
+            std::error_code kind;
+            const fs::file_status status = fs::status(path, kind);  // through links
+            if (fs::is_directory(status)) continue;
+            const std::string extension = lowered_extension(path.string());
+            const bool link = fs::is_symlink(fs::symlink_status(path, kind));
+            inside.push_back(
+                {path.string(),
+                 fs::is_regular_file(status)
+                     ? (extension == ".json" || extension == ".csv"
+                            ? ""
+                            : "not a worksheet or trace: only .json and .csv files are read (save a spreadsheet as "
+                              "CSV, comma-separated)")
+                 : link && !fs::exists(status)
+                     ? "a link to " + fs::read_symlink(path, kind).string() + ", which does not exist"
+                     : "not a file (a FIFO, a socket or a device): not read"});
         }
+        if (inside.empty()) throw formats::FileError{other, "", "is a folder without files to compare"};
+        std::sort(inside.begin(), inside.end(),
+                  [](const Submission& a, const Submission& b) { return a.file < b.file; });
+        files.insert(files.end(), inside.begin(), inside.end());
     }
     return files;
 }

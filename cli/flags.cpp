@@ -172,7 +172,13 @@ std::string parse_error_line(const CLI::App& app, const FlagCatalog& catalog, co
     if (dynamic_cast<const CLI::ArgumentMismatch*>(&error)) {
         // "--frames: 1 required N missing": the value is missing.
         const std::string flag = text.substr(0, text.find(':'));
-        if (const CLI::Option* option = scope.get_option_no_throw(flag)) {
+        // CLI11 says the same of a flag given twice ("--frames 2 --frames 3" has one value too many).
+        const auto given = std::count_if(args.begin(), args.end(), [&flag](const std::string& word) {
+            return word == flag || word.starts_with(flag + "=");
+        });
+        if (given > 1)
+            text = flag + ": given " + std::to_string(given) + " times; it takes one value, give it once";
+        else if (const CLI::Option* option = scope.get_option_no_throw(flag)) {
             const auto words = catalog.value_words.find(option);
             const std::string name = option->get_type_name().empty() ? "a value" : option->get_type_name();
             text = flag + ": needs a value: " + (words != catalog.value_words.end() ? words->second : name);

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 
@@ -47,9 +48,11 @@ void append_states(std::string& csv, int frame, double time, const Scene& scene,
     }
 }
 
+// A number with `decimals` after the point, or in exponent form once that would be long (a run of gravity
+// −1e308 has depths of 300 digits: a fixed-width row cut them, and its line break with them).
 std::string fixed(double v, int decimals) {
     char text[64];
-    std::snprintf(text, sizeof text, "%.*f", decimals, v);
+    std::snprintf(text, sizeof text, std::abs(v) < 1e12 ? "%.*f" : "%.*g", std::abs(v) < 1e12 ? decimals : 4, v);
     return text;
 }
 
@@ -94,10 +97,11 @@ void write_summary(std::ostream& out, const RunSummary& s, const Scene& scene, c
         if (r.deepest_penetration > deepest) deepest = r.deepest_penetration, deepest_frame = r.frame;
         if (r.frame % every != 0 && r.frame != frames - 1) continue;
         char line[160];
-        std::snprintf(line, sizeof line, "  %5d  %8.3f  %8d  %10.3f  %10.4g  %8.3f\n", r.frame, (r.frame + 1) * dt,
-                      r.contacts, r.deepest_penetration * 1e3, r.kinetic_energy,
-                      (r.times.integrate + r.times.broad_phase + r.times.narrow_phase + r.times.resolve) * 1e3);
-        out << line;
+        std::snprintf(
+            line, sizeof line, "  %5d  %8s  %8d  %10s  %10.4g  %8s", r.frame, fixed((r.frame + 1) * dt, 3).c_str(),
+            r.contacts, fixed(r.deepest_penetration * 1e3, 3).c_str(), r.kinetic_energy,
+            fixed((r.times.integrate + r.times.broad_phase + r.times.narrow_phase + r.times.resolve) * 1e3, 3).c_str());
+        out << line << '\n';
     }
     const double n = std::max(1, frames);
     out << "  per frame: integrate " << fixed(total.integrate / n * 1e3, 3) << " ms, broad phase "

@@ -107,6 +107,8 @@ std::string question_quantity(const Question& question, model::Stage stage) {
 }
 
 Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file) {
+    // An editor on Windows saves UTF-8 with a byte-order mark: it is no part of the text (the header was refused).
+    if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);
     Lesson lesson;
     lesson.file = file;
     lesson.name = file.stem().string();

@@ -3,6 +3,7 @@
 #include "formats/input_error.hpp"
 
 #include <algorithm>
+#include <climits>
 
 namespace impulse::course {
 
@@ -62,11 +63,13 @@ AnswerVerdict LessonRun::answer(std::string_view typed) {
     states_[i] = verdict.correct ? QuestionState::answered : QuestionState::open;
     feedback_[i] = verdict.feedback;
     given_[i] = std::string(typed);
-    ++tries_[i];
+    // Counts stop at the largest int rather than wrap negative (a negative count made the next start throw the
+    // progress file aside).
+    if (tries_[i] < INT_MAX) ++tries_[i];
     if (AnswerRecord* r = record(step_)) {
         r->answer = std::string(typed);
         r->correct = verdict.correct;
-        ++r->tries;
+        if (r->tries < INT_MAX) ++r->tries;
         save();
     }
     return verdict;

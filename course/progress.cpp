@@ -11,7 +11,10 @@
 #include <cstdint>
 #include <limits>
 #include <cstdlib>
+#include <cerrno>
+#include <cstdio>
 #include <ctime>
+#include <fcntl.h>
 
 namespace impulse::course {
 
@@ -127,9 +130,20 @@ LoadedProgress load_progress(const std::filesystem::path& file) {
     } catch (const std::exception& e) {
         why = e.what();
     }
-    // Kept aside, never deleted: the student (or a teacher) may want to look at it.
-    const std::filesystem::path aside = file.string() + ".corrupt-" + time_stamp();
-    std::filesystem::rename(file, aside, error);
+    // Kept aside, never deleted: the student (or a teacher) may want to look at it. Two corrupt files within one
+    // second (a second start of the same broken file, a file broken again) each keep their own name: the rename
+    // never replaces a file already there (-2, -3, ... after the time).
+    std::filesystem::path aside;
+    const std::string stamp = file.string() + ".corrupt-" + time_stamp();
+    for (int n = 1; n <= 1000; ++n) {
+        aside = n == 1 ? stamp : stamp + "-" + std::to_string(n);
+        if (::renameat2(AT_FDCWD, file.c_str(), AT_FDCWD, aside.c_str(), RENAME_NOREPLACE) == 0) {
+            error.clear();
+            break;
+        }
+        error = std::error_code(errno, std::generic_category());
+        if (errno != EEXIST) break;
+    }
     return {{},
             "progress file " + file.string() + " is unreadable (" + why + "); " +
                 (error ? "it is left where it is and progress starts afresh"

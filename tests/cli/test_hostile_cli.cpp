@@ -8,9 +8,11 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -121,4 +123,47 @@ TEST_CASE("a temporary left by a writer that was killed is removed by the next w
     CHECK_FALSE(std::filesystem::exists(orphan));
     CHECK(std::filesystem::exists(live));
     CHECK(std::filesystem::exists(trace));
+}
+
+TEST_CASE("a flag given twice is named as given twice, not as missing its value") {
+    // `--frames 2 --frames 3` said "--frames: needs a value".
+    const CliResult r = run_cli({"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "2", "--frames", "3"});
+    CHECK(r.code == 2);
+    CHECK(r.err ==
+          "impulse-lab: --frames: given 2 times; it takes one value, give it once; see impulse-lab run --help\n");
+}
+
+TEST_CASE("a run of gravity -1e308 keeps its summary rows one per line") {
+    // The depths came to 300 digits; the fixed-width row was cut, and its line break with it.
+    TempDir dir;
+    std::string scene = read_text(IMPULSE_SOURCE_DIR "/scenes/stack_3.json");
+    scene.insert(scene.find('{') + 1, "\"gravity\": [0, -1e308, 0], ");
+    const CliResult r = run_cli({"run", dir.write("heavy.json", scene).string(), "--frames", "30"});
+    CHECK(r.code == 0);
+    std::istringstream lines(r.out);
+    std::string line;
+    std::size_t rows = 0;
+    while (std::getline(lines, line))
+        if (line.size() > 2 && line[2] == ' ' && std::isdigit(static_cast<unsigned char>(line[6]))) {
+            ++rows;
+            CHECK_MESSAGE(line.size() < 80, line);
+        }
+    CHECK(rows == 16);  // frames 0, 2, ..., 28 and the last, 29
+}
+
+TEST_CASE("a class folder's broken link and FIFO get a row each, whatever order the folder lists them in") {
+    // A bad symlink was the whole folder's error ("cannot list the folder"), or skipped with no row.
+    TempDir dir;
+    std::filesystem::create_directory(dir.file("class"));
+    REQUIRE(run_cli({"worksheet", ruler, "--out", dir.file("class/ben.csv").string()}).code == 0);
+    std::filesystem::create_symlink(dir.file("gone.csv"), dir.file("class/ada.csv"));
+    std::filesystem::create_symlink(dir.file("gone.csv"), dir.file("class/zed.csv"));
+    REQUIRE(::mkfifo(dir.file("class/pipe.csv").c_str(), 0600) == 0);
+    const CliResult r = run_cli({"diff", ruler, dir.file("class").string(), "--format", "csv"});
+    CHECK(r.code == 1);
+    CHECK(r.out.find("ada.csv,,,,,,,,,\"a link to " + dir.file("gone.csv").string() + ", which does not exist\"") !=
+          std::string::npos);
+    CHECK(r.out.find("zed.csv,,,,,,,,,\"a link to ") != std::string::npos);
+    CHECK(r.out.find("pipe.csv,,,,,,,,,\"not a file (a FIFO, a socket or a device): not read\"") != std::string::npos);
+    CHECK(r.out.find("ben.csv,worksheet,89,0,0,89,0.0,") != std::string::npos);
 }

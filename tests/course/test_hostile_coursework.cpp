@@ -2,6 +2,9 @@
 // each case is named after what went wrong before it was held.
 
 #include "course/json_path.hpp"
+#include "course/lesson.hpp"
+#include "course/lesson_run.hpp"
+#include "course/progress.hpp"
 #include "course/worksheet.hpp"
 #include "formats/csv.hpp"
 #include "formats/json_text.hpp"
@@ -13,6 +16,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <climits>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -273,4 +278,51 @@ TEST_CASE("a worksheet of a trace with a changed iteration number is refused, no
     CHECK(r.err == "impulse-lab: " + file +
                        ": frames[0].phases[0].iterations[0].iteration: must be 0 (iterations are numbered in order "
                        "from 0), got 2147483647\n");
+}
+
+TEST_CASE("two corrupt progress files within one second keep a backup each") {
+    // The second rename replaced the first backup: one student's progress was lost.
+    TempDir dir;
+    const std::filesystem::path file = dir.file("progress.json");
+    dir.write("progress.json", "{ broken one");
+    const course::LoadedProgress first = course::load_progress(file);
+    dir.write("progress.json", "{ broken two");
+    const course::LoadedProgress second = course::load_progress(file);
+    CHECK(first.note.find("kept as progress.json.corrupt-") != std::string::npos);
+    CHECK(second.note.find("kept as progress.json.corrupt-") != std::string::npos);
+    std::vector<std::string> kept;
+    for (const auto& entry : std::filesystem::directory_iterator(dir.file(".")))
+        kept.push_back(read_text(entry.path()));
+    std::sort(kept.begin(), kept.end());
+    CHECK(kept == std::vector<std::string>{"{ broken one", "{ broken two"});
+}
+
+TEST_CASE("a tries count at the integer limit stays there instead of wrapping negative") {
+    // 2147483647 + 1 wrapped to a negative count, and the next start threw all progress aside.
+    TempDir dir;
+    const std::filesystem::path file = dir.file("progress.json");
+    const course::PreparedLesson lesson =
+        course::prepare_lesson(course::read_lesson(course::lesson_files(IMPULSE_SOURCE_DIR "/lessons").front()));
+    course::Progress progress;
+    course::LessonRun run(lesson, &progress, file);
+    int question = 0;
+    while (question < run.step_count() && !lesson.lesson.steps[static_cast<std::size_t>(question)].question) ++question;
+    REQUIRE(question < run.step_count());
+    run.go_to(question);
+    progress.lessons[lesson.lesson.name].answers[run.current().id].tries = INT_MAX;
+    run.answer("123456789");  // wrong
+    CHECK(progress.lessons[lesson.lesson.name].answers[run.current().id].tries == INT_MAX);
+    const course::LoadedProgress loaded = course::load_progress(file);
+    CHECK(loaded.note.empty());
+    CHECK(loaded.progress.lessons.at(lesson.lesson.name).answers.at(run.current().id).tries == INT_MAX);
+}
+
+TEST_CASE("a lesson file that starts with a UTF-8 byte-order mark is read") {
+    // It was refused: "line 1: a lesson starts with its header in a ```json block".
+    const std::filesystem::path first = course::lesson_files(IMPULSE_SOURCE_DIR "/lessons").front();
+    const std::string text = "\xEF\xBB\xBF" + read_text(first);
+    const course::Lesson with_mark = course::read_lesson_text(text, first);
+    const course::Lesson without = course::read_lesson_text(read_text(first), first);
+    CHECK(with_mark.title == without.title);
+    CHECK(with_mark.steps.size() == without.steps.size());
 }

@@ -15,6 +15,7 @@
 #include "settings/settings.hpp"
 #include "body/integrate.hpp"
 
+#include <atomic>
 #include <memory_resource>
 #include <span>
 #include <vector>
@@ -42,7 +43,20 @@ struct FrameContext {
     Forces forces;
     // Where a method takes its buffers for the frame (memory/frame_arena.hpp; the heap when no world keeps one).
     std::pmr::memory_resource* scratch = std::pmr::new_delete_resource();
+    // Set from outside (a program's Ctrl-C) to cut the frame short; null when nothing can. Each method's loop
+    // looks at it every stop_check_visits visits or once a sweep: one relaxed load, so a frame of 1e8 iterations
+    // still stops within milliseconds. A method that stops for it sets `cut_short`; the frame is then unfinished.
+    const std::atomic<bool>* stop = nullptr;
+    bool cut_short = false;
+
+    bool stop_requested() {
+        if (stop && stop->load(std::memory_order_relaxed)) cut_short = true;
+        return cut_short;
+    }
 };
+
+// How often (in visits) an iteration loop looks at FrameContext::stop.
+inline constexpr int stop_check_visits = 256;
 
 using MethodFunction = PhaseOutcome (*)(FrameContext& frame);
 

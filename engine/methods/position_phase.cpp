@@ -63,6 +63,7 @@ PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, M
     PositionPhaseState state{std::vector<double>(frame.bodies.size(), 0.0)};
     WorstFirstSelector selector = penetration_selector(frame, movable);
     while (outcome.iterations_used < outcome.iteration_limit) {
+        if (outcome.iterations_used % stop_check_visits == 0 && frame.stop_requested()) break;
         const std::optional<int> chosen = selector.worst(settings.position_epsilon);
         if (!chosen) break;
         const double penetration = frame.contacts[static_cast<std::size_t>(*chosen)].penetration;

@@ -196,7 +196,7 @@ PhaseOutcome solve(FrameContext& frame) {
     const double epsilon_squared = settings.velocity_epsilon * settings.velocity_epsilon;
     bool converged = pgs.active_count() == 0;
     int sweeps = 0;
-    for (; sweeps < settings.sweeps && !converged; ++sweeps)
+    for (; sweeps < settings.sweeps && !converged && !frame.stop_requested(); ++sweeps)
         converged = pgs.sweep<recording>(sweeps) <= epsilon_squared;
     pgs.finish(frame.memory);
     if constexpr (!recording) frame.recorder.contacts_visited(pgs.last_visited(sweeps));

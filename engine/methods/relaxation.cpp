@@ -32,7 +32,7 @@ PhaseOutcome relaxation_positions(FrameContext& frame) {
     PositionPhaseState state{std::vector<double>(frame.bodies.size(), 0.0)};
     WorstFirstSelector selector = penetration_selector(frame, nullptr);
     bool cut_short = false;  // the iteration limit stopped a pass with a contact still waiting for its turn
-    for (int pass = 0; pass < settings.relaxation.passes && !cut_short; ++pass) {
+    for (int pass = 0; pass < settings.relaxation.passes && !cut_short && !frame.cut_short; ++pass) {
         if (!any_penetration_above(contacts, settings.position_epsilon)) break;
         if (pass > 0) selector.restart();  // every contact gets a turn again
         while (const std::optional<int> chosen = selector.worst(settings.position_epsilon)) {
@@ -40,6 +40,7 @@ PhaseOutcome relaxation_positions(FrameContext& frame) {
                 cut_short = true;
                 break;
             }
+            if (outcome.iterations_used % stop_check_visits == 0 && frame.stop_requested()) break;
             selector.set_aside(*chosen);  // one visit per pass
             const double amount =
                 settings.relaxation.fraction * contacts[static_cast<std::size_t>(*chosen)].penetration;

@@ -42,6 +42,7 @@ PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
     const ContactsByBody by_body(contacts, bodies.size());  // so a visit updates its neighbours, not every contact
     std::vector<int> sharing;
     for (int pass = 0; pass < settings.sweeps; ++pass) {
+        if (frame.stop_requested()) break;
         bool resolved_any = false;
         for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
             const PreparedContact& contact = contacts[static_cast<std::size_t>(i)];

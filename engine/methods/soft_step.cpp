@@ -98,17 +98,17 @@ public:
     void run() {
         const Forces& f = frame_.forces;
         const int substeps = settings_.soft_step.substeps;
-        for (int substep = 0; substep < substeps; ++substep) {
+        for (int substep = 0; substep < substeps && !frame_.stop_requested(); ++substep) {
             for (RigidBody& body : frame_.bodies) integrate_velocity(body, f.gravity, substep_, f.damping);
             load_velocities();
             warm_start<recording>(substep);
-            for (int pass = 0; pass < settings_.sweeps; ++pass)
+            for (int pass = 0; pass < settings_.sweeps && (pass % 64 != 0 || !frame_.stop_requested()); ++pass)
                 sweep<recording, true>({substep, pass, SolverStage::solve});
             store_velocities(bodies_, frame_.bodies);
             for (RigidBody& body : frame_.bodies) integrate_position(body, substep_, settings_.orientation_update);
             track_moves();
             // The first relax sweep finds each contact's p as it visits it (the bodies move only here).
-            for (int pass = 0; pass < settings_.sweeps; ++pass)
+            for (int pass = 0; pass < settings_.sweeps && (pass % 64 != 0 || !frame_.stop_requested()); ++pass)
                 if (pass == 0)
                     sweep<recording, false, true>({substep, pass, SolverStage::relax});
                 else

@@ -74,7 +74,7 @@ PhaseOutcome push_apart(FrameContext& frame) {
     outcome.iteration_limit = std::max(settings.sweeps, 0) * static_cast<int>(rows.size());
     bool converged = rows.empty();
     int pass = 0;
-    for (; pass < settings.sweeps && !converged; ++pass) {
+    for (; pass < settings.sweeps && !converged && !frame.stop_requested(); ++pass) {
         double largest = 0.0;
         for (std::size_t r = 0; r < rows.size(); ++r) {
             ContactRow& row = rows[r];

@@ -21,6 +21,7 @@ PhaseOutcome worst_first_velocities(FrameContext& frame) {
     for (std::size_t i = 0; i < contacts.size(); ++i) eligible[i] = !contacts[i].derivation.inert;
     WorstFirstSelector selector(settings.worst_first_search, contacts, bodies.size(), desired_of, std::move(eligible));
     while (outcome.iterations_used < outcome.iteration_limit) {
+        if (outcome.iterations_used % stop_check_visits == 0 && frame.stop_requested()) break;
         const std::optional<int> chosen = selector.worst(settings.velocity_epsilon);
         if (!chosen) break;
         const PreparedContact& contact = contacts[static_cast<std::size_t>(*chosen)];

@@ -8,7 +8,8 @@ namespace impulse {
 
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
                                    const ResolverSettings& settings, Recorder& recorder, int frame,
-                                   ContactMemory* memory, const Forces& forces, std::pmr::memory_resource* scratch) {
+                                   ContactMemory* memory, const Forces& forces, std::pmr::memory_resource* scratch,
+                                   const std::atomic<bool>* stop) {
     const std::vector<MassProperties> mass = mass_properties(bodies);
     recorder.begin_frame(frame, bodies, mass);
     const MethodRow<VelocityMethod>& velocities = method_row(settings.velocity_method);
@@ -31,16 +32,17 @@ ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<con
         prepare_rows(contacts, bodies, settings, reads(ContactsRead::rows_and_velocity), rows);
     }
 
-    FrameContext context{bodies, prepared, rows, mass, settings, recorder, memory, forces, scratch};
+    FrameContext context{bodies, prepared, rows, mass, settings, recorder, memory, forces, scratch, stop};
     ResolutionSummary summary;
     // A method that owns the whole step runs after an empty position phase, whatever the phase order.
     if (settings.phase_order == PhaseOrder::positions_first || velocities.scope == MethodScope::whole_step) {
         summary.position = positions.solve(context);
-        summary.velocity = velocities.solve(context);
+        if (!context.cut_short) summary.velocity = velocities.solve(context);
     } else {
         summary.velocity = velocities.solve(context);
-        summary.position = positions.solve(context);
+        if (!context.cut_short) summary.position = positions.solve(context);
     }
+    summary.cut_short = context.cut_short;
     recorder.end_frame(bodies);
     return summary;
 }

@@ -18,6 +18,7 @@ namespace impulse {
 struct ResolutionSummary {
     PhaseOutcome position;
     PhaseOutcome velocity;
+    bool cut_short = false;  // `stop` was set and a method stopped for it: the frame is unfinished
 
     bool operator==(const ResolutionSummary&) const = default;
 };
@@ -28,11 +29,13 @@ struct ResolutionSummary {
 // normals. `memory` carries warm-starting solvers' impulses from frame to frame (nothing = start cold every
 // frame). A velocity method that owns the whole step integrates the bodies itself under `forces` (none: they
 // move by their velocities over settings.duration while it resolves the contacts). The frame's buffers come
-// from `scratch` (a world's FrameArena; the heap by default).
+// from `scratch` (a world's FrameArena; the heap by default). `stop`, when set while it runs, cuts the frame
+// short (FrameContext::stop): the phase after is not run.
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
                                    const ResolverSettings& settings, Recorder& recorder, int frame = 0,
                                    ContactMemory* memory = nullptr, const Forces& forces = {},
-                                   std::pmr::memory_resource* scratch = std::pmr::new_delete_resource());
+                                   std::pmr::memory_resource* scratch = std::pmr::new_delete_resource(),
+                                   const std::atomic<bool>* stop = nullptr);
 
 // The same with nobody listening.
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,

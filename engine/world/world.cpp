@@ -142,7 +142,7 @@ StepReport World::step(Recorder& recorder) {
     LastTouch touch(recorder, detection.contacts, bodies_.size());
     FrameArena::Frame scratch(arena_);
     report.resolution = resolve_contacts(bodies_, detection.contacts, scene_.settings, touch, frame_, &memory_,
-                                         Forces{scene_.world.gravity, damping}, scratch.resource());
+                                         Forces{scene_.world.gravity, damping}, scratch.resource(), stop_);
     report.times.resolve = seconds_since(start);
 
     report.non_finite = first_non_finite(bodies_, touch);

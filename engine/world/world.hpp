@@ -16,6 +16,7 @@
 #include "scene/scene.hpp"
 #include "world/non_finite_check.hpp"
 
+#include <atomic>
 #include <optional>
 #include <span>
 #include <vector>
@@ -74,6 +75,10 @@ public:
     // Back to the scene's start: its bodies, an empty memory, frame 0.
     void reset();
 
+    // A flag that, once set (from a signal handler, say), cuts the step in progress short: its report says
+    // resolution.cut_short, and its bodies are as far as the resolution got. Null (the default): nothing can.
+    void set_stop_flag(const std::atomic<bool>* stop) { stop_ = stop; }
+
     const Scene& scene() const { return scene_; }  // as created: shapes, materials, settings, bodies at the start
     const ResolverSettings& settings() const { return scene_.settings; }
     const std::vector<RigidBody>& bodies() const { return bodies_; }  // now: after frame() frames
@@ -88,6 +93,7 @@ private:
     int frame_ = 0;
     std::vector<PrincipalInertia> principal_;  // per body, for the step report's kinetic energy
     FrameArena arena_;                         // the resolution's buffers, kept from frame to frame
+    const std::atomic<bool>* stop_ = nullptr;  // set_stop_flag
     Detection detection_;  // the last step's contacts; their list's room is kept from frame to frame
 };
 

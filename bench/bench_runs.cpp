@@ -27,7 +27,7 @@ std::vector<double> time_window(const World& start, int frames, Recorder& record
     times.reserve(static_cast<std::size_t>(frames));
     for (int frame = 0; frame < frames; ++frame) {
         const auto begin = Clock::now();
-        world.step(recorder);
+        if (world.step(recorder).over_contact_budget) throw formats::contact_budget_error(world.frame());
         times.push_back(seconds_since(begin));
         if (trace) trace->frames.clear();
     }
@@ -85,6 +85,7 @@ RunResult run_configuration(const std::string& scene_text, const BenchScene& spe
         const auto begin = Clock::now();
         const StepReport report = world.step(nobody);
         const double elapsed = seconds_since(begin);
+        if (report.over_contact_budget) throw formats::contact_budget_error(frame);
         if (frame >= warm_up && frame < warm_up + window) times.push_back(elapsed);
         contacts += report.contacts;
         if (!tracker.observe(frame, world.bodies(), report)) {

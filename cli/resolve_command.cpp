@@ -32,8 +32,13 @@ int resolve_command(const ResolveOptions& options, std::ostream& out, std::ostre
     for (const std::string& spec : options.record) formats::apply_record_spec(spec, recording);
     std::optional<int> stopped_at;
     std::optional<model::BrokenRun> broken;
-    const Trace trace = model::resolve_once(scene, recording,
-                                            {formats::trace_budget_bytes(options.max_trace_mb), &stopped_at}, &broken);
+    Trace trace;
+    try {
+        trace = model::resolve_once(scene, recording, {formats::trace_budget_bytes(options.max_trace_mb), &stopped_at},
+                                    &broken);
+    } catch (const formats::ContactBudgetError& e) {
+        throw formats::FileError{formats::input_name(options.case_file), e.where(), e.problem()};
+    }
     if (stopped_at) err << formats::trace_stopped_note(*stopped_at, options.max_trace_mb) << '\n';
     // One frame, and it broke: there is nothing before it to write.
     if (broken) {

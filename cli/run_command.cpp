@@ -213,6 +213,10 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     for (int frame = 0; frame < frames; ++frame) {
         if ((interrupted = interrupt_received())) break;
         reports.push_back(world.step(recorder));
+        if (reports.back().over_contact_budget) {
+            const formats::InputError e = formats::contact_budget_error(frame);
+            throw formats::FileError{scene_name, e.where(), e.problem()};
+        }
         if (reports.back().non_finite) {
             broken_frame = frame;
             break;

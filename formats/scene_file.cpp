@@ -7,6 +7,7 @@
 #include "formats/settings_json.hpp"
 #include "formats/suggest.hpp"
 #include "math/rotation.hpp"
+#include "world/world.hpp"
 
 #include <cmath>
 #include <map>
@@ -249,6 +250,12 @@ json scene_json(const Scene& c, bool with_settings) {
     out["contacts"] = contacts;
     if (with_settings) out["settings"] = settings_json(c.settings, c.world);
     return out;
+}
+
+ContactBudgetError contact_budget_error(int frame) {
+    return ContactBudgetError("frame " + std::to_string(frame),
+                              "the bodies' shapes touch in more than " + std::to_string(max_contacts_per_frame) +
+                                  " contacts, more than a frame may resolve (are many bodies piled at one point?)");
 }
 
 }  // namespace impulse::formats

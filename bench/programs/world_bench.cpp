@@ -44,6 +44,7 @@ Figures simulate(const Scene& scene, int frames) {
     const std::size_t top = highest_body(scene);
     for (int frame = 0; frame < frames; ++frame) {
         const StepReport r = world.step();
+        if (r.over_contact_budget) throw formats::contact_budget_error(frame);
         f.stage_ms.integrate += r.times.integrate * 1e3 / frames;
         f.stage_ms.broad_phase += r.times.broad_phase * 1e3 / frames;
         f.stage_ms.narrow_phase += r.times.narrow_phase * 1e3 / frames;
@@ -99,7 +100,12 @@ int main(int argc, char** argv) {
         }
         const int n = frames.value_or(scene.world.frames);
         std::vector<Figures> runs;
-        for (int r = 0; r < repeats; ++r) runs.push_back(simulate(scene, n));
+        try {
+            for (int r = 0; r < repeats; ++r) runs.push_back(simulate(scene, n));
+        } catch (const formats::InputError& e) {  // a frame past the contact budget
+            std::cerr << "impulse-bench-world: " << formats::input_name(file) << ": " << e.what() << '\n';
+            return 2;
+        }
         std::vector<Figures> sorted = runs;
         std::sort(sorted.begin(), sorted.end(),
                   [](const Figures& a, const Figures& b) { return a.frame_ms < b.frame_ms; });

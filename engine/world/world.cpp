@@ -79,11 +79,13 @@ void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Dete
     detection.pairs_tested = static_cast<int>(pairs.size());
 
     for (const auto& [i, j] : pairs) {
+        if (out.size() > max_contacts_per_frame) break;  // the frame will not be resolved: stop adding to it
         const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
         const std::size_t first = out.size();
         collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out);
         stamp_material(out, first, *materials[ui], *materials[uj]);
     }
+    detection.over_budget = out.size() > max_contacts_per_frame;
     if (times) {
         times->broad_phase += broad;
         times->narrow_phase += seconds_since(start) - broad;
@@ -135,6 +137,10 @@ StepReport World::step(Recorder& recorder) {
     report.contacts = static_cast<int>(detection.contacts.size());
     for (const Contact& c : detection.contacts)
         report.deepest_penetration = std::max(report.deepest_penetration, c.penetration);
+    if (detection.over_budget) {
+        report.over_contact_budget = true;
+        return report;
+    }
 
     // The memory is the world's own: every step of a run recalls the last one's impulses, so warm starting is
     // on whenever the settings ask for it.

@@ -30,9 +30,16 @@ struct StageTimes {
     double resolve = 0.0;       // s
 };
 
+// The most contacts one frame resolves. A box's pair test gives at most 8 contacts, a sphere's 1, so contacts per
+// pair are bounded by the shapes; the number of pairs is not: 3000 spheres at one point are 4.5 million pairs,
+// whose contacts took gigabytes before the resolver saw the first. 250,000 is 60 times the 1000-box grid's
+// 4000; a frame past it is not resolved (Detection::over_budget, StepReport::over_contact_budget).
+inline constexpr std::size_t max_contacts_per_frame = 250'000;
+
 struct Detection {
     std::vector<Contact> contacts;  // ground contacts in body order, then pairs in (i, j) order
     int pairs_tested = 0;           // pairs the broad phase handed to the pair tests
+    bool over_budget = false;       // the pair tests stopped past max_contacts_per_frame contacts
 };
 
 // Every contact between shaped bodies and with the ground, with the materials combined. Bodies without a
@@ -53,6 +60,8 @@ struct StepReport {
     ResolutionSummary resolution;
     StageTimes times;
     std::optional<NonFiniteBody> non_finite;  // set when the step left a body with a NaN or infinity
+    bool over_contact_budget = false;         // detection passed max_contacts_per_frame: nothing was resolved, and
+                                              // the caller must not step again
 };
 
 // The body that starts highest against gravity (the top of a stack): whose drift measures a stack's hold.

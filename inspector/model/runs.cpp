@@ -1,6 +1,7 @@
 #include "model/runs.hpp"
 
 #include "formats/input_error.hpp"
+#include "formats/scene_file.hpp"
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "world/world.hpp"
@@ -33,8 +34,14 @@ Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget
     Trace trace;
     trace.scene = scene;
     trace.recording = recording;
-    const std::vector<Contact> contacts =
-        scene.contacts.empty() ? detect_contacts(scene, scene.bodies).contacts : scene.contacts;
+    std::vector<Contact> contacts;
+    if (scene.contacts.empty()) {
+        Detection detection = detect_contacts(scene, scene.bodies);
+        if (detection.over_budget) throw formats::contact_budget_error(0);
+        contacts = std::move(detection.contacts);
+    } else {
+        contacts = scene.contacts;
+    }
     if (recording.contacts)
         for (int contact : *recording.contacts)
             if (contact >= static_cast<int>(contacts.size()))
@@ -65,6 +72,7 @@ Trace run_frames(const Scene& scene, const TraceFilter& recording, int frames, T
     TraceRecorder recorder(trace, budget.bytes);
     for (int frame = 0; frame < frames; ++frame) {
         const StepReport report = world.step(recorder);
+        if (report.over_contact_budget) throw formats::contact_budget_error(frame);
         if (report.non_finite) {
             end_trace_before(trace, frame);
             if (broken) *broken = BrokenRun{frame, *report.non_finite};

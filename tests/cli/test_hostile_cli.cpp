@@ -1,6 +1,7 @@
 // The program as an attacker or a careless user meets it (issue 29): each case is named after what went wrong
 // before it was held.
 
+#include "support/capped_run.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 #include "support/terminal.hpp"
@@ -166,4 +167,25 @@ TEST_CASE("a class folder's broken link and FIFO get a row each, whatever order 
     CHECK(r.out.find("zed.csv,,,,,,,,,\"a link to ") != std::string::npos);
     CHECK(r.out.find("pipe.csv,,,,,,,,,\"not a file (a FIFO, a socket or a device): not read\"") != std::string::npos);
     CHECK(r.out.find("ben.csv,worksheet,89,0,0,89,0.0,") != std::string::npos);
+}
+
+TEST_CASE("3000 spheres at one point are refused as more contacts than a frame may resolve, within 1 GiB") {
+    // A 138 KB scene of 3000 spheres at one point exhausted 4 GB (4.5 million touching pairs) and exited 70.
+    TempDir dir;
+    std::string bodies;
+    for (int i = 0; i < 3000; ++i)
+        bodies += std::string(i ? ", " : "") + R"({"name": "s)" + std::to_string(i) +
+                  R"(", "shape": {"type": "sphere", "radius": 0.5}, "position": [0, 1, 0]})";
+    const auto scene = dir.write("pile.json", R"({"bodies": [)" + bodies + "]}");
+    for (const std::string command : {"run", "resolve"}) {
+        CAPTURE(command);
+        std::vector<std::string> args{program, command, scene.string()};
+        if (command == "run") args.insert(args.end(), {"--frames", "2"});
+        const auto r = impulse::test::run_capped(args, 1ull << 30, 60);
+        CHECK(r.code == 2);
+        CHECK(r.err == "impulse-lab: " + scene.string() +
+                           ": frame 0: the bodies' shapes touch in more than 250000 contacts, more than a frame may "
+                           "resolve (are many bodies piled at one point?)\n");
+        MESSAGE(command << ": peak " << r.peak_kib / 1024 << " MiB, " << r.seconds << " s");
+    }
 }

@@ -1,0 +1,63 @@
+#pragma once
+// Runs a program as a child process under a memory cap (RLIMIT_AS) and a time limit, and keeps its exit, its
+// standard error and its peak resident memory: the tests that a hostile input is refused within bounded memory
+// (issue 29), which an in-process run cannot show.
+
+#include <chrono>
+#include <csignal>
+#include <cstddef>
+#include <fcntl.h>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace impulse::test {
+
+struct CappedResult {
+    int code = -1;         // the exit code, or 128 + the signal that ended it (SIGKILL at the time limit)
+    std::string err;       // its standard error
+    long peak_kib = 0;     // its peak resident memory (ru_maxrss), KiB
+    double seconds = 0.0;  // wall time
+};
+
+// `args` starts with the program's path; standard output goes to /dev/null, standard input is /dev/null.
+inline CappedResult run_capped(const std::vector<std::string>& args, std::size_t memory_bytes, int time_limit_s) {
+    char err_name[] = "/tmp/impulse-lab-capped-XXXXXX";
+    const int err_fd = ::mkstemp(err_name);
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t child = ::fork();
+    if (child == 0) {
+        const rlimit cap{memory_bytes, memory_bytes};
+        ::setrlimit(RLIMIT_AS, &cap);
+        const int null = ::open("/dev/null", O_RDWR);
+        ::dup2(null, STDIN_FILENO);
+        ::dup2(null, STDOUT_FILENO);
+        ::dup2(err_fd, STDERR_FILENO);
+        ::alarm(static_cast<unsigned>(time_limit_s));  // SIGALRM ends it: no test hangs on a run that does not stop
+        std::vector<char*> argv;
+        for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+        argv.push_back(nullptr);
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    CappedResult result;
+    int status = 0;
+    rusage usage{};
+    ::wait4(child, &status, 0, &usage);
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    result.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    result.peak_kib = usage.ru_maxrss;
+    ::close(err_fd);
+    std::ifstream in(err_name);
+    std::stringstream text;
+    text << in.rdbuf();
+    result.err = text.str();
+    ::unlink(err_name);
+    return result;
+}
+
+}  // namespace impulse::test

@@ -5,6 +5,7 @@
 #include "bench/bench_plan.hpp"
 #include "cli/commands.hpp"
 #include "cli/flags.hpp"
+#include "formats/atomic_file.hpp"
 #include "formats/input_files.hpp"
 #include "cli/interrupt.hpp"
 #include "formats/input_error.hpp"
@@ -487,6 +488,13 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         err << "impulse-lab: interrupted (" << signal_name(e.signal)
             << "): no file written, those already there are unchanged\n";
         return 128 + e.signal;
+    } catch (const formats::WaitInterrupted& e) {
+        // The signal was held back while the files were written and delivered as the wait gave up: `run`'s
+        // handler noted it; a command without one ended with it already.
+        const int signal = interrupt_received().value_or(SIGINT);
+        err << error_line("", "interrupted (" + std::string(signal_name(signal)) + ") while " + e.flag + " '" + e.path +
+                                  "' waited for its reader: it got nothing");
+        return 128 + signal;
     } catch (const formats::FileError& e) {
         err << error_line(e);
         return exit_bad_input;

@@ -7,7 +7,9 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <ostream>
 #include <ctime>
+#include <array>
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/stat.h>
@@ -60,6 +62,12 @@ bool interrupt_pending() {
 
 constexpr const char* interrupted_waiting = "interrupted while waiting for its reader";
 
+// Throws WaitInterrupted when `reason` says the wait for a reader was interrupted, else InputError.
+[[noreturn]] void fail_write(std::string_view flag, const fs::path& path, const std::string& reason) {
+    if (reason == interrupted_waiting) throw WaitInterrupted{std::string(flag), path.string()};
+    fail(flag, path, reason);
+}
+
 // Opens a FIFO, device or terminal for writing without blocking, or returns -1 and why not. A FIFO nobody reads
 // yet is waited for in short pauses, so that a Ctrl-C held back meanwhile still ends the wait.
 int open_in_place(const fs::path& target, std::string& reason) {
@@ -83,8 +91,8 @@ int open_in_place(const fs::path& target, std::string& reason) {
     }
 }
 
-// Writes all of `text` to an open FIFO, device or terminal; returns why it could not, or "". A reader that stops
-// reading is waited for in short polls, for the same reason as above.
+// Writes all of `text` to an open file, FIFO, device or terminal; returns why it could not, or "". A reader that
+// stops reading is waited for in short polls, for the same reason as above.
 std::string write_all(int fd, std::string_view text) {
     std::size_t written = 0;
     while (written < text.size()) {
@@ -101,16 +109,46 @@ std::string write_all(int fd, std::string_view text) {
     return {};
 }
 
-// Writes `text` in place. A reader that goes away gives an error (EPIPE) where the program's policy holds
-// SIGPIPE back, not a signal that would end the program between two files of a set.
-void write_in_place(const fs::path& target, std::string_view text, std::string_view flag, const fs::path& path) {
+// Writes everything the file `spool` holds to `fd`, a piece at a time, and leaves `spool` at its end for more
+// appends; returns why it could not, or "".
+std::string copy_all(int spool, int fd) {
+    if (::lseek(spool, 0, SEEK_SET) != 0) return std::strerror(errno);
+    std::array<char, 1 << 16> chunk{};
+    while (true) {
+        const ssize_t n = ::read(spool, chunk.data(), chunk.size());
+        if (n == 0) return {};
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return std::strerror(errno);
+        }
+        if (std::string reason = write_all(fd, std::string_view(chunk.data(), static_cast<std::size_t>(n)));
+            !reason.empty())
+            return reason;
+    }
+}
+
+// Writes what `spool` holds in place. A reader that goes away gives an error (EPIPE) where the program's policy
+// holds SIGPIPE back, not a signal that would end the program between two files of a set.
+void write_in_place(const fs::path& target, int spool, std::string_view flag, const fs::path& path) {
     std::string reason;
     const int fd = open_in_place(target, reason);
     if (fd >= 0) {
-        reason = write_all(fd, text);
+        reason = copy_all(spool, fd);
         if (::close(fd) != 0 && reason.empty() && errno != EINTR) reason = std::strerror(errno);
     }
-    if (!reason.empty()) fail(flag, path, reason);
+    if (!reason.empty()) fail_write(flag, path, reason);
+}
+
+// An anonymous file in `folder`: made and unlinked at once, so nothing is left of it whatever ends the program.
+int anonymous_file(const fs::path& folder, std::string& reason) {
+    std::string name = (folder / ".impulse-lab-spool-XXXXXX").string();
+    const int fd = ::mkstemp(name.data());
+    if (fd < 0) {
+        reason = std::strerror(errno);
+        return -1;
+    }
+    ::unlink(name.c_str());
+    return fd;
 }
 
 // A temporary's name: ".NAME.tmp-PID-XXXXXX" beside NAME, so that one left by a writer that was killed (SIGKILL,
@@ -162,54 +200,78 @@ OutputTarget output_target(const fs::path& path, std::string_view flag) {
     return {OutputKind::replaced, file};
 }
 
-StagedFile::StagedFile(const fs::path& path, std::string_view contents, std::string_view flag)
-    : path_(path), flag_(flag) {
+StagedFile::StagedFile(const fs::path& path, std::string_view flag) : path_(path), flag_(flag) {
     const OutputTarget target = output_target(path, flag);
     target_ = target.path;
     kind_ = target.kind;
+    std::string reason;
     if (kind_ == OutputKind::in_place) {
-        in_place_ = contents;
+        // Spooled until commit, on disk rather than in memory: a FIFO's reader gets the whole or nothing.
+        fd_ = anonymous_file(fs::temp_directory_path(), reason);
+        if (fd_ < 0) fail(flag, path, reason);
         pending_ = true;
         return;
     }
     remove_orphans(target_);
     std::string temporary =
         (folder_of(target_) / (temporary_prefix(target_) + std::to_string(::getpid()) + "-XXXXXX")).string();
-    const int fd = ::mkstemp(temporary.data());
-    if (fd < 0) fail(flag, path, std::strerror(errno));
+    fd_ = ::mkstemp(temporary.data());
+    if (fd_ < 0) fail(flag, path, std::strerror(errno));
     // mkstemp creates the file 0600: give it the permissions of the file it replaces, or those a newly created
     // file would have.
     struct stat old {};
     if (::stat(target_.c_str(), &old) == 0) {
-        ::fchmod(fd, old.st_mode & 07777);
+        ::fchmod(fd_, old.st_mode & 07777);
     } else {
         const mode_t mask = ::umask(0);
         ::umask(mask);
-        ::fchmod(fd, 0666 & ~mask);
-    }
-
-    std::size_t written = 0;
-    while (written < contents.size()) {
-        const ssize_t n = ::write(fd, contents.data() + written, contents.size() - written);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            const std::string reason = std::strerror(errno);
-            ::close(fd);
-            ::unlink(temporary.c_str());
-            fail(flag, path, reason);
-        }
-        written += static_cast<std::size_t>(n);
-    }
-    const bool synced = ::fsync(fd) == 0;
-    const std::string sync_reason = synced ? "" : std::strerror(errno);
-    const bool closed = ::close(fd) == 0;
-    if (!synced || !closed) {
-        const std::string reason = synced ? std::strerror(errno) : sync_reason;
-        ::unlink(temporary.c_str());
-        fail(flag, path, reason);
+        ::fchmod(fd_, 0666 & ~mask);
     }
     temporary_ = temporary;
     pending_ = true;
+}
+
+StagedFile::StagedFile(const fs::path& path, std::string_view contents, std::string_view flag)
+    : StagedFile(path, flag) {
+    append(contents);
+    finish();
+}
+
+void StagedFile::append(std::string_view text) {
+    if (const std::string reason = write_all(fd_, text); !reason.empty()) {
+        discard();
+        fail(flag_, path_, reason);
+    }
+    size_ += text.size();
+}
+
+void StagedFile::append(Spool& spool) {
+    std::string reason = spool.copy_to(fd_);
+    if (!reason.empty()) {
+        discard();
+        fail(flag_, path_, reason);
+    }
+    size_ += spool.size();
+}
+
+void StagedFile::finish() {
+    if (kind_ != OutputKind::replaced || fd_ < 0) return;
+    const bool synced = ::fsync(fd_) == 0;
+    const std::string sync_reason = synced ? "" : std::strerror(errno);
+    const bool closed = ::close(fd_) == 0;
+    fd_ = -1;
+    if (!synced || !closed) {
+        const std::string reason = synced ? std::strerror(errno) : sync_reason;
+        discard();
+        fail(flag_, path_, reason);
+    }
+}
+
+void StagedFile::discard() {
+    if (fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+    if (pending_ && kind_ == OutputKind::replaced) ::unlink(temporary_.c_str());
+    pending_ = false;
 }
 
 StagedFile::StagedFile(StagedFile&& other) noexcept
@@ -217,23 +279,33 @@ StagedFile::StagedFile(StagedFile&& other) noexcept
       target_(std::move(other.target_)),
       kind_(other.kind_),
       temporary_(std::move(other.temporary_)),
-      in_place_(std::move(other.in_place_)),
+      fd_(other.fd_),
+      size_(other.size_),
       pending_(other.pending_),
       flag_(std::move(other.flag_)) {
     other.temporary_.clear();
+    other.fd_ = -1;
     other.pending_ = false;
 }
 
 StagedFile::~StagedFile() {
-    if (pending_ && kind_ == OutputKind::replaced) ::unlink(temporary_.c_str());
+    discard();
 }
 
 void StagedFile::commit() {
     if (!pending_) return;
+    finish();
     pending_ = false;
     if (kind_ == OutputKind::in_place) {
-        const std::string text = std::move(in_place_);
-        write_in_place(target_, text, flag_, path_);
+        const int spool = fd_;
+        fd_ = -1;
+        try {
+            write_in_place(target_, spool, flag_, path_);
+        } catch (...) {
+            ::close(spool);
+            throw;
+        }
+        ::close(spool);
         return;
     }
     if (std::rename(temporary_.c_str(), target_.c_str()) != 0) {
@@ -241,6 +313,40 @@ void StagedFile::commit() {
         ::unlink(temporary_.c_str());
         fail(flag_, path_, reason);
     }
+}
+
+Spool::Spool(const fs::path& beside) {
+    std::string reason;
+    fd_ = anonymous_file(folder_of(beside), reason);
+    if (fd_ < 0) fd_ = anonymous_file(fs::temp_directory_path(), reason);
+    if (fd_ < 0) throw InputError("", "cannot make a temporary file: " + reason);
+}
+
+Spool::~Spool() {
+    if (fd_ >= 0) ::close(fd_);
+}
+
+void Spool::append(std::string_view text) {
+    if (const std::string reason = write_all(fd_, text); !reason.empty())
+        throw InputError("", "cannot write a temporary file: " + reason);
+    size_ += text.size();
+}
+
+std::string Spool::copy_to(int fd) const {
+    return copy_all(fd_, fd);
+}
+
+void Spool::copy_to(std::ostream& out) const {
+    ::lseek(fd_, 0, SEEK_SET);
+    std::array<char, 1 << 16> chunk{};
+    for (ssize_t n; (n = ::read(fd_, chunk.data(), chunk.size())) != 0;) {
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            throw InputError("", std::string("cannot read a temporary file: ") + std::strerror(errno));
+        }
+        out.write(chunk.data(), n);
+    }
+    ::lseek(fd_, 0, SEEK_END);
 }
 
 void set_write_interruptions(WriteInterruptions* policy) {

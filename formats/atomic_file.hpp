@@ -30,11 +30,34 @@ struct OutputTarget {
 // directory, a socket, a block device, a loop of links or a path through something that is not a folder.
 OutputTarget output_target(const std::filesystem::path& path, std::string_view flag);
 
-// A file written to its temporary name, waiting to be renamed into place. An output written in place keeps its
-// text until commit() writes it.
+// An anonymous file on disk that a long command appends to and reads back (a run's frames, until the trace's
+// head can be written before them): made and unlinked at once beside a path (else in the temporary folder), so
+// nothing of it is left whatever ends the program. Throws InputError("", ...) when it cannot be made or written.
+class Spool {
+public:
+    explicit Spool(const std::filesystem::path& beside);
+    ~Spool();
+    Spool(const Spool&) = delete;
+    Spool& operator=(const Spool&) = delete;
+
+    void append(std::string_view text);
+    std::size_t size() const { return size_; }
+    // Everything appended so far, to a file descriptor (returns why it could not, or "") or a stream.
+    std::string copy_to(int fd) const;
+    void copy_to(std::ostream& out) const;
+
+private:
+    int fd_ = -1;
+    std::size_t size_ = 0;
+};
+
+// A file written to its temporary name, waiting to be renamed into place; a long command may write it a piece at
+// a time (append), so that what it writes is on disk, not in memory. An output written in place (a FIFO, a
+// device) is spooled to an anonymous file until commit() writes it whole.
 class StagedFile {
 public:
     // Throws InputError(flag, "cannot write '<path>': <reason>"); no temporary is left behind.
+    StagedFile(const std::filesystem::path& path, std::string_view flag);
     StagedFile(const std::filesystem::path& path, std::string_view contents, std::string_view flag);
     ~StagedFile();  // removes the temporary unless committed
     StagedFile(StagedFile&& other) noexcept;
@@ -42,16 +65,34 @@ public:
     StagedFile& operator=(const StagedFile&) = delete;
     StagedFile& operator=(StagedFile&&) = delete;
 
-    void commit();  // renames it over the target (or writes it in place); throws InputError like the constructor
+    // Adds to the end; throws InputError like the constructor (the temporary is removed then).
+    void append(std::string_view text);
+    void append(Spool& spool);
+    std::size_t size() const { return size_; }  // bytes appended
+
+    // Renames it over the target (or writes it in place); throws InputError like the constructor, or
+    // WaitInterrupted when an interruption ends the wait for a FIFO's reader.
+    void commit();
 
 private:
+    void finish();   // flushes and closes the temporary
+    void discard();  // closes and removes the temporary
+
     std::filesystem::path path_;    // as the user named it, for messages
     std::filesystem::path target_;  // what is replaced or written
     OutputKind kind_ = OutputKind::replaced;
     std::string temporary_;  // replaced: the temporary's name until committed
-    std::string in_place_;   // in place: the text, until committed
+    int fd_ = -1;            // the temporary (replaced) or the spool (in place), open until committed
+    std::size_t size_ = 0;
     bool pending_ = false;
     std::string flag_;
+};
+
+// An interruption (Ctrl-C, SIGTERM held back by the program's policy) ended the wait for a FIFO's reader: the
+// program says so and exits as interrupted (130, 143), not as if the path were wrong.
+struct WaitInterrupted {
+    std::string flag;
+    std::string path;
 };
 
 // What the program does about interruptions while files are written. The formats layer knows no process

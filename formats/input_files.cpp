@@ -7,7 +7,9 @@
 #include <cerrno>
 #include <charconv>
 #include <cstring>
+#include <fcntl.h>
 #include <fstream>
+#include <poll.h>
 #include <sstream>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -39,18 +41,61 @@ std::string read_standard_input(std::size_t limit) {
     return text;
 }
 
+// A FIFO or character device: opened without blocking (a FIFO's open waits for a writer), then read as data
+// arrives, in polls short enough that a signal's handler runs between them.
+std::string read_special(const std::string& path, std::size_t limit, std::chrono::milliseconds silence) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0) throw FileError{path, "", std::string("cannot read: ") + std::strerror(errno)};
+    std::string text;
+    std::array<char, 1 << 16> chunk{};
+    const auto start = std::chrono::steady_clock::now();
+    bool spoke = false;  // something arrived
+    std::string problem;
+    while (problem.empty()) {
+        pollfd ready{fd, POLLIN, 0};
+        const int polled = ::poll(&ready, 1, 100);
+        if (polled < 0 && errno != EINTR) {
+            problem = std::string("cannot read: ") + std::strerror(errno);
+            break;
+        }
+        if (polled <= 0) {
+            if (!spoke && std::chrono::steady_clock::now() - start >= silence) {
+                const auto seconds = std::chrono::duration_cast<std::chrono::seconds>(silence).count();
+                problem = "nothing arrived within " +
+                          (seconds > 0 ? std::to_string(seconds) + " s" : std::to_string(silence.count()) + " ms") +
+                          ": a FIFO or device nobody writes to (start its writer first, or give a file)";
+            }
+            continue;
+        }
+        const ssize_t n = ::read(fd, chunk.data(), std::min(chunk.size(), limit + 1 - text.size()));
+        if (n > 0) {
+            spoke = true;
+            text.append(chunk.data(), static_cast<std::size_t>(n));
+            if (text.size() > limit) problem = "goes on past " + size_limit_text(limit);
+        } else if (n == 0) {
+            break;  // ready and nothing to read: the writer is done (or the device, /dev/null, has nothing)
+        } else if (errno != EAGAIN && errno != EINTR) {
+            problem = std::string("cannot read: ") + std::strerror(errno);
+        }
+    }
+    ::close(fd);
+    if (!problem.empty()) throw FileError{path, "", problem};
+    return text;
+}
+
 }  // namespace
 
 std::string input_name(const std::string& path) {
     return path == standard_stream ? "<stdin>" : path;
 }
 
-std::string read_input_file(const std::string& path, std::size_t limit) {
+std::string read_input_file(const std::string& path, std::size_t limit, std::chrono::milliseconds silence) {
     if (path == standard_stream) return read_standard_input(limit);
     struct stat info {};
     if (::stat(path.c_str(), &info) != 0)
         throw FileError{path, "", std::string("cannot read: ") + std::strerror(errno)};
     if (S_ISDIR(info.st_mode)) throw FileError{path, "", "is a directory, not a file"};
+    if (S_ISFIFO(info.st_mode) || S_ISCHR(info.st_mode)) return read_special(path, limit, silence);
     if (static_cast<std::size_t>(info.st_size) > limit)
         throw FileError{path, "", "is " + std::to_string(info.st_size) + " bytes, over " + size_limit_text(limit)};
     std::ifstream in(path, std::ios::binary);

@@ -4,6 +4,7 @@
 #include "formats/input_limits.hpp"
 #include "record/trace.hpp"
 
+#include <chrono>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -35,10 +36,17 @@ inline constexpr std::string_view standard_stream = "-";
 // What a file is called in messages: "<stdin>" for "-", else the path as given.
 std::string input_name(const std::string& path);
 
+// How long a named FIFO or device may stay silent before its first byte: a FIFO nobody writes to hung
+// `validate` for ever. Standard input ("-") waits as long as its writer takes (a pipeline's first command may
+// run for minutes).
+inline constexpr std::chrono::milliseconds default_silence_limit{30'000};
+
 // The whole file, or all of standard input for "-"; throws FileError if it cannot be read or is larger than
 // `limit`. The limit holds while reading too, so a device or a pipe that never ends (/dev/zero) is refused
-// after `limit` bytes.
-std::string read_input_file(const std::string& path, std::size_t limit = max_input_bytes);
+// after `limit` bytes. A named FIFO or character device is opened without waiting for a writer and read as
+// data arrives; nothing within `silence` is an error ("nothing arrived within 30 s").
+std::string read_input_file(const std::string& path, std::size_t limit = max_input_bytes,
+                            std::chrono::milliseconds silence = default_silence_limit);
 
 // Applies "frames=A..B" or "contacts=I,J,..." to `filter`; throws formats::InputError("--record", ...).
 void apply_record_spec(std::string_view spec, TraceFilter& filter);

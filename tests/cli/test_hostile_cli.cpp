@@ -189,3 +189,17 @@ TEST_CASE("3000 spheres at one point are refused as more contacts than a frame m
         MESSAGE(command << ": peak " << r.peak_kib / 1024 << " MiB, " << r.seconds << " s");
     }
 }
+
+TEST_CASE("Ctrl-C while run waits for a FIFO's reader exits 130, not 2") {
+    // The wait gave up with "cannot write" and exit 2, as if the path were wrong.
+    TempDir dir;
+    const std::string fifo = dir.file("trace.fifo").string();
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const auto r = impulse::test::run_capped(
+        {program, "run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "2", "--trace", fifo}, 1ull << 30, 30,
+        {SIGINT, 700});
+    CHECK(r.code == 130);
+    CHECK(r.err ==
+          "impulse-lab: interrupted (SIGINT) while --trace '" + fifo + "' waited for its reader: it got nothing\n");
+    CHECK(std::filesystem::is_fifo(fifo));
+}

@@ -4,6 +4,7 @@
 
 #include "formats/csv.hpp"
 #include "formats/input_error.hpp"
+#include "formats/input_files.hpp"
 #include "formats/input_limits.hpp"
 #include "formats/json_text.hpp"
 #include "formats/printable_text.hpp"
@@ -13,10 +14,16 @@
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "support/shipped.hpp"
+#include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
 
+#include <chrono>
+#include <fcntl.h>
 #include <string>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 using namespace impulse;
 
@@ -235,4 +242,50 @@ TEST_CASE("a frame duration --dt refuses is refused in a file and by --set too")
     Scene scene = formats::read_scene_text(sphere_scene(R"("mass": 1)"));
     CHECK_THROWS_WITH_AS(formats::apply_setting(scene, "duration=5e-324", "--set"),
                          "--set duration: must be >= 1e-06, got 5e-324", formats::InputError);
+}
+
+TEST_CASE("a FIFO nobody writes to is refused after its silence limit, not waited on for ever") {
+    // `validate`, the lesson list and every `lesson` command hung on a FIFO nobody wrote to.
+    test::TempDir dir;
+    const std::string fifo = dir.file("silent.fifo").string();
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const auto start = std::chrono::steady_clock::now();
+    CHECK_THROWS_AS(formats::read_input_file(fifo, formats::max_input_bytes, std::chrono::milliseconds(300)),
+                    formats::FileError);
+    try {
+        formats::read_input_file(fifo, formats::max_input_bytes, std::chrono::milliseconds(300));
+    } catch (const formats::FileError& e) {
+        CHECK(e.problem ==
+              "nothing arrived within 300 ms: a FIFO or device nobody writes to (start its writer first, "
+              "or give a file)");
+    }
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+}
+
+TEST_CASE("a FIFO is read whole once its writer is done, and a device that never ends at the limit") {
+    test::TempDir dir;
+    const std::string fifo = dir.file("speaks.fifo").string();
+    REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    const pid_t writer = ::fork();
+    REQUIRE(writer >= 0);
+    if (writer == 0) {
+        const int fd = ::open(fifo.c_str(), O_WRONLY);
+        const std::string text = "{\"bodies\": []}";
+        const timespec pause{0, 200'000'000};  // after the reader has begun to wait
+        ::nanosleep(&pause, nullptr);
+        const bool whole = ::write(fd, text.data(), text.size()) == static_cast<ssize_t>(text.size());
+        ::_exit(whole ? 0 : 1);
+    }
+    CHECK(formats::read_input_file(fifo, formats::max_input_bytes, std::chrono::milliseconds(5000)) ==
+          "{\"bodies\": []}");
+    int status = 0;
+    ::waitpid(writer, &status, 0);
+    CHECK(WEXITSTATUS(status) == 0);
+    try {
+        formats::read_input_file("/dev/zero", 1 << 20);
+        FAIL("/dev/zero was read");
+    } catch (const formats::FileError& e) {
+        CHECK(e.problem == "goes on past the limit of 1 MiB (1048576 bytes)");
+    }
+    CHECK(formats::read_input_file("/dev/null").empty());
 }

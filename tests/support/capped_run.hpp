@@ -4,6 +4,7 @@
 // (issue 29), which an in-process run cannot show.
 
 #include <chrono>
+#include <ctime>
 #include <csignal>
 #include <cstddef>
 #include <fcntl.h>
@@ -24,8 +25,15 @@ struct CappedResult {
     double seconds = 0.0;  // wall time
 };
 
+// A signal sent to the child a while after it starts (Ctrl-C in the middle of something).
+struct SignalAfter {
+    int signal = 0;  // 0: none
+    int milliseconds = 0;
+};
+
 // `args` starts with the program's path; standard output goes to /dev/null, standard input is /dev/null.
-inline CappedResult run_capped(const std::vector<std::string>& args, std::size_t memory_bytes, int time_limit_s) {
+inline CappedResult run_capped(const std::vector<std::string>& args, std::size_t memory_bytes, int time_limit_s,
+                               SignalAfter signal = {}) {
     char err_name[] = "/tmp/impulse-lab-capped-XXXXXX";
     const int err_fd = ::mkstemp(err_name);
     const auto start = std::chrono::steady_clock::now();
@@ -43,6 +51,11 @@ inline CappedResult run_capped(const std::vector<std::string>& args, std::size_t
         argv.push_back(nullptr);
         ::execv(argv[0], argv.data());
         ::_exit(127);
+    }
+    if (signal.signal != 0) {
+        const timespec pause{signal.milliseconds / 1000, (signal.milliseconds % 1000) * 1'000'000L};
+        ::nanosleep(&pause, nullptr);
+        ::kill(child, signal.signal);
     }
     CappedResult result;
     int status = 0;

@@ -1,5 +1,6 @@
 #include "cli/interrupt.hpp"
 
+#include <atomic>
 #include <csignal>
 
 namespace impulse::cli {
@@ -7,15 +8,19 @@ namespace impulse::cli {
 namespace {
 
 volatile std::sig_atomic_t received_signal = 0;  // 0: none yet
+std::atomic<bool> stop{false};                   // the engine's stop flag: set with the note
+static_assert(std::atomic<bool>::is_always_lock_free, "a signal handler may only store to a lock-free atomic");
 
 extern "C" void note_signal(int signal) {
     received_signal = signal;
+    stop.store(true, std::memory_order_relaxed);
 }
 
 }  // namespace
 
 InterruptHandler::InterruptHandler() {
     received_signal = 0;
+    stop.store(false, std::memory_order_relaxed);
     struct sigaction action {};
     action.sa_handler = note_signal;
     sigemptyset(&action.sa_mask);
@@ -36,6 +41,11 @@ std::optional<int> interrupt_received() {
 
 void forget_interrupt() {
     received_signal = 0;
+    stop.store(false, std::memory_order_relaxed);
+}
+
+const std::atomic<bool>& stop_requested() {
+    return stop;
 }
 
 void throw_if_interrupted() {

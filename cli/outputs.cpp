@@ -109,6 +109,42 @@ void Outputs::write(const std::vector<Text>& texts) const {
     if (standard) out_.write(standard_text.data(), static_cast<std::streamsize>(standard_text.size())).flush();
 }
 
+void StreamedOutput::append(std::string_view text) {
+    if (file_) file_->append(text);
+    if (standard_) standard_->append(text);
+}
+
+void StreamedOutput::append(const formats::Spool& spool) {
+    if (file_) file_->append(spool);
+    if (standard_) standard_->append(spool);
+}
+
+std::optional<StreamedOutput> Outputs::stream(std::string_view flag) const {
+    const auto found = std::find_if(named_.begin(), named_.end(), [flag](const Named& n) { return n.flag == flag; });
+    if (found == named_.end()) return std::nullopt;
+    const bool standard = found->standard_output;
+    std::optional<StreamedOutput> output(std::in_place);
+    output->flag_ = found->flag;
+    if (standard)
+        output->standard_ = std::make_unique<formats::Spool>(std::filesystem::temp_directory_path() / "stdout");
+    else
+        output->file_.emplace(found->path, found->flag);
+    return output;
+}
+
+void Outputs::commit(const std::vector<StreamedOutput*>& outputs) const {
+    const formats::Spool* standard = nullptr;
+    {
+        const formats::HeldInterruptions held;
+        for (StreamedOutput* o : outputs) {
+            if (!o) continue;
+            if (o->file_) o->file_->commit();
+            if (o->standard_) standard = o->standard_.get();
+        }
+    }
+    if (standard) standard->copy_to(out_), out_.flush();
+}
+
 std::string Outputs::file_of(std::string_view flag) const {
     const auto found = std::find_if(named_.begin(), named_.end(), [flag](const Named& n) { return n.flag == flag; });
     if (found == named_.end() || found->standard_output) return {};

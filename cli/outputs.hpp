@@ -5,6 +5,9 @@
 // carries a file nothing else goes there: the command's report moves to standard error. The other outputs are
 // checked before the command runs and written together at its end, atomically (io/atomic_file.hpp).
 
+#include "formats/atomic_file.hpp"
+
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -43,6 +46,22 @@ private:
     std::vector<Named> named_;
 };
 
+// An output a long command writes as it goes, a piece at a time, so that it is on disk and not in memory: into
+// its staged file (a temporary beside it) or, for standard output, into an unlinked spool. Nothing reaches the
+// file or standard output before Outputs::commit; dropped uncommitted, it leaves nothing behind.
+class StreamedOutput {
+public:
+    // Throw formats::InputError(flag, ...) when the disk refuses it (the temporary is removed then).
+    void append(std::string_view text);
+    void append(const formats::Spool& spool);
+
+private:
+    friend class Outputs;
+    std::string flag_;
+    std::optional<formats::StagedFile> file_;   // a file: its temporary
+    std::unique_ptr<formats::Spool> standard_;  // standard output: spooled until the command ends
+};
+
 class Outputs {
 public:
     Outputs(std::ostream& out, std::ostream& err) : out_(out), err_(err) {}
@@ -64,6 +83,12 @@ public:
         std::string_view text;
     };
     void write(const std::vector<Text>& texts) const;
+
+    // The output a flag names, to be written as the command goes (nullopt when the flag names none); its
+    // temporary is made now. commit() puts every one given in place together, as write() does, then copies
+    // standard output's.
+    std::optional<StreamedOutput> stream(std::string_view flag) const;
+    void commit(const std::vector<StreamedOutput*>& outputs) const;
 
     // The file a flag's output goes to, for the report; "" when it goes to standard output or was not named.
     std::string file_of(std::string_view flag) const;

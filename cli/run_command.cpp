@@ -9,6 +9,7 @@
 #include "cli/interrupt.hpp"
 #include "cli/outputs.hpp"
 #include "cli/progress.hpp"
+#include "cli/run_summary.hpp"
 #include "formats/csv.hpp"
 #include "explain/format.hpp"
 #include "formats/input_error.hpp"
@@ -48,71 +49,13 @@ void append_states(std::string& csv, int frame, double time, const Scene& scene,
     }
 }
 
-// A number with `decimals` after the point, or in exponent form once that would be long (a run of gravity
-// −1e308 has depths of 300 digits: a fixed-width row cut them, and its line break with them).
-std::string fixed(double v, int decimals) {
-    char text[64];
-    std::snprintf(text, sizeof text, std::abs(v) < 1e12 ? "%.*f" : "%.*g", std::abs(v) < 1e12 ? decimals : 4, v);
-    return text;
-}
-
-// The summary of the frames run (all of them, or those done before a Ctrl-C): up to 20 frames evenly spread,
-// and always the last.
-struct RunSummary {
-    std::string scene_name;
-    int frames_asked = 0;
-    double dt = 0.0;
-    std::size_t top = 0;  // the body that started highest
-    Vec3 top_start = Vec3::Zero();
-    double top_drift_most = 0.0;
-    int top_drift_frame = 0;
-};
-
-void write_summary(std::ostream& out, const RunSummary& s, const Scene& scene, const std::vector<RigidBody>& bodies,
-                   const std::vector<StepReport>& reports) {
-    const int frames = static_cast<int>(reports.size());
-    const double dt = s.dt;
-    out << s.scene_name << ": " << bodies.size() << (bodies.size() == 1 ? " body" : " bodies")
-        << (scene.ground ? ", ground" : "") << ", "
-        << (frames == s.frames_asked ? std::to_string(frames)
-                                     : std::to_string(frames) + " of " + std::to_string(s.frames_asked))
-        << " frames of " << explain::number(dt) << " s (" << explain::number(frames * dt) << " s), preset "
-        << scene.settings.preset << "\n";
-    out << "  frame    time s  contacts  deepest mm   kinetic J  ms/frame\n";
-    const int every = std::max(1, (frames + 19) / 20);
-    StageTimes total;
-    double deepest = 0.0;
-    int deepest_frame = 0;
-    int position_limited = 0, velocity_limited = 0;
-    for (const StepReport& r : reports) {
-        const auto ran_out = [](StopReason stop) {
-            return stop == StopReason::iteration_limit || stop == StopReason::sweeps_complete ? 1 : 0;
-        };
-        position_limited += ran_out(r.resolution.position.stop);
-        velocity_limited += ran_out(r.resolution.velocity.stop);
-        total.integrate += r.times.integrate;
-        total.broad_phase += r.times.broad_phase;
-        total.narrow_phase += r.times.narrow_phase;
-        total.resolve += r.times.resolve;
-        if (r.deepest_penetration > deepest) deepest = r.deepest_penetration, deepest_frame = r.frame;
-        if (r.frame % every != 0 && r.frame != frames - 1) continue;
-        char line[160];
-        std::snprintf(
-            line, sizeof line, "  %5d  %8s  %8d  %10s  %10.4g  %8s", r.frame, fixed((r.frame + 1) * dt, 3).c_str(),
-            r.contacts, fixed(r.deepest_penetration * 1e3, 3).c_str(), r.kinetic_energy,
-            fixed((r.times.integrate + r.times.broad_phase + r.times.narrow_phase + r.times.resolve) * 1e3, 3).c_str());
-        out << line << '\n';
+// The frames the recorder has finished, written to the spool of the trace's frame list and dropped from memory.
+void spool_frames(Trace& trace, formats::Spool& frames) {
+    for (const FrameRecord& frame : trace.frames) {
+        frames.append(frames.size() == 0 ? formats::trace_frames_open : formats::trace_frames_between);
+        frames.append(formats::trace_frame_text(frame, trace.scene.settings));
     }
-    const double n = std::max(1, frames);
-    out << "  per frame: integrate " << fixed(total.integrate / n * 1e3, 3) << " ms, broad phase "
-        << fixed(total.broad_phase / n * 1e3, 3) << " ms, pair tests " << fixed(total.narrow_phase / n * 1e3, 3)
-        << " ms, resolve " << fixed(total.resolve / n * 1e3, 3) << " ms\n";
-    out << "  iteration limit (or every sweep) used in " << position_limited << " of " << frames
-        << " frames (positions) and " << velocity_limited << " (velocities)\n";
-    out << "  deepest penetration " << fixed(deepest * 1e3, 3) << " mm (frame " << deepest_frame << "); "
-        << scene.body_names[s.top] << " (highest at the start) ends "
-        << fixed((bodies[s.top].position - s.top_start).norm() * 1e3, 3) << " mm from where it started, at most "
-        << fixed(s.top_drift_most * 1e3, 3) << " mm (frame " << s.top_drift_frame << ")\n";
+    trace.frames.clear();
 }
 
 // As soon as the frames recorded so far show the whole run will not fit the trace's size limit: how many frames
@@ -146,6 +89,9 @@ std::string bench_verdict(const bench::BenchScene& spec, const bench::Accuracy& 
                 std::to_string(spec.frames) + " frames";
     return text;
 }
+
+// The states' rows are written to their file in pieces of about this size.
+constexpr std::size_t states_piece_bytes = 1 << 20;
 
 }  // namespace
 
@@ -183,19 +129,28 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     scene.contacts.clear();
 
     World world(scene);
+    world.set_stop_flag(&stop_requested());
     TraceRecorder trace_recorder(trace, formats::trace_budget_bytes(options.max_trace_mb));
     Recorder nobody;
     Recorder& recorder = options.trace_file ? static_cast<Recorder&>(trace_recorder) : nobody;
 
+    // The outputs are written as the frames are made (on disk, not in memory) and put in place at the end: the
+    // states row by row; the trace's frames into a spool, since the trace's head, which comes first, says where
+    // the recording ended.
+    std::optional<StreamedOutput> trace_out = outputs.stream("--trace");
+    std::optional<StreamedOutput> states_out = outputs.stream("--states");
+    std::optional<formats::Spool> trace_frames;
+    if (trace_out)
+        trace_frames.emplace(outputs.to_standard_output("--trace") ? std::filesystem::temp_directory_path() / "trace"
+                                                                   : std::filesystem::path(*options.trace_file));
+
     const int frames = scene.world.frames;
-    const double dt = scene.settings.duration;
     std::string states;
-    if (options.states_file) {
+    if (states_out) {
         states = "frame,time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
         append_states(states, -1, world.time(), scene, world.bodies());
     }
-    RunSummary summary{scene_name, frames, dt, highest_body(scene), {}, 0.0, 0};
-    summary.top_start = world.bodies()[summary.top].position;
+    RunSummary summary(scene_name, frames, scene.settings.duration, scene);
 
     std::optional<bench::AccuracyTracker> accuracy;
     if (judged) accuracy.emplace(scene, *judged, frames);
@@ -204,46 +159,62 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     const bool whole_run = options.trace_file && options.record.empty() && frames > 1;
     bool fit_said = false;
 
-    std::vector<StepReport> reports;
-    reports.reserve(static_cast<std::size_t>(frames));
     ProgressBar bar(progress, frames);
     std::optional<int> broken_frame;  // the frame that left a body non-finite: the run stops there
-    std::optional<int> interrupted;   // Ctrl-C or SIGTERM stopped the run between frames (cli/interrupt.hpp)
+    std::optional<NonFiniteBody> broken_body;
+    std::optional<int> interrupted;  // Ctrl-C or SIGTERM stopped the run (cli/interrupt.hpp)
     const InterruptHandler interrupt_handler;
     for (int frame = 0; frame < frames; ++frame) {
         if ((interrupted = interrupt_received())) break;
-        reports.push_back(world.step(recorder));
-        if (reports.back().over_contact_budget) {
+        const StepReport report = world.step(recorder);
+        if (report.over_contact_budget) {
             const formats::InputError e = formats::contact_budget_error(frame);
             throw formats::FileError{scene_name, e.where(), e.problem()};
         }
-        if (reports.back().non_finite) {
-            broken_frame = frame;
+        if (report.resolution.cut_short) {  // a signal stopped it within the frame: the frame is not done
+            interrupted = interrupt_received().value_or(SIGINT);
+            end_trace_before(trace, frame);
             break;
         }
-        if (options.states_file) append_states(states, frame, world.time(), scene, world.bodies());
-        if (accuracy) accuracy->observe(frame, world.bodies(), reports.back());
+        if (report.non_finite) {
+            broken_frame = frame;
+            broken_body = report.non_finite;
+            end_trace_before(trace, frame);
+            break;
+        }
+        summary.add(report, world.bodies());
+        if (trace_frames) spool_frames(trace, *trace_frames);
+        if (states_out) {
+            append_states(states, frame, world.time(), scene, world.bodies());
+            if (states.size() >= states_piece_bytes) states_out->append(states), states.clear();
+        }
+        if (accuracy) accuracy->observe(frame, world.bodies(), report);
         if (whole_run && !fit_said)
             if (const std::string note = trace_fit_note(trace_recorder, frame + 1, frames, options.max_trace_mb);
                 !note.empty())
                 err << note << '\n', fit_said = true;
-        const double drift = (world.bodies()[summary.top].position - summary.top_start).norm();
-        if (drift > summary.top_drift_most) summary.top_drift_most = drift, summary.top_drift_frame = frame;
         bar.update(frame + 1);
     }
     bar.finish();
-    if (broken_frame && options.trace_file) end_trace_before(trace, *broken_frame);
-    const int frames_done = static_cast<int>(reports.size()) - (broken_frame ? 1 : 0);
+    const int frames_done = summary.frames();
     if (interrupted) {
         end_trace_before(trace, frames_done);
         forget_interrupt();  // a second signal from here on stops the writing
     }
 
-    // Formatting a long trace takes a while: a signal meanwhile is the first (the run had ended: nothing is
+    // Putting a long trace together takes a while: a signal meanwhile is the first (the run had ended: nothing is
     // written without --keep-partial) or the second (nothing is written at all).
     const bool write = !interrupted || options.keep_partial;
-    const std::string trace_text =
-        options.trace_file && write ? formats::format_json(formats::trace_json(trace)) : std::string();
+    if (write && trace_out) {
+        trace_out->append(formats::trace_head_text(trace));
+        if (trace_frames->size() == 0) {
+            trace_out->append(formats::trace_no_frames);
+        } else {
+            trace_out->append(*trace_frames);
+            trace_out->append(formats::trace_frames_close);
+        }
+    }
+    if (write && states_out) states_out->append(states);
     if (const std::optional<int> signal = interrupt_received()) {
         if (interrupted) throw Interrupted{*signal};
         interrupted = signal;
@@ -251,18 +222,18 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     if (!interrupted || options.keep_partial) {
         if (trace_recorder.stopped_at())
             err << formats::trace_stopped_note(*trace_recorder.stopped_at(), options.max_trace_mb) << '\n';
-        outputs.write({{"--trace", trace_text}, {"--states", states}});
+        outputs.commit({trace_out ? &*trace_out : nullptr, states_out ? &*states_out : nullptr});
     }
 
     if (broken_frame) {
-        err << "impulse-lab: " << model::broken_run_text(scene, {*broken_frame, *reports.back().non_finite}) << '\n';
+        err << "impulse-lab: " << model::broken_run_text(scene, {*broken_frame, *broken_body}) << '\n';
         if (!outputs.file_of("--trace").empty())
             report << "trace of the frames before it written to " << outputs.file_of("--trace") << '\n';
         if (!outputs.file_of("--states").empty())
             report << "states of the frames before it written to " << outputs.file_of("--states") << '\n';
         return exit_non_finite;
     }
-    write_summary(report, summary, scene, world.bodies(), reports);
+    summary.write(report, scene, world.bodies());
     if (accuracy) report << bench_verdict(*judged, accuracy->finish(world.bodies()), frames_done) << '\n';
     if (interrupted) {
         err << "impulse-lab: interrupted (" << signal_name(*interrupted) << ") after " << frames_done << " of "

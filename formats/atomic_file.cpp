@@ -245,7 +245,7 @@ void StagedFile::append(std::string_view text) {
     size_ += text.size();
 }
 
-void StagedFile::append(Spool& spool) {
+void StagedFile::append(const Spool& spool) {
     std::string reason = spool.copy_to(fd_);
     if (!reason.empty()) {
         discard();
@@ -330,6 +330,12 @@ void Spool::append(std::string_view text) {
     if (const std::string reason = write_all(fd_, text); !reason.empty())
         throw InputError("", "cannot write a temporary file: " + reason);
     size_ += text.size();
+}
+
+void Spool::append(const Spool& other) {
+    if (const std::string reason = other.copy_to(fd_); !reason.empty())
+        throw InputError("", "cannot write a temporary file: " + reason);
+    size_ += other.size_;
 }
 
 std::string Spool::copy_to(int fd) const {

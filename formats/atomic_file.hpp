@@ -41,6 +41,7 @@ public:
     Spool& operator=(const Spool&) = delete;
 
     void append(std::string_view text);
+    void append(const Spool& other);  // everything `other` holds
     std::size_t size() const { return size_; }
     // Everything appended so far, to a file descriptor (returns why it could not, or "") or a stream.
     std::string copy_to(int fd) const;
@@ -67,7 +68,7 @@ public:
 
     // Adds to the end; throws InputError like the constructor (the temporary is removed then).
     void append(std::string_view text);
-    void append(Spool& spool);
+    void append(const Spool& spool);
     std::size_t size() const { return size_; }  // bytes appended
 
     // Renames it over the target (or writes it in place); throws InputError like the constructor, or

@@ -73,6 +73,10 @@ std::string format_json(const json& value) {
     return out;
 }
 
+void append_json(const json& value, int indent, std::string& out) {
+    write(value, indent, out);
+}
+
 std::optional<std::size_t> first_non_utf8_byte(std::string_view text) {
     std::size_t at = 0;
     while (at < text.size()) {

@@ -30,5 +30,8 @@ void require_utf8(std::string_view text);
 // Indented two spaces; arrays of numbers (and arrays of such arrays) on one line. Doubles keep 17
 // significant digits, so a value read back is the same to the last bit.
 std::string format_json(const nlohmann::ordered_json& value);
+// The same for a value `indent` levels deep (two spaces each) in a larger document, appended to `out` (no line
+// break after it): the pieces of a document written a part at a time (formats/trace_json.hpp).
+void append_json(const nlohmann::ordered_json& value, int indent, std::string& out);
 
 }  // namespace impulse::formats

@@ -530,6 +530,27 @@ json conventions_json() {
 json trace_json(const Trace& trace) {
     json frames = json::array();
     for (const FrameRecord& f : trace.frames) frames.push_back(frame_json(f, trace.scene.settings));
+    json document = trace_header_json(trace);
+    document["frames"] = std::move(frames);
+    return document;
+}
+
+std::string trace_head_text(const Trace& trace) {
+    // The header as format_json writes a whole trace with no frames, cut before its empty frame list.
+    json document = trace_header_json(trace);
+    document["frames"] = json::array();
+    std::string text = format_json(document);
+    text.resize(text.size() - trace_no_frames.size());
+    return text;
+}
+
+std::string trace_frame_text(const FrameRecord& frame, const ResolverSettings& settings) {
+    std::string text;
+    append_json(frame_json(frame, settings), 2, text);  // an element of "frames": two levels deep
+    return text;
+}
+
+json trace_header_json(const Trace& trace) {
     const TraceFilter& r = trace.recording;
     return {{"format", trace_format_name},
             {"version", trace_format_version},
@@ -539,8 +560,7 @@ json trace_json(const Trace& trace) {
              {{"first_frame", r.first_frame},
               {"last_frame", r.last_frame == INT_MAX ? json(nullptr) : json(r.last_frame)},
               {"contacts", r.contacts ? json(*r.contacts) : json(nullptr)}}},
-            {"scene", scene_json(trace.scene, false)},
-            {"frames", frames}};
+            {"scene", scene_json(trace.scene, false)}};
 }
 
 Trace read_trace(const json& given) {

@@ -17,6 +17,17 @@ inline constexpr std::string_view trace_format_name = "impulse-lab-trace";
 
 json trace_json(const Trace& trace);
 
+// The trace's text as format_json(trace_json(trace)) writes it, in parts, so that a long run's frames can be
+// written as they are recorded and dropped from memory: the head (every key before the frames, `trace.frames`
+// is not read), each frame's text, and the end. The whole is
+//   head + "[\n    " + frame + ",\n    " + frame ... + "\n  ]\n}\n", or head + "[]\n}\n" without frames,
+// byte for byte what format_json writes (a test holds it).
+std::string trace_head_text(const Trace& trace);
+json trace_header_json(const Trace& trace);  // every key of trace_json but "frames"
+std::string trace_frame_text(const FrameRecord& frame, const ResolverSettings& settings);
+inline constexpr std::string_view trace_frames_open = "[\n    ", trace_frames_between = ",\n    ",
+                                  trace_frames_close = "\n  ]\n}\n", trace_no_frames = "[]\n}\n";
+
 // One item of a frame as the trace writes it (frames[f].contacts[k], or an iteration of a phase): for reading
 // a value by its path without writing the whole trace.
 json item_json(const ContactPreparation& contact);

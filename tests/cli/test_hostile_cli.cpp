@@ -203,3 +203,42 @@ TEST_CASE("Ctrl-C while run waits for a FIFO's reader exits 130, not 2") {
           "impulse-lab: interrupted (SIGINT) while --trace '" + fifo + "' waited for its reader: it got nothing\n");
     CHECK(std::filesystem::is_fifo(fifo));
 }
+
+TEST_CASE("Ctrl-C stops a frame of a hundred million iterations at once and keeps the frames done") {
+    // The resolver's loops did not look at Ctrl-C: one frame ran on for minutes after it.
+    TempDir dir;
+    const std::string trace = dir.file("t.json").string();
+    const auto r = impulse::test::run_capped(
+        {program, "run", IMPULSE_SOURCE_DIR "/scenes/stack_10.json", "--frames", "3", "--set",
+         "velocity_iterations=100000000", "--set", "velocity_epsilon=0", "--trace", trace, "--keep-partial"},
+        1ull << 30, 60, {SIGINT, 1000});
+    CHECK(r.code == 130);
+    CHECK(r.err.find("impulse-lab: interrupted (SIGINT) after 0 of 3 frames: the frames done are written\n") !=
+          std::string::npos);
+    CHECK(r.seconds < 10.0);  // without the stop flag the frame ran on past the time limit (60 s)
+    CHECK(run_cli({"validate", trace}).code == 0);
+    MESSAGE("stopped " << r.seconds - 1.0 << " s after the signal");
+}
+
+TEST_CASE("a long run's trace and states are written as they go: its memory does not grow with its frames") {
+    // --states had no bound (out of memory after 40 s); --max-trace-mb 1000 peaked at 3.2 GB.
+    TempDir dir;
+    const auto peak = [&](const std::string& scene, const std::string& frames, const std::string& flag) {
+        const auto r = impulse::test::run_capped({program, "run", IMPULSE_SOURCE_DIR "/scenes/" + scene, "--frames",
+                                                  frames, flag, dir.file("out").string(), "--max-trace-mb", "1000"},
+                                                 2ull << 30, 120);
+        CHECK(r.code == 0);
+        const auto bytes = std::filesystem::file_size(dir.file("out"));
+        MESSAGE(scene << ", " << frames << " frames, " << flag << ": " << (bytes >> 20) << " MiB written, peak "
+                      << r.peak_kib / 1024 << " MiB, " << r.seconds << " s");
+        return std::pair{bytes, r.peak_kib * 1024};
+    };
+    const auto [states_short, states_short_peak] = peak("stack_3.json", "10000", "--states");
+    const auto [states_long, states_long_peak] = peak("stack_3.json", "50000", "--states");
+    CHECK(states_long - states_short > 25u << 20);
+    CHECK(states_long_peak - states_short_peak < 8 << 20);
+    const auto [trace_short, trace_short_peak] = peak("stack_10.json", "4", "--trace");
+    const auto [trace_long, trace_long_peak] = peak("stack_10.json", "20", "--trace");
+    CHECK(trace_long - trace_short > 30u << 20);
+    CHECK(trace_long_peak - trace_short_peak < 16 << 20);
+}

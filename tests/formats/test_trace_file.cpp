@@ -240,3 +240,25 @@ TEST_CASE("the recorder's size estimate stays within a third of the written trac
                 CHECK(ratio < 1.33);
             }
 }
+
+TEST_CASE("a trace written in parts, frame by frame, is byte for byte the trace written whole") {
+    // `run` streams its trace (head, each frame's text, end) so that its frames need not stay in memory.
+    Trace trace;
+    trace.scene = test::shipped("stack_3");
+    const auto parts = [](const Trace& t) {
+        if (t.frames.empty()) return formats::trace_head_text(t) + std::string(formats::trace_no_frames);
+        std::string text = formats::trace_head_text(t);
+        for (std::size_t f = 0; f < t.frames.size(); ++f) {
+            text += f == 0 ? formats::trace_frames_open : formats::trace_frames_between;
+            text += formats::trace_frame_text(t.frames[f], t.scene.settings);
+        }
+        return text + std::string(formats::trace_frames_close);
+    };
+    CHECK(parts(trace) == formats::format_json(formats::trace_json(trace)));
+    World world(trace.scene);
+    TraceRecorder recorder(trace);
+    for (int frame = 0; frame < 3; ++frame) {
+        world.step(recorder);
+        CHECK(parts(trace) == formats::format_json(formats::trace_json(trace)));
+    }
+}

@@ -8,10 +8,12 @@
 #include "course/filled_worksheet.hpp"
 #include "course/worksheet.hpp"
 #include "formats/input_error.hpp"
+#include "formats/input_files.hpp"
 #include "formats/json_text.hpp"
 #include "formats/scene_file.hpp"
 #include "formats/trace_json.hpp"
 #include "course/lesson.hpp"
+#include "model/session.hpp"
 #include "course/progress.hpp"
 
 #include <string_view>
@@ -90,16 +92,38 @@ inline void load_diff(std::string_view input) {
     course::feedback_markdown(rows.front(), class_subject);
 }
 
+// A trace as `worksheet` reads it: opened as a session, its default places chosen and the worksheet made and
+// written in both forms. A trace the reader accepts must make a worksheet or be refused in words (one whose
+// iteration number was changed to 2147483647 passed `validate` and made `worksheet` segfault).
+inline void load_worksheet_trace(std::string_view text) {
+    const model::Session session = [&] {
+        try {
+            return model::Session::open_text(std::string(text), "fuzz.trace.json", {});
+        } catch (const formats::FileError& e) {  // the session names the file: bad input all the same
+            throw formats::InputError(e.where, e.problem);
+        }
+    }();
+    if (session.broken_run()) return;
+    const Trace& trace = session.trace();
+    const formats::json document = formats::trace_json(trace);
+    const std::vector<model::Cursor> places = course::default_places(trace);
+    if (places.empty()) return;
+    const course::Worksheet sheet = course::make_worksheet(session, places, &document);
+    course::worksheet_csv(sheet);
+    course::worksheet_json(sheet);
+}
+
 struct Loader {
     std::string_view target;  // the fuzz target, and its folder under tests/fuzz_regressions
     void (*load)(std::string_view text);
 };
 
 inline constexpr Loader loaders[] = {
-    {"fuzz_scene_text", load_scene_text},       {"fuzz_trace_text", load_trace_text},
-    {"fuzz_lesson_text", load_lesson_text},     {"fuzz_worksheet_json", load_worksheet_json},
-    {"fuzz_worksheet_csv", load_worksheet_csv}, {"fuzz_worksheet_reference", load_worksheet_reference},
-    {"fuzz_progress_text", load_progress_text}, {"fuzz_diff", load_diff},
+    {"fuzz_scene_text", load_scene_text},           {"fuzz_trace_text", load_trace_text},
+    {"fuzz_lesson_text", load_lesson_text},         {"fuzz_worksheet_json", load_worksheet_json},
+    {"fuzz_worksheet_csv", load_worksheet_csv},     {"fuzz_worksheet_reference", load_worksheet_reference},
+    {"fuzz_progress_text", load_progress_text},     {"fuzz_diff", load_diff},
+    {"fuzz_worksheet_trace", load_worksheet_trace},
 };
 
 }  // namespace impulse::fuzz

@@ -70,11 +70,11 @@ int worksheet_command(const WorksheetOptions& options, std::ostream& out, std::o
     const formats::json document = formats::trace_json(trace);
     std::vector<model::Cursor> places;
     if (!options.steps.empty())
-        places = course::places_from_specs(trace, options.steps, "--steps");
+        places = course::places_from_specs(trace, options.steps, "--steps", &document);
     else if (lesson)
         places = course::places_with_cells(session, lesson->places, &document);  // a choice has no cells
     else
-        places = course::default_places(trace);
+        places = course::default_places(trace, &document);
     if (places.empty())
         throw formats::FileError{formats::input_name(file), "",
                                  "the recording has no contact, so there is nothing to fill in"};

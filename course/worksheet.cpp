@@ -247,11 +247,12 @@ Worksheet make_worksheet(const model::Session& session, const std::vector<Cursor
     return sheet;
 }
 
-std::vector<Cursor> default_places(const Trace& trace) {
+std::vector<Cursor> default_places(const Trace& trace, const formats::json* given_document) {
     std::vector<Cursor> places;
     const std::optional<Cursor> first = model::first_cursor(trace);
     if (!first) return places;
-    const formats::json document = formats::trace_json(trace);
+    const formats::json made = given_document ? formats::json() : formats::trace_json(trace);
+    const formats::json& document = given_document ? *given_document : made;
     for (std::optional<Cursor> c = first; c && c->frame == first->frame; c = model::next_step(trace, *c)) {
         const std::vector<std::string> order = step_order(trace, *c);
         if (!cells_of(item_at(document, *c), order[static_cast<std::size_t>(c->step)]).empty()) places.push_back(*c);
@@ -259,10 +260,11 @@ std::vector<Cursor> default_places(const Trace& trace) {
     return places;
 }
 
-std::vector<Cursor> places_from_specs(const Trace& trace, const std::vector<std::string>& specs,
-                                      std::string_view where) {
+std::vector<Cursor> places_from_specs(const Trace& trace, const std::vector<std::string>& specs, std::string_view where,
+                                      const formats::json* given_document) {
     std::vector<Cursor> places;
-    const formats::json document = formats::trace_json(trace);
+    const formats::json made = given_document ? formats::json() : formats::trace_json(trace);
+    const formats::json& document = given_document ? *given_document : made;
     for (const std::string& text : specs) {
         const model::GotoSpec spec = model::parse_goto(text, where);
         const Cursor c = model::resolve_goto(trace, spec, where);

@@ -57,13 +57,13 @@ std::vector<model::Cursor> places_with_cells(const model::Session& session,
                                              const formats::json* document = nullptr);
 
 // Every step with something to fill in, of every item of the first recorded frame; empty when nothing is
-// recorded.
-std::vector<model::Cursor> default_places(const Trace& trace);
+// recorded. `document` is the trace as JSON when the caller has it already (else it is made).
+std::vector<model::Cursor> default_places(const Trace& trace, const formats::json* document = nullptr);
 
 // The places `specs` name (--steps, the inspector's --goto syntax). A spec with `step=` names one step, one
-// without it every step of the item it names. Throws formats::InputError(where, ...).
+// without it every step of the item it names. Throws formats::InputError(where, ...). `document` as above.
 std::vector<model::Cursor> places_from_specs(const Trace& trace, const std::vector<std::string>& specs,
-                                             std::string_view where);
+                                             std::string_view where, const formats::json* document = nullptr);
 
 // The reference trace re-run from a worksheet document's "settings" and "reference" (so a worksheet can stand
 // in for the file it was made from). Throws formats::InputError with the JSON path of a problem.

@@ -106,7 +106,7 @@ inline void load_worksheet_trace(std::string_view text) {
     if (session.broken_run()) return;
     const Trace& trace = session.trace();
     const formats::json document = formats::trace_json(trace);
-    const std::vector<model::Cursor> places = course::default_places(trace);
+    const std::vector<model::Cursor> places = course::default_places(trace, &document);
     if (places.empty()) return;
     const course::Worksheet sheet = course::make_worksheet(session, places, &document);
     course::worksheet_csv(sheet);

@@ -31,6 +31,7 @@ RunSummary::RunSummary(std::string scene_name, int frames_asked, double dt, cons
       dt_(dt),
       top_(highest_body(scene)),
       top_start_(scene.bodies[highest_body(scene)].position),
+      top_end_(top_start_),
       asked_every_(every_for(frames_asked)) {}
 
 void RunSummary::add(const StepReport& r, const std::vector<RigidBody>& bodies) {
@@ -45,7 +46,8 @@ void RunSummary::add(const StepReport& r, const std::vector<RigidBody>& bodies) 
     total_.narrow_phase += r.times.narrow_phase;
     total_.resolve += r.times.resolve;
     if (r.deepest_penetration > deepest_) deepest_ = r.deepest_penetration, deepest_frame_ = r.frame;
-    const double drift = (bodies[top_].position - top_start_).norm();
+    top_end_ = bodies[top_].position;
+    const double drift = (top_end_ - top_start_).norm();
     if (drift > top_drift_most_) top_drift_most_ = drift, top_drift_frame_ = r.frame;
 
     last_ = {r.frame, r.contacts, r.deepest_penetration, r.kinetic_energy,
@@ -94,9 +96,9 @@ void RunSummary::write(std::ostream& out, const Scene& scene, const std::vector<
     out << "  iteration limit (or every sweep) used in " << position_limited_ << " of " << frames_
         << " frames (positions) and " << velocity_limited_ << " (velocities)\n";
     out << "  deepest penetration " << fixed(deepest_ * 1e3, 3) << " mm (frame " << deepest_frame_ << "); "
-        << scene.body_names[top_] << " (highest at the start) ends "
-        << fixed((bodies[top_].position - top_start_).norm() * 1e3, 3) << " mm from where it started, at most "
-        << fixed(top_drift_most_ * 1e3, 3) << " mm (frame " << top_drift_frame_ << ")\n";
+        << scene.body_names[top_] << " (highest at the start) ends " << fixed((top_end_ - top_start_).norm() * 1e3, 3)
+        << " mm from where it started, at most " << fixed(top_drift_most_ * 1e3, 3) << " mm (frame " << top_drift_frame_
+        << ")\n";
 }
 
 }  // namespace impulse::cli

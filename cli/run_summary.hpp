@@ -43,6 +43,7 @@ private:
     int position_limited_ = 0, velocity_limited_ = 0;
     std::size_t top_ = 0;  // the body that started highest
     Vec3 top_start_ = Vec3::Zero();
+    Vec3 top_end_ = Vec3::Zero();  // after the last frame done (not one a signal cut short)
     double top_drift_most_ = 0.0;
     int top_drift_frame_ = 0;
     // The rows to show: every `asked_every_`th frame, as a run that does all its frames shows them; and, for a run

@@ -339,7 +339,8 @@ int diff_command(const DiffOptions& options, std::ostream& out, std::ostream& er
             code = exit_verdict;
         }
     }
-    const course::ClassSubject subject{formats::input_name(options.reference), reference.what, tolerance};
+    const course::ClassSubject subject{formats::input_name(options.reference), reference.what, tolerance,
+                                       reference.key.has_value()};
     if (options.out) write_class_report(*options.out, rows, subject);
     out << (options.format == "json"  ? course::summary_json(rows, subject)
             : options.format == "csv" ? course::summary_csv(rows)

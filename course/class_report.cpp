@@ -257,8 +257,8 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
     const Score s = score_of(r);
     const bool sheet = r.other_kind == "worksheet";
     md += std::string(sheet ? "Worksheet: " : "Your engine's trace against ") + against +
-          ". Every number is compared with the engine's own value; it counts as right when " +
-          tolerance_words(subject.tolerance) + ".\n\n";
+          ". Every number is compared with " + std::string(subject.answer_key ? "the key's" : "the engine's own") +
+          " value; it counts as right when " + tolerance_words(subject.tolerance) + ".\n\n";
     md += "**Score: " + count_text(s.right) + " of " + count_text(s.cells) +
           (sheet ? " numbers right" : " values match") + (s.percent ? " (" + percent_text(*s.percent) + ")" : "") +
           "** · " + count_text(s.wrong) + (sheet ? " wrong · " : " differ") +
@@ -276,7 +276,8 @@ std::string feedback_markdown(const ClassRow& row, const ClassSubject& subject) 
             md += "**" + (first->place.empty() ? std::string("the worksheet") : first->place) + "**, " +
                   code(first->quantity) + (first->unit.empty() ? "" : " (" + first->unit + ")") + ": ";
             if (first->kind == FindingKind::value)
-                md += "the engine has " + md_text(shown_value(first->expected, subject.tolerance)) + ", you have " +
+                md += std::string(subject.answer_key ? "the key has " : "the engine has ") +
+                      md_text(shown_value(first->expected, subject.tolerance)) + ", you have " +
                       md_text(shown_value(first->found, subject.tolerance)) +
                       (first->relative_error ? " (" + how_far(first->relative_error, first->expected, first->unit) + ")"
                                              : "") +

@@ -23,6 +23,7 @@ struct ClassSubject {
     std::string reference;  // the file, as given
     std::string what;       // "lesson 7 · Calculating and applying the impulse", "worksheet", "case", "trace"
     Tolerance tolerance;
+    bool answer_key = false;  // the expected values are a teacher's filled sheet, not the engine's run
 };
 
 // A table of the files (score, right, wrong, blank, the first divergence in the worksheet's words), then for

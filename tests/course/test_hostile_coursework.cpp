@@ -258,6 +258,12 @@ TEST_CASE("a filled CSV sheet is a reference: an answer key") {
     CHECK(r.code == 1);
     CHECK(r.out.find("class/ada.csv,worksheet,89,89,0,0,100.0,") != std::string::npos);
     CHECK(r.out.find("class/ben.csv,worksheet,89,") != std::string::npos);
+    // The feedback speaks of the key's values, not the engine's: nothing was run.
+    REQUIRE(run_cli({"diff", key, dir.file("class").string(), "--out", dir.file("report").string()}).code == 1);
+    const std::string ben = read_text(dir.file("report/feedback/ben.md"));
+    CHECK(ben.find("Every number is compared with the key's value") != std::string::npos);
+    CHECK(ben.find("the key has ") != std::string::npos);
+    CHECK(ben.find("the engine") == std::string::npos);
     // A blank key cannot be graded against.
     TempDir blank;
     const std::string sheet = blank.file("blank.csv").string();

@@ -25,3 +25,5 @@ execute_process(COMMAND ${NODE_JS_EXECUTABLE} -e "require('acorn')" RESULT_VARIA
 if(impulse_acorn_missing AND EXISTS /usr/share/nodejs/acorn)
   set(CMAKE_CXX_LINKER_LAUNCHER ${CMAKE_COMMAND} -E env NODE_PATH=/usr/share/nodejs)
 endif()
+
+include(${PROJECT_SOURCE_DIR}/web/imgui.cmake)  # imgui_web, stb_write_web

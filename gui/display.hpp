@@ -1,15 +1,14 @@
 #pragma once
-// The window the inspector draws in: an SDL2 window with an OpenGL 3.2 context and Dear ImGui on top.
-// Headless, SDL's offscreen driver gives the same context through EGL and Mesa, so the same frames are
-// rendered without a display and read back as pixels.
+// The window the inspector draws in: an OpenGL ES 3 / OpenGL 3.2 context with Dear ImGui on top, and the keys,
+// mouse and size of whatever shows it. That part is the platform's (docs/design.md, "The browser"): on the
+// desktop an SDL2 window (display_sdl.cpp), headless SDL's offscreen driver through EGL and Mesa, so the same
+// frames are rendered without a display and read back as pixels; in a browser the page's canvas with WebGL 2
+// (web/display_web.cpp). Everything drawn in it is the same code.
 
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-struct SDL_Window;
-union SDL_Event;
 
 namespace impulse::gui {
 
@@ -29,8 +28,10 @@ struct DisplayOptions {
 };
 
 // The fonts and style of the inspector, in the current ImGui context (Display does this; so does the layout
-// check, which lays the window out without one). Returns the fonts' note (empty when they were found).
-std::string set_up_imgui();
+// check, which lays the window out without one). `pixel_ratio` is the screen's pixels per layout pixel (2 on a
+// high-density display): the fonts are rasterised at that many times their size and drawn scaled back, so text
+// is sharp and the layout is the same. Returns the fonts' note (empty when they were found).
+std::string set_up_imgui(float pixel_ratio = 1.0f);
 
 // Whether a window could be shown here: false when neither DISPLAY nor WAYLAND_DISPLAY is set.
 bool display_available();
@@ -40,8 +41,6 @@ struct Pixels {
     int height = 0;
     std::vector<unsigned char> rgba;  // top row first
 };
-
-struct GlCalls;
 
 class Display {
 public:
@@ -59,25 +58,22 @@ public:
     bool headless() const { return headless_; }
     // Whether the last begin_frame handled any input or window event.
     bool had_events() const { return had_events_; }
-    // The keys pressed since the last frame (SDL scancodes, auto-repeat included), in order. ImGui 1.86 only
-    // sees whether a key is down at each frame, so a press and release within one frame would be lost.
+    // Whether input or a change of size waits to be handled (a browser draws a frame only then, or while busy).
+    bool events_waiting() const;
+    // The keys pressed since the last frame (SDL scancodes, which are USB HID usage numbers, so a browser's keys
+    // map to the same; auto-repeat included), in order. ImGui 1.86 only sees whether a key is down at each frame,
+    // so a press and release within one frame would be lost.
     const std::vector<int>& pressed_keys() const { return pressed_keys_; }
     // A note for the user about the fonts (empty when the fonts were found).
     const std::string& font_note() const { return font_note_; }
 
+    struct Platform;  // the window system's part: display_sdl.cpp, web/display_web.cpp
+
 private:
+    std::unique_ptr<Platform> platform_;
     bool headless_;
-    std::unique_ptr<GlCalls> gl_;
-    SDL_Window* window_ = nullptr;
-    void* gl_context_ = nullptr;
-    bool imgui_ready_ = false;
-    bool quit_ = false;
     bool had_events_ = false;
     std::vector<int> pressed_keys_;
-    std::vector<SDL_Event> deferred_;  // key releases passed to ImGui a frame after their press
-    struct Colour {
-        float x, y, z, w;
-    } window_background_{};
     std::string font_note_;
 };
 

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <cmath>
 #include <filesystem>
 
 namespace impulse::gui {
@@ -33,12 +34,13 @@ struct DotGlyph {
 
 // A round dot `size` pixels wide, its centre over the middle of the letter before it (about a quarter of an em
 // back from the pen) and a pixel of gap above the letters' tops.
-// `pixels`: the font's size (ImFont::FontSize is only set when the atlas is built).
-DotGlyph add_dot(ImFontAtlas& atlas, ImFont* font, float pixels) {
-    const int size = pixels >= 14.0f ? 3 : 2;
-    const float centre = -0.26f * pixels;
-    const int rect = atlas.AddCustomRectFontGlyph(font, combining_dot, size, size, 0.0f,
-                                                  ImVec2(centre - static_cast<float>(size) / 2.0f, -2.0f));
+// `pixels`: the font's size in layout pixels (ImFont::FontSize is only set when the atlas is built); the atlas
+// holds it `pixel_ratio` times larger, so the dot and its offsets are that much larger too.
+DotGlyph add_dot(ImFontAtlas& atlas, ImFont* font, float pixels, float pixel_ratio) {
+    const int size = static_cast<int>(std::lround((pixels >= 14.0f ? 3.0f : 2.0f) * pixel_ratio));
+    const float centre = -0.26f * pixels * pixel_ratio;
+    const int rect = atlas.AddCustomRectFontGlyph(
+        font, combining_dot, size, size, 0.0f, ImVec2(centre - static_cast<float>(size) / 2.0f, -2.0f * pixel_ratio));
     return {rect, size};
 }
 
@@ -46,22 +48,30 @@ void draw_dot(ImFontAtlas& atlas, const DotGlyph& dot) {
     const ImFontAtlasCustomRect* r = atlas.GetCustomRectByIndex(dot.rect);
     for (int y = 0; y < dot.size; ++y)
         for (int x = 0; x < dot.size; ++x) {
-            // A 3-pixel dot with its corners half covered reads as round.
-            const bool corner = dot.size == 3 && (x == 0 || x == 2) && (y == 0 || y == 2);
+            // A 3-pixel dot with its corners half covered reads as round; a larger one (a dense screen) is a disc.
+            const float radius = static_cast<float>(dot.size) / 2.0f, dx = static_cast<float>(x) + 0.5f - radius,
+                        dy = static_cast<float>(y) + 0.5f - radius;
+            const bool corner =
+                dot.size == 3 ? (x == 0 || x == 2) && (y == 0 || y == 2) : dx * dx + dy * dy > radius * radius;
             atlas.TexPixelsAlpha8[(r->Y + y) * atlas.TexWidth + r->X + x] = corner ? 0x70 : 0xFF;
         }
 }
 
 }  // namespace
 
-std::string load_fonts(ImGuiIO& io) {
+std::string load_fonts(ImGuiIO& io, float pixel_ratio) {
+    io.FontGlobalScale = 1.0f / pixel_ratio;
     if (!std::filesystem::exists(sans_path) || !std::filesystem::exists(mono_path)) {
-        io.Fonts->AddFontDefault();
+        ImFontConfig config;
+        config.SizePixels = 13.0f * pixel_ratio;
+        io.Fonts->AddFontDefault(&config);
         return "the DejaVu fonts are missing (Debian package fonts-dejavu-core): symbols such as Δ show as '?'";
     }
-    ImFont* sans = io.Fonts->AddFontFromFileTTF(sans_path, font_size, nullptr, glyph_ranges);
-    ImFont* mono = io.Fonts->AddFontFromFileTTF(mono_path, font_size - 1.0f, nullptr, glyph_ranges);
-    const DotGlyph dots[] = {add_dot(*io.Fonts, sans, font_size), add_dot(*io.Fonts, mono, font_size - 1.0f)};
+    const float sans_pixels = font_size * pixel_ratio, mono_pixels = (font_size - 1.0f) * pixel_ratio;
+    ImFont* sans = io.Fonts->AddFontFromFileTTF(sans_path, sans_pixels, nullptr, glyph_ranges);
+    ImFont* mono = io.Fonts->AddFontFromFileTTF(mono_path, mono_pixels, nullptr, glyph_ranges);
+    const DotGlyph dots[] = {add_dot(*io.Fonts, sans, font_size, pixel_ratio),
+                             add_dot(*io.Fonts, mono, font_size - 1.0f, pixel_ratio)};
     // Built here, once, so the dots can be drawn into the atlas before a renderer uploads it.
     io.Fonts->Build();
     for (const DotGlyph& dot : dots) draw_dot(*io.Fonts, dot);

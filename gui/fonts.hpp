@@ -9,9 +9,10 @@ struct ImFont;
 
 namespace impulse::gui {
 
-// Loads the fonts into `io`. Returns a one-line note when they are missing (ImGui's built-in font is then
-// used, which shows those symbols as '?'), else an empty string.
-std::string load_fonts(ImGuiIO& io);
+// Loads the fonts into `io`, rasterised at `pixel_ratio` times their size and drawn scaled back by as much (sharp on
+// a high-density screen, the same layout). Returns a one-line note when they are missing (ImGui's built-in font is
+// then used, which shows those symbols as '?'), else an empty string.
+std::string load_fonts(ImGuiIO& io, float pixel_ratio = 1.0f);
 
 // The monospaced font for values: the second font loaded, or the default font when it is missing.
 ImFont* value_font();

@@ -50,6 +50,10 @@ public:
     void type(const std::string& text) override { push_text(text); }
     std::ostream* standard_output() override { return standard_output_; }
     void set_standard_output(std::ostream* out) { standard_output_ = out; }
+    void written(const std::string& path) override {
+        if (offer_file_) offer_file_(path);
+    }
+    void set_offer_file(std::function<void(const std::string&)> offer) { offer_file_ = std::move(offer); }
 
     bool quitting() const { return quit_; }
     bool waiting() const { return pending_.has_value(); }
@@ -69,6 +73,7 @@ private:
     int settle_ = 0;
     bool quit_ = false;
     std::ostream* standard_output_ = nullptr;
+    std::function<void(const std::string&)> offer_file_;
 };
 
 double percentile(std::vector<double> sorted, double p) {
@@ -104,6 +109,160 @@ void print_bench(std::ostream& out, const InspectorRun& run, const std::vector<d
 
 }  // namespace
 
+struct InspectorApp::Impl {
+    Impl(model::Session& s, const InspectorRun& r, Display& d, std::ostream& e)
+        : session(s), run(r), display(d), err(e), host(s, state), layout(!r.headless) {}
+
+    model::Session& session;
+    InspectorRun run;
+    Display& display;
+    std::ostream& err;
+    UiState state;
+    Host host;
+    std::deque<model::Action> queue;
+    bool close_when_done = false;
+    Pixels pixels;
+    // ImGui settles a layout over a couple of frames after any input, so a window only idles after a few.
+    int busy_frames = 3;
+    bool done = false;
+    int status = 0;
+    RememberedLayout layout;  // a window remembers where its borders were dragged
+
+    void fail(const std::string& line) {
+        err << "impulse-lab: " << line << '\n';
+        status = 2;
+        done = true;
+    }
+    void write_screenshot();
+    void next_action();
+};
+
+InspectorApp::InspectorApp(model::Session& session, const InspectorRun& run, Display& display, std::ostream& err)
+    : impl_(std::make_unique<Impl>(session, run, display, err)) {
+    Impl& m = *impl_;
+    m.queue.assign(run.script.begin(), run.script.end());
+    if (run.screenshot) m.queue.push_back({model::ActionKind::screenshot, *run.screenshot, 1, 0});
+    // Headless, or after a final screenshot, the inspector closes once everything asked for is done.
+    m.close_when_done = run.headless || run.screenshot.has_value();
+    UiState& state = m.state;
+    // The run stopped early: say where in the status line, not only on the terminal.
+    if (session.broken_run()) {
+        state.message = "the run stopped at " + model::broken_run_text(session.trace().scene, *session.broken_run());
+        state.message_is_error = true;
+    } else if (const auto note = session.recording_note()) {
+        state.message = *note;  // which frames there are to step through
+    }
+    if (run.lesson) {
+        // Back where the student left off, with the answers they gave shown again.
+        state.lesson.emplace(course::LessonRun(*run.lesson, run.progress, run.progress_file), run.lesson_preview);
+        state.lesson->next_lesson = run.next_lesson;
+        go_to_lesson_step(session, state, state.lesson->run.step());
+        refresh_mask(session, state);
+    }
+    m.host.set_standard_output(run.standard_output);
+    m.host.set_offer_file(run.offer_file);
+}
+
+InspectorApp::~InspectorApp() {
+    impl_->layout.keep(impl_->state);
+}
+
+int InspectorApp::status() const {
+    return impl_->status;
+}
+
+UiState& InspectorApp::state() {
+    return impl_->state;
+}
+
+bool InspectorApp::idle() const {
+    const Impl& m = *impl_;
+    return m.queue.empty() && !m.host.waiting() && m.busy_frames <= 0;
+}
+
+void InspectorApp::Impl::write_screenshot() {
+    const std::string path = host.take();
+    try {
+        const std::string png = encode_png(pixels);
+        if (run.standard_output && path == "-") {
+            run.standard_output->write(png.data(), static_cast<std::streamsize>(png.size())).flush();
+        } else {
+            formats::write_file_atomically(path, png, path);
+            host.written(path);
+        }
+    } catch (const std::exception& e) {
+        // A script's or --screenshot's failure ends the run; the window's button reports it and goes on.
+        if (close_when_done || !queue.empty()) return fail(e.what());
+        state.message = e.what();
+        state.message_is_error = true;
+    }
+}
+
+void InspectorApp::Impl::next_action() {
+    const model::Action action = queue.front();
+    queue.pop_front();
+    const std::string where =
+        action.line > 0 ? run.script_name + ": line " + std::to_string(action.line) : std::string("--screenshot");
+    try {
+        model::perform(session, action, where, &host);
+        // A re-run says what it gave, in the window and (for a script) on the terminal when the recording
+        // was cut short: the frames a later goto can reach.
+        if (action.kind == model::ActionKind::set) {
+            state.message = model::rerun_text(session, action.argument, &state.message_is_error);
+            if (session.recording_note()) err << "impulse-lab: note: " << where << ": " << state.message << '\n';
+        }
+    } catch (const formats::InputError& e) {
+        fail(e.what());
+    }
+}
+
+bool InspectorApp::frame() {
+    Impl& m = *impl_;
+    if (m.done) return false;
+    if (!m.display.begin_frame(idle())) {
+        m.done = true;
+        return false;
+    }
+    m.busy_frames = m.display.had_events() ? 3 : m.busy_frames - 1;
+    m.state.pressed_keys = m.display.pressed_keys();
+    m.layout.take_up(m.state);
+    draw_inspector(m.session, m.state, m.host);
+    const bool capture = m.host.capture_now();
+    m.display.end_frame(capture ? &m.pixels : nullptr);
+    if (capture) m.write_screenshot();
+    if (m.done) return false;
+    if (m.host.quitting() || m.state.quit)
+        m.done = true;
+    else if (m.host.waiting())
+        return true;
+    else if (!m.queue.empty())
+        m.next_action();
+    else if (m.close_when_done)
+        m.done = true;
+    return !m.done;
+}
+
+void InspectorApp::bench(int frames, std::ostream& out) {
+    Impl& m = *impl_;
+    model::Session& session = m.session;
+    std::vector<double> ms;
+    ms.reserve(static_cast<std::size_t>(frames));
+    for (int i = 0; i < frames; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        // Every frame moves one step (wrapping at the end), so each rebuilds the views: the worst case.
+        if (session.cursor()) {
+            std::optional<model::Cursor> next = model::next_step(session.trace(), *session.cursor());
+            if (!next) next = model::first_cursor(session.trace());
+            session.move_to(*next);
+        }
+        if (!m.display.begin_frame()) break;
+        draw_inspector(session, m.state, m.host);
+        m.display.end_frame();
+        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    }
+    if (!ms.empty()) print_bench(out, m.run, ms, session.trace());
+}
+
 int run_inspector(model::Session& session, const InspectorRun& run, std::ostream& out, std::ostream& err) {
     // Every file the run will write must be writable before anything is shown or written.
     try {
@@ -129,101 +288,12 @@ int run_inspector(model::Session& session, const InspectorRun& run, std::ostream
     }
     if (!display->font_note().empty()) err << "impulse-lab: note: " << display->font_note() << '\n';
 
-    std::deque<model::Action> queue(run.script.begin(), run.script.end());
-    if (run.screenshot) queue.push_back({model::ActionKind::screenshot, *run.screenshot, 1, 0});
-    // Headless, or after a final screenshot, the inspector closes once everything asked for is done.
-    const bool close_when_done = run.headless || run.screenshot.has_value();
-
-    UiState state;
-    // The run stopped early: say where in the status line, not only on the terminal.
-    if (session.broken_run()) {
-        state.message = "the run stopped at " + model::broken_run_text(session.trace().scene, *session.broken_run());
-        state.message_is_error = true;
-    } else if (const auto note = session.recording_note()) {
-        state.message = *note;  // which frames there are to step through
+    InspectorApp app(session, run, *display, err);
+    while (app.frame()) {
     }
-    if (run.lesson) {
-        // Back where the student left off, with the answers they gave shown again.
-        state.lesson.emplace(course::LessonRun(*run.lesson, run.progress, run.progress_file), run.lesson_preview);
-        state.lesson->next_lesson = run.next_lesson;
-        go_to_lesson_step(session, state, state.lesson->run.step());
-        refresh_mask(session, state);
-    }
-    RememberedLayout layout(!run.headless);  // a window remembers where its borders were dragged
-    Host host(session, state);
-    host.set_standard_output(run.standard_output);
-    Pixels pixels;
-    // ImGui settles a layout over a couple of frames after any input, so a window only idles after a few.
-    int busy_frames = 3;
-    while (display->begin_frame(queue.empty() && !host.waiting() && busy_frames <= 0)) {
-        busy_frames = display->had_events() ? 3 : busy_frames - 1;
-        state.pressed_keys = display->pressed_keys();
-        layout.take_up(state);
-        draw_inspector(session, state, host);
-        const bool capture = host.capture_now();
-        display->end_frame(capture ? &pixels : nullptr);
-        if (capture) {
-            const std::string path = host.take();
-            try {
-                const std::string png = encode_png(pixels);
-                if (run.standard_output && path == "-")
-                    run.standard_output->write(png.data(), static_cast<std::streamsize>(png.size())).flush();
-                else
-                    formats::write_file_atomically(path, png, path);
-            } catch (const std::exception& e) {
-                // A script's or --screenshot's failure ends the run; the window's button reports it and goes on.
-                if (close_when_done || !queue.empty()) {
-                    err << "impulse-lab: " << e.what() << '\n';
-                    return 2;
-                }
-                state.message = e.what();
-                state.message_is_error = true;
-            }
-        }
-        if (host.quitting() || state.quit) break;
-        if (host.waiting()) continue;
-        if (queue.empty()) {
-            if (close_when_done) break;
-            continue;
-        }
-        const model::Action action = queue.front();
-        queue.pop_front();
-        const std::string where =
-            action.line > 0 ? run.script_name + ": line " + std::to_string(action.line) : std::string("--screenshot");
-        try {
-            model::perform(session, action, where, &host);
-            // A re-run says what it gave, in the window and (for a script) on the terminal when the recording
-            // was cut short: the frames a later goto can reach.
-            if (action.kind == model::ActionKind::set) {
-                state.message = model::rerun_text(session, action.argument, &state.message_is_error);
-                if (session.recording_note()) err << "impulse-lab: note: " << where << ": " << state.message << '\n';
-            }
-        } catch (const formats::InputError& e) {
-            err << "impulse-lab: " << e.what() << '\n';
-            return 2;
-        }
-    }
-
-    if (run.next_lesson_chosen && state.lesson) *run.next_lesson_chosen = state.lesson->open_next;
-    layout.keep(state);
-    if (run.bench_frames) {
-        std::vector<double> ms;
-        ms.reserve(static_cast<std::size_t>(*run.bench_frames));
-        for (int i = 0; i < *run.bench_frames; ++i) {
-            const auto start = std::chrono::steady_clock::now();
-            // Every frame moves one step (wrapping at the end), so each rebuilds the views: the worst case.
-            if (session.cursor()) {
-                std::optional<model::Cursor> next = model::next_step(session.trace(), *session.cursor());
-                if (!next) next = model::first_cursor(session.trace());
-                session.move_to(*next);
-            }
-            if (!display->begin_frame()) break;
-            draw_inspector(session, state, host);
-            display->end_frame();
-            ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        }
-        if (!ms.empty()) print_bench(out, run, ms, session.trace());
-    }
+    if (run.next_lesson_chosen && app.state().lesson) *run.next_lesson_chosen = app.state().lesson->open_next;
+    if (app.status() != 0) return app.status();
+    if (run.bench_frames) app.bench(*run.bench_frames, out);
     return 0;
 }
 

@@ -1,10 +1,10 @@
 #include "gui/lesson_moves.hpp"
 #include "gui/lesson_colours.hpp"
 
+#include "gui/keys.hpp"
 #include "gui/text_wrap.hpp"
 #include "formats/input_error.hpp"
 
-#include <SDL.h>
 #include <imgui.h>
 #include <imgui_internal.h>
 
@@ -172,12 +172,12 @@ void handle_lesson_keys(model::Session& session, UiState& state) {
     const bool choose = step.question && step.question->kind == course::Question::Kind::choose;
     const int options = choose ? static_cast<int>(step.question->options.size()) : 0;
     const int here = l.run.step();
-    for (const int key : state.pressed_keys) {
+    for (const int pressed : state.pressed_keys) {
         const bool open = l.run.waiting() && !l.finished;
-        switch (key) {
-            case SDL_SCANCODE_RIGHT:
-            case SDL_SCANCODE_PAGEDOWN:
-                if (!arrows_are_mine && key == SDL_SCANCODE_RIGHT) break;
+        switch (pressed) {
+            case key::right:
+            case key::page_down:
+                if (!arrows_are_mine && pressed == key::right) break;
                 if (l.finished) break;
                 // A second → while asked: go on, the question left open.
                 if (l.leaving)
@@ -185,16 +185,16 @@ void handle_lesson_keys(model::Session& session, UiState& state) {
                 else
                     request_step(session, state, here + 1);
                 break;
-            case SDL_SCANCODE_LEFT:
-            case SDL_SCANCODE_PAGEUP:
-                if (!arrows_are_mine && key == SDL_SCANCODE_LEFT) break;
+            case key::left:
+            case key::page_up:
+                if (!arrows_are_mine && pressed == key::left) break;
                 if (l.leaving)
                     stay(state);
                 else
                     request_step(session, state, l.finished ? l.run.step() : here - 1);
                 break;
-            case SDL_SCANCODE_RETURN:
-            case SDL_SCANCODE_KP_ENTER:
+            case key::enter:
+            case key::keypad_enter:
                 if (typing) break;  // the answer field checks its own Enter
                 if (l.finished) {
                     if (l.next_lesson) l.open_next = true, state.quit = true;
@@ -209,19 +209,19 @@ void handle_lesson_keys(model::Session& session, UiState& state) {
                     request_step(session, state, here + 1);
                 }
                 break;
-            case SDL_SCANCODE_S:
+            case key::s:
                 if (io.KeyCtrl && open) skip_question(session, state);
                 break;
-            case SDL_SCANCODE_TAB:
-            case SDL_SCANCODE_DOWN:
-            case SDL_SCANCODE_UP:
+            case key::tab:
+            case key::down:
+            case key::up:
                 if (!choose || !open || l.leaving) break;
-                if (key == SDL_SCANCODE_UP || (key == SDL_SCANCODE_TAB && io.KeyShift))
+                if (pressed == key::up || (pressed == key::tab && io.KeyShift))
                     l.chosen = l.chosen <= 0 ? options - 1 : l.chosen - 1;
                 else
                     l.chosen = (l.chosen + 1) % options;
                 break;
-            case SDL_SCANCODE_ESCAPE:
+            case key::escape:
                 // One press: it answers the question asked, else closes the window.
                 if (l.leaving)
                     stay(state);

@@ -13,7 +13,6 @@
 #include "course/readings.hpp"
 #include "formats/input_error.hpp"
 
-#include <SDL.h>
 #include <imgui.h>
 
 #include <algorithm>

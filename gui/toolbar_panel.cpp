@@ -1,6 +1,6 @@
+#include "gui/keys.hpp"
 #include "gui/panels.hpp"
 
-#include <SDL.h>
 #include <filesystem>
 #include <imgui.h>
 
@@ -33,17 +33,17 @@ constexpr Button buttons[] = {
 // The move a navigation key makes; count 0 for any other key.
 Action key_action(int scancode) {
     struct Key {
-        SDL_Scancode key;
+        int code;
         ActionKind kind;
     };
     constexpr Key keys[] = {
-        {SDL_SCANCODE_RIGHT, ActionKind::next_step},     {SDL_SCANCODE_LEFT, ActionKind::previous_step},
-        {SDL_SCANCODE_DOWN, ActionKind::next_item},      {SDL_SCANCODE_UP, ActionKind::previous_item},
-        {SDL_SCANCODE_PAGEDOWN, ActionKind::next_phase}, {SDL_SCANCODE_PAGEUP, ActionKind::previous_phase},
-        {SDL_SCANCODE_HOME, ActionKind::first},          {SDL_SCANCODE_END, ActionKind::last},
+        {key::right, ActionKind::next_step},      {key::left, ActionKind::previous_step},
+        {key::down, ActionKind::next_item},       {key::up, ActionKind::previous_item},
+        {key::page_down, ActionKind::next_phase}, {key::page_up, ActionKind::previous_phase},
+        {key::home, ActionKind::first},           {key::end, ActionKind::last},
     };
     for (const Key& k : keys)
-        if (scancode == k.key) return {k.kind};
+        if (scancode == k.code) return {k.kind};
     return {ActionKind::quit, {}, 0};
 }
 

@@ -210,6 +210,7 @@ void perform(Session& session, const Action& action, std::string_view where, Act
                 action.kind == ActionKind::export_trace ? exported_trace(session) : exported_table(session);
             if (action.argument != "-") {
                 formats::write_file_atomically(action.argument, text, at);
+                if (host) host->written(action.argument);
                 return;
             }
             // "-": the command's standard output (cli/outputs.hpp).

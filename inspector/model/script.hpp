@@ -73,6 +73,8 @@ public:
     virtual void type(const std::string& text) = 0;
     // Where an export or screenshot named "-" goes (the command's standard output), or null when nowhere.
     virtual std::ostream* standard_output() { return nullptr; }
+    // A file an export wrote (a browser offers it as a download).
+    virtual void written(const std::string& /*path*/) {}
 };
 
 // Carries out one action. A move that would leave the trace, a bad goto or setting, or an unwritable file

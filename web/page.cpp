@@ -35,10 +35,16 @@ EM_JS(void, js_pick_file, (int purpose), {
 
 EM_JS(void, js_store, (const char* path), {
     const name = UTF8ToString(path);
+    // The module's files are the page's own: read past their mode bits (emscripten 3.1.6's umask leaves a file the
+    // atomic writer made without them).
+    const permissions = FS.ignorePermissions;
+    FS.ignorePermissions = true;
     try {
-        localStorage.setItem("impulse-lab:" + name, FS.readFile(name, {encoding : "utf8"}));
+        localStorage.setItem("impulse-lab:" + name, FS.readFile(name, {encoding: "utf8"}));
     } catch (e) {
         console.warn("impulse-lab: the browser keeps no storage for this page: " + e);
+    } finally {
+        FS.ignorePermissions = permissions;
     }
 });
 

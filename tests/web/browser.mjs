@@ -63,11 +63,17 @@ function check(condition, what) {
   }
 }
 const state = () => page.evaluate(() => window.impulseLab.state());
-// Waits until the site's state satisfies `test` (a function of the state, run in the page); 60 s at most.
-async function until(test, what) {
+// Waits until the site's state satisfies `test(state, arg)` (run in the page, so it sees only its arguments); 60 s at
+// most.
+async function until(test, what, arg = null) {
   try {
-    await page.waitForFunction(`(() => { try { const s = window.impulseLab.state(); return (${test})(s); } ` +
-                               `catch (e) { return false; } })()`, null, { timeout: 60000, polling: 'raf' });
+    await page.waitForFunction(({ source, arg }) => {
+      try {
+        return (0, eval)(`(${source})`)(window.impulseLab.state(), arg);
+      } catch (e) {
+        return false;
+      }
+    }, { source: test.toString(), arg }, { timeout: 60000, polling: 'raf' });
     return true;
   } catch (e) {
     check(false, `${what} (last state: ${JSON.stringify(await state().catch(() => null))?.slice(0, 600)})`);
@@ -139,8 +145,8 @@ try {
   await until((t) => t.screen === 'lesson', 'lesson 1 opens for the pictures');
   for (const [width, height] of [[1024, 768], [1280, 800], [1920, 1080]]) {
     await page.setViewportSize({ width, height });
-    await until((t) => t.width === width && t.height === height && t.items.length > 0 && t.idle,
-                `the page follows the window to ${width}x${height}`);
+    await until((t, a) => t.width === a[0] && t.height === a[1] && t.items.length > 0 && t.idle,
+                `the page follows the window to ${width}x${height}`, [width, height]);
     await page.screenshot({ path: join(out, `lesson-01-${width}x${height}.png`) });
     s = await state();
     const outside = s.items.filter((i) => i.box[0] < -1 || i.box[1] < -1 || i.box[2] > width + 1 || i.box[3] > height + 1);
@@ -156,9 +162,9 @@ try {
     await page.setViewportSize({ width, height });
     for (let number = 1; number <= 13; ++number) {
       await page.evaluate((n) => { location.hash = `#lesson=${n}`; }, number);
-      if (!await until((t) => t.screen === 'lesson' && t.lesson.number === number && t.width === width,
-                       `lesson ${number} opens at ${width}x${height}`)) continue;
-      let steps = (await state()).lesson.steps;
+      if (!await until((t, a) => t.screen === 'lesson' && t.lesson.number === a[0] && t.width === a[1],
+                       `lesson ${number} opens at ${width}x${height}`, [number, width])) continue;
+      const steps = (await state()).lesson.steps;
       for (let guard = 0; guard < 3 * steps; ++guard) {
         s = await state();
         if (s.lesson.question && s.lesson.question.state === 'open') {
@@ -169,7 +175,7 @@ try {
         }
         if (s.lesson.step === steps) break;
         await page.keyboard.press('ArrowRight');
-        await until((t) => t.lesson.step === s.lesson.step + 1, `→ in lesson ${number} at step ${s.lesson.step}`);
+        await until((t, a) => t.lesson.step === a, `→ in lesson ${number} at step ${s.lesson.step}`, s.lesson.step + 1);
       }
       s = await state();
       check(s.lesson.step === steps && (!s.lesson.question || s.lesson.question.state !== 'open'),

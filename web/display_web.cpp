@@ -86,8 +86,7 @@ struct Display::Platform {
     EMSCRIPTEN_WEBGL_CONTEXT_HANDLE context = 0;
     bool imgui_ready = false;
     std::vector<Event> events;
-    std::vector<Event> deferred;  // releases passed to ImGui a frame after their press
-    float pixel_ratio = 1.0f;     // the fonts were rasterised for this one
+    float pixel_ratio = 1.0f;  // the fonts were rasterised for this one
     double last_time = 0.0;
     int buffer_width = 0, buffer_height = 0;
     ImVec4 background{};
@@ -257,13 +256,13 @@ Display::~Display() {
 }
 
 bool Display::events_waiting() const {
-    return !platform_->events.empty() || !platform_->deferred.empty() || platform_->resized();
+    return !platform_->events.empty() || platform_->resized();
 }
 
 bool Display::begin_frame(bool) {
     Platform& p = *platform_;
     ImGuiIO& io = ImGui::GetIO();
-    had_events_ = !p.events.empty() || !p.deferred.empty();
+    had_events_ = !p.events.empty();
     pressed_keys_.clear();
 
     // The canvas fills the window: its size in layout pixels, its buffer in the screen's.
@@ -289,23 +288,27 @@ bool Display::begin_frame(bool) {
         ImGui_ImplOpenGL3_CreateFontsTexture();
     }
 
-    // Releases held back from the last frame first (ImGui 1.86 reads whether a key or button is down once per
-    // frame, so a press and its release in one frame, a quick tap or a test's click, would never reach a widget).
-    for (const Event& e : p.deferred)
-        (e.kind == Event::Kind::key_up ? io.KeysDown[e.code] : io.MouseDown[e.code]) = false;
-    p.deferred.clear();
+    // A release of a key or button pressed in this frame waits, with everything after it, for the next frame:
+    // ImGui 1.86 reads whether a key or button is down once per frame, so a press and its release in one frame (a
+    // quick tap, or a test's click) would never reach a widget. Cutting the queue there, rather than holding back
+    // only the release, keeps the order: text typed right after Ctrl+A is not read as typed with Ctrl held.
     std::vector<int> buttons_pressed;
-    for (const Event& e : p.events) {
+    std::size_t taken = 0;
+    for (; taken < p.events.size(); ++taken) {
+        const Event& e = p.events[taken];
+        const bool tap_ends =
+            (e.kind == Event::Kind::key_up &&
+             std::find(pressed_keys_.begin(), pressed_keys_.end(), e.code) != pressed_keys_.end()) ||
+            (e.kind == Event::Kind::mouse_up &&
+             std::find(buttons_pressed.begin(), buttons_pressed.end(), e.code) != buttons_pressed.end());
+        if (tap_ends) break;
         switch (e.kind) {
             case Event::Kind::key_down:
                 io.KeysDown[e.code] = true;
                 pressed_keys_.push_back(e.code);
                 break;
             case Event::Kind::key_up:
-                if (std::find(pressed_keys_.begin(), pressed_keys_.end(), e.code) != pressed_keys_.end())
-                    p.deferred.push_back(e);
-                else
-                    io.KeysDown[e.code] = false;
+                io.KeysDown[e.code] = false;
                 break;
             case Event::Kind::text:
                 io.AddInputCharactersUTF8(e.text.c_str());
@@ -317,10 +320,7 @@ bool Display::begin_frame(bool) {
                 break;
             case Event::Kind::mouse_up:
                 io.MousePos = ImVec2(e.x, e.y);
-                if (std::find(buttons_pressed.begin(), buttons_pressed.end(), e.code) != buttons_pressed.end())
-                    p.deferred.push_back(e);
-                else
-                    io.MouseDown[e.code] = false;
+                io.MouseDown[e.code] = false;
                 break;
             case Event::Kind::mouse_move:
                 io.MousePos = ImVec2(e.x, e.y);
@@ -338,7 +338,7 @@ bool Display::begin_frame(bool) {
                 break;
         }
     }
-    p.events.clear();
+    p.events.erase(p.events.begin(), p.events.begin() + static_cast<std::ptrdiff_t>(taken));
     io.KeyCtrl = io.KeysDown[key::left_ctrl] || io.KeysDown[key::right_ctrl];
     io.KeyShift = io.KeysDown[key::left_shift] || io.KeysDown[key::right_shift];
     io.KeyAlt = io.KeysDown[key::left_alt] || io.KeysDown[key::right_alt];

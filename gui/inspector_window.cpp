@@ -85,12 +85,15 @@ void draw_lesson_layout(model::Session& session, UiState& state, model::ActionHo
             {"Settings", [](model::Session& s, UiState& u, model::ActionHost& h) { draw_settings(s, u, h); }},
             {"Export", [](model::Session& s, UiState& u, model::ActionHost& h) { draw_export(s, u, h); }},
         };
-        for (const auto& tab : tabs)
-            if (ImGui::BeginTabItem(tab.name, nullptr,
-                                    state.show_tab == tab.name ? ImGuiTabItemFlags_SetSelected : 0)) {
+        for (const auto& tab : tabs) {
+            const bool open =
+                ImGui::BeginTabItem(tab.name, nullptr, state.show_tab == tab.name ? ImGuiTabItemFlags_SetSelected : 0);
+            record_control(state, std::string("tab ") + tab.name);
+            if (open) {
                 tab.draw(session, state, host);
                 ImGui::EndTabItem();
             }
+        }
         ImGui::EndTabBar();
         state.show_tab.clear();
     }
@@ -158,7 +161,7 @@ void draw_inspector_layout(model::Session& session, UiState& state, model::Actio
 void draw_inspector(model::Session& session, UiState& state, model::ActionHost& host) {
     refresh_views(session, state);
     const ImVec2 screen = ImGui::GetIO().DisplaySize;
-    if (state.record_layout) state.layout.clear();
+    if (state.record_layout) state.layout.clear(), state.controls.clear();
 
     if (begin_panel("##toolbar", 0, 0, screen.x, toolbar_height, ImGuiWindowFlags_NoTitleBar))
         draw_toolbar(session, state, host);

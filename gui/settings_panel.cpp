@@ -191,10 +191,13 @@ void draw_export(model::Session& session, UiState& state, model::ActionHost& hos
         ImGui::PushID(r.button);
         const bool withheld = secrets && r.kind == ActionKind::export_trace;
         ImGui::BeginDisabled(withheld);
-        if (ImGui::Button(r.button, ImVec2(110, 0))) {
+        const bool pressed = ImGui::Button(r.button, ImVec2(110, 0));
+        record_control(state, std::string("button ") + r.button);
+        if (pressed) {
             if (secrets && r.kind == ActionKind::export_table) {
                 try {
                     formats::write_file_atomically(r.path->data(), masked_table(session, state), r.path->data());
+                    host.written(r.path->data());  // a browser offers it as a download
                     state.message = "written to " + std::string(r.path->data()), state.message_is_error = false;
                 } catch (const formats::InputError& e) {
                     state.message = e.problem(), state.message_is_error = true;

@@ -58,7 +58,11 @@ CourseListing list_course(const std::filesystem::path& data, const course::Progr
 }
 
 void draw_start_page(const CourseListing& listing, const std::string& message, bool message_is_error,
-                     const StartPageActions& actions) {
+                     const StartPageActions& actions, std::vector<LaidOutItem>* controls) {
+    const auto record = [controls](const std::string& what) {
+        if (controls) record_control(*controls, what);
+    };
+    if (controls) controls->clear();
     const ImGuiIO& io = ImGui::GetIO();
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     ImGui::SetNextWindowSize(io.DisplaySize);
@@ -93,13 +97,23 @@ void draw_start_page(const CourseListing& listing, const std::string& message, b
             ImGui::TableNextColumn();
             ImGui::Text("%d", l.number);
             ImGui::TableNextColumn();
+            ImGui::PushTextWrapPos(0.0f);  // a title wraps in its column, not at the page's column
             ImGui::TextWrapped("%s", l.title.c_str());
+            ImGui::PopTextWrapPos();
             ImGui::TableNextColumn();
             ImGui::Text("%d, %d questions", l.steps, l.questions);
             ImGui::TableNextColumn();
+            ImGui::PushTextWrapPos(0.0f);
             ImGui::TextWrapped("%s", l.progress.c_str());
+            ImGui::PopTextWrapPos();
             ImGui::TableNextColumn();
             if (ImGui::Button("Open")) actions.open_lesson(l.number);
+            record("button Open " + std::to_string(l.number));
+            ImGui::SameLine();
+            if (ImGui::Button("Worksheet")) actions.worksheet(l.number);
+            record("button Worksheet " + std::to_string(l.number));
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("The cells of lesson %d's steps to fill in, as a CSV file to hand out", l.number);
             ImGui::PopID();
         }
         ImGui::EndTable();
@@ -117,11 +131,14 @@ void draw_start_page(const CourseListing& listing, const std::string& message, b
 
     ImGui::TextColored(ImVec4(0.75f, 0.95f, 0.55f, 1.0f), "Your own files");
     if (ImGui::Button("Open a scene, case or trace...")) actions.pick_file();
+    record("button Open a file");
     ImGui::SameLine();
     ImGui::TextDisabled("(or drop one on the page)");
     if (ImGui::Button("Export progress.json")) actions.export_progress();
+    record("button Export progress.json");
     ImGui::SameLine();
     if (ImGui::Button("Import progress.json...")) actions.import_progress();
+    record("button Import progress.json");
     ImGui::PopTextWrapPos();
     ImGui::EndGroup();
     ImGui::End();

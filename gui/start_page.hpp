@@ -4,6 +4,7 @@
 // bring back. What a button does is the platform's (the page's file picker, a download): it comes as actions.
 
 #include "course/progress.hpp"
+#include "gui/ui_state.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -35,10 +36,13 @@ struct StartPageActions {
     std::function<void()> pick_file;        // the student's own scene, case or trace
     std::function<void()> export_progress;  // progress.json, as the desktop writes it
     std::function<void()> import_progress;
+    // The lesson's worksheet (as `impulse-lab worksheet LESSON --out sheet.csv` writes it), for a teacher to hand out.
+    std::function<void(int number)> worksheet;
 };
 
-// The page, filling the window. `message` is the last outcome (an error in red).
+// The page, filling the window. `message` is the last outcome (an error in red). `controls`, when given, gets the
+// buttons as laid out ("button Open 3", "button Worksheet 3", "button Export progress.json"), for a browser test.
 void draw_start_page(const CourseListing& listing, const std::string& message, bool message_is_error,
-                     const StartPageActions& actions);
+                     const StartPageActions& actions, std::vector<LaidOutItem>* controls = nullptr);
 
 }  // namespace impulse::gui

@@ -102,6 +102,16 @@ void act(model::Session& session, UiState& state, const model::Action& action, m
     }
 }
 
+void record_control(std::vector<LaidOutItem>& controls, const std::string& what) {
+    const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    controls.push_back({what, min.x, min.y, max.x, max.y, pos.x, pos.y, pos.x + size.x, pos.y + size.y, false});
+}
+
+void record_control(UiState& state, const std::string& what) {
+    if (state.record_layout) record_control(state.controls, what);
+}
+
 void record_item(UiState& state, const char* what, bool scrolls) {
     if (!state.record_layout) return;
     const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();

@@ -125,6 +125,9 @@ struct UiState {
     // Filled by the lesson panel every frame while `record_layout` is set.
     bool record_layout = false;
     std::vector<LaidOutItem> layout;
+    // The inspector's tabs and export buttons as laid out, while `record_layout` is set: where a browser test
+    // clicks (web/site.cpp's test hook). Not the lesson panel's, so the layout check does not hold them to it.
+    std::vector<LaidOutItem> controls;
     float lesson_panel[4] = {0, 0, 0, 0};  // the lesson window's rectangle: min x, min y, max x, max y
 };
 
@@ -142,5 +145,8 @@ void act(model::Session& session, UiState& state, const model::Action& action, m
 // Records the last ImGui item (its rectangle and the window it shows in) while the layout is recorded.
 // `scrolls`: that window scrolls vertically, so the item may lie below its bottom until scrolled to.
 void record_item(UiState& state, const char* what, bool scrolls = false);
+// The last item as one of `controls` (while `record_layout` is set), and `controls` it is added to.
+void record_control(std::vector<LaidOutItem>& controls, const std::string& what);
+void record_control(UiState& state, const std::string& what);
 
 }  // namespace impulse::gui

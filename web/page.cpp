@@ -12,7 +12,18 @@ namespace {
 // clang-format off
 EM_JS(void, js_offer_download, (const char* path), {
     const name = UTF8ToString(path);
-    const bytes = FS.readFile(name);
+    // Read past the file's mode bits, as js_store does; a file that cannot be read is an error the page reports.
+    const permissions = FS.ignorePermissions;
+    FS.ignorePermissions = true;
+    let bytes;
+    try {
+        bytes = FS.readFile(name);
+    } catch (e) {
+        console.error("impulse-lab: cannot offer " + name + " as a download: " + e);
+        return;
+    } finally {
+        FS.ignorePermissions = permissions;
+    }
     const url = URL.createObjectURL(new Blob([bytes], {
         type:
             "application/octet-stream"

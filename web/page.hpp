@@ -10,6 +10,8 @@ namespace impulse::web {
 inline constexpr const char* data_folder = "/impulse-lab";
 // Where files the student picks or drops are written, by the page, before the site opens them.
 inline constexpr const char* uploads_folder = "/uploads";
+// Where the site writes the files it offers as downloads (a worksheet).
+inline constexpr const char* downloads_folder = "/downloads";
 
 // Offers a file of the module's file system as a download, named as the file.
 void offer_download(const std::string& path);

@@ -3,7 +3,10 @@
 #include "course/lesson_end.hpp"
 #include "course/progress.hpp"
 #include "formats/input_error.hpp"
+#include "formats/atomic_file.hpp"
 #include "formats/input_files.hpp"
+#include "formats/trace_json.hpp"
+#include "course/worksheet.hpp"
 #include "gui/layout_check.hpp"
 #include "gui/ui_state.hpp"
 #include "web/page.hpp"
@@ -70,6 +73,7 @@ Site::Site() {
     actions_.open_file = [this](const std::filesystem::path& file) { pending_ = [this, file] { open_file(file); }; };
     actions_.pick_file = [] { pick_file(Pick::open); };
     actions_.import_progress = [] { pick_file(Pick::progress); };
+    actions_.worksheet = [this](int number) { pending_ = [this, number] { download_worksheet(number); }; };
     actions_.export_progress = [this] {
         if (!progress_file_) return;
         if (!std::filesystem::exists(*progress_file_)) course::save_progress(*progress_file_, progress_);
@@ -87,10 +91,37 @@ void Site::show_start(const std::string& message, bool is_error) {
     settle_ = 3;
 }
 
-void Site::open_lesson(int number) {
-    std::optional<std::filesystem::path> file;
+std::optional<std::filesystem::path> Site::lesson_file(int number) const {
     for (const std::filesystem::path& f : course::lesson_files(std::filesystem::path(data_folder) / "lessons"))
-        if (std::atoi(f.filename().string().c_str()) == number) file = f;
+        if (std::atoi(f.filename().string().c_str()) == number) return f;
+    return std::nullopt;
+}
+
+void Site::download_worksheet(int number) {
+    const std::optional<std::filesystem::path> file = lesson_file(number);
+    if (!file) return show_start("there is no lesson " + std::to_string(number), true);
+    try {
+        // As `impulse-lab worksheet LESSON.md --out sheet.csv` (cli/worksheet_command.cpp): the lesson's steps
+        // that compute something to fill in.
+        const course::PreparedLesson lesson = course::prepare_lesson(course::read_lesson(*file));
+        const formats::json document = formats::trace_json(lesson.session.trace());
+        const std::vector<model::Cursor> places = course::places_with_cells(lesson.session, lesson.places, &document);
+        const course::Worksheet sheet = course::make_worksheet(lesson.session, places, &document);
+        std::filesystem::create_directories(downloads_folder);
+        const std::string path = std::string(downloads_folder) + "/" + file->stem().string() + "-worksheet.csv";
+        formats::write_file_atomically(path, course::worksheet_csv(sheet), path);
+        offer_download(path);
+        show_start("lesson " + std::to_string(number) + "'s worksheet: " + std::to_string(sheet.steps.size()) +
+                   " steps to fill in, downloaded as " + std::filesystem::path(path).filename().string());
+    } catch (const formats::FileError& e) {
+        show_start(file_error_text(e), true);
+    } catch (const formats::InputError& e) {
+        show_start(file->filename().string() + ": " + e.what(), true);
+    }
+}
+
+void Site::open_lesson(int number) {
+    const std::optional<std::filesystem::path> file = lesson_file(number);
     if (!file) return show_start("there is no lesson " + std::to_string(number), true);
     auto open = std::make_unique<Open>();
     open->lesson_number = number;
@@ -124,6 +155,7 @@ void Site::open_file(const std::filesystem::path& file) {
     gui::InspectorRun run;
     run.offer_file = offer_download;
     open->app = std::make_unique<gui::InspectorApp>(open->inspected(), run, *display_, errors_);
+    open->app->state().record_layout = true;  // the tabs and export buttons, for the test hook
     open_ = std::move(open);
     // A shipped file has an address of its own; the student's own file has none to come back to.
     const std::string folder = file.parent_path().filename().string();
@@ -191,7 +223,7 @@ void Site::frame() {
     if (settle_ <= 0 && !display_->events_waiting()) return;
     display_->begin_frame();
     settle_ = display_->had_events() ? 3 : settle_ - 1;
-    gui::draw_start_page(listing_, message_, message_is_error_, actions_);
+    gui::draw_start_page(listing_, message_, message_is_error_, actions_, &start_controls_);
     display_->end_frame();
     if (pending_) {
         const auto action = std::move(pending_);
@@ -215,6 +247,13 @@ std::string Site::test_state() const {
     for (const gui::CourseListing::LessonLine& l : listing_.lessons)
         lessons.push_back({{"number", l.number}, {"title", l.title}, {"progress", l.progress}});
     state["lessons"] = lessons;
+    const auto boxes = [](const std::vector<gui::LaidOutItem>& items) {
+        nlohmann::ordered_json list = nlohmann::ordered_json::array();
+        for (const gui::LaidOutItem& item : items)
+            list.push_back({{"what", item.what}, {"box", {item.min_x, item.min_y, item.max_x, item.max_y}}});
+        return list;
+    };
+    state["controls"] = boxes(open_ ? open_->app->state().controls : start_controls_);
     if (open_) {
         const gui::UiState& ui = open_->app->state();
         state["inspector_message"] = ui.message;
@@ -238,6 +277,7 @@ std::string Site::test_state() const {
             } else {
                 lesson["question"] = nullptr;
             }
+            lesson["typed"] = std::string(ui.lesson->typed.data());  // the answer field's text
             lesson["tally"] = course::tally_text(run.tally());
             state["lesson"] = lesson;
         }

@@ -18,6 +18,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace impulse::web {
 
@@ -43,6 +44,8 @@ private:
     void show_start(const std::string& message = {}, bool is_error = false);
     void open_lesson(int number);
     void open_file(const std::filesystem::path& file);
+    std::optional<std::filesystem::path> lesson_file(int number) const;
+    void download_worksheet(int number);
     void save_if_changed();
 
     std::optional<gui::Display> display_;
@@ -50,6 +53,7 @@ private:
     course::Progress progress_;
     gui::CourseListing listing_;
     gui::StartPageActions actions_;
+    std::vector<gui::LaidOutItem> start_controls_;  // the start page's buttons as laid out, for the test hook
     std::unique_ptr<Open> open_;
     std::function<void()> pending_;  // what a start page button asked for, done after its frame
     std::string message_;

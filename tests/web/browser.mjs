@@ -3,14 +3,15 @@
 //   node browser.mjs --site build/web/site --scenes scenes --out FOLDER
 //
 // It opens the start page, then lesson 1 by its link; steps with the keys; types a wrong answer, then the right
-// one, and reads the verdicts; reloads and finds the progress kept; opens a case through the file input; takes a
-// picture at 1024x768, 1280x800 and 1920x1080 and holds each to the app's own layout check; and takes every lesson
-// to its end at 1280x800 and 1024x768 (skipping each question with its Skip button). It waits on the site's test
+// one, and reads the verdicts; reloads and finds the progress kept; downloads the progress and imports it back, and
+// downloads lesson 1's worksheet; opens a case through the file input and downloads its trace, table and a
+// screenshot; takes a picture at 1024x768, 1280x800 and 1920x1080 and holds each to the app's own layout check; and
+// takes every lesson to its end at 1280x800 and 1024x768 (skipping each question with its Skip button). It waits on the site's test
 // hook (window.impulseLab.state()), never on a clock, and fails on any error the page logs.
 
 import { chromium } from 'playwright-core';
 import { createServer } from 'node:http';
-import { mkdirSync, readFileSync, existsSync } from 'node:fs';
+import { mkdirSync, readFileSync, writeFileSync, existsSync } from 'node:fs';
 import { extname, join, normalize } from 'node:path';
 
 function option(name) {
@@ -80,6 +81,29 @@ async function until(test, what, arg = null) {
     return false;
   }
 }
+// Clicks one of the site's controls (the start page's buttons, the inspector's tabs and export buttons) where the
+// last frame laid it out.
+async function clickControl(what) {
+  const s = await state();
+  const item = (s.controls ?? []).find((i) => i.what === what);
+  if (!item) return false;
+  const [x0, y0, x1, y1] = item.box;
+  await page.mouse.click((x0 + x1) / 2, (y0 + y1) / 2);
+  return true;
+}
+// Clicks a control and returns the download it starts: its name and its bytes.
+async function download(what) {
+  if (!await until((t, a) => (t.controls ?? []).some((i) => i.what === a), `${what} is laid out`, what)) {
+    return { name: '', bytes: Buffer.alloc(0) };
+  }
+  try {
+    const [file] = await Promise.all([page.waitForEvent('download', { timeout: 60000 }), clickControl(what)]);
+    return { name: file.suggestedFilename(), bytes: readFileSync(await file.path()) };
+  } catch (e) {
+    check(false, `${what} starts a download (${e.message.split('\n')[0]})`);
+    return { name: '', bytes: Buffer.alloc(0) };
+  }
+}
 async function clickItem(what) {
   const s = await state();
   const item = (s.items ?? []).find((i) => i.what === what);
@@ -135,9 +159,48 @@ try {
   s = await state();
   check(s.lessons[0].progress.includes('right'), `the start page shows lesson 1's progress: ${s.lessons[0].progress}`);
 
-  // A case through the file input.
-  await page.setInputFiles('#file', join(scenes, 'cases', 'ruler.json'));
-  await until((t) => t.screen === 'inspector' && t.file.endsWith('ruler.json'), 'a case opens from the file input');
+  // The downloads of the start page: the progress, as the desktop's progress.json, and a lesson's worksheet; the
+  // progress then imported back through the page's file picker.
+  let file = await download('button Export progress.json');
+  let progress = null;
+  try { progress = JSON.parse(file.bytes.toString('utf8')); } catch (e) { /* checked below */ }
+  check(file.name === 'progress.json' && progress !== null && JSON.stringify(progress).includes('01-'),
+        `Export progress.json downloads progress.json with lesson 1 in it (${file.name}, ${file.bytes.length} bytes)`);
+  const progressCopy = join(out, 'progress-downloaded.json');
+  writeFileSync(progressCopy, file.bytes);
+  const [chooser] = await Promise.all([page.waitForEvent('filechooser'), clickControl('button Import progress.json')]);
+  await chooser.setFiles(progressCopy);
+  await until((t) => t.screen === 'start' && t.message.startsWith('progress imported'), 'the progress imports back');
+  s = await state();
+  check(s.lessons[0].progress.includes('right'), `lesson 1's progress after the import: ${s.lessons[0].progress}`);
+  file = await download('button Worksheet 1');
+  const sheet = file.bytes.toString('utf8').split('\n');
+  check(/^01-.*-worksheet\.csv$/.test(file.name) && sheet[0] === 'kind,path,step,quantity,value,unit,formula,equation,meaning' &&
+        sheet.length > 10, `Worksheet 1 downloads lesson 1's worksheet as CSV (${file.name}: ${sheet[0]}, ${sheet.length} lines)`);
+
+  // A case through the page's file picker.
+  const [picker] = await Promise.all([page.waitForEvent('filechooser'), clickControl('button Open a file')]);
+  await picker.setFiles(join(scenes, 'cases', 'ruler.json'));
+  await until((t) => t.screen === 'inspector' && t.file.endsWith('ruler.json'), 'a case opens from the file picker');
+
+  // The inspector's exports (its Export panel), each a download: the trace as JSON, the table as CSV, a screenshot
+  // as PNG.
+  file = await download('button Export trace');
+  let trace = null;
+  try { trace = JSON.parse(file.bytes.toString('utf8')); } catch (e) { /* checked below */ }
+  check(file.name === 'trace.json' && trace !== null && Array.isArray(trace.frames) && trace.frames.length > 0,
+        `Export trace downloads the trace as JSON (${file.name}, ${file.bytes.length} bytes)`);
+  file = await download('button Export table');
+  const table = file.bytes.toString('utf8').split('\n');
+  check(file.name === 'table.csv' && table.length > 3 && table[0].includes(','),
+        `Export table downloads the table as CSV (${file.name}: ${table[0]})`);
+  file = await download('button Screenshot');
+  s = await state();
+  const png = file.bytes;
+  const pngWidth = png.length > 24 ? png.readUInt32BE(16) : 0, pngHeight = png.length > 24 ? png.readUInt32BE(20) : 0;
+  check(file.name === 'screenshot.png' && png.subarray(1, 4).toString('latin1') === 'PNG' &&
+        pngWidth === Math.round(s.width * s.pixel_ratio) && pngHeight === Math.round(s.height * s.pixel_ratio),
+        `Screenshot downloads the canvas as PNG (${file.name}, ${pngWidth}x${pngHeight} for ${s.width}x${s.height})`);
 
   // Pictures at three sizes, each held to the app's own layout check: the lesson panel's items as laid out in this
   // frame lie inside the window, and the check of every step of the lesson at this size finds nothing.
@@ -156,6 +219,12 @@ try {
     const problems = report.split('\n').slice(1).filter((line) => line !== '');
     check(problems.length === 0, `the layout check at ${width}x${height}: ${report}`);
   }
+  // In a lesson the exports are a tab; with questions still open the table comes as shown, their values hidden.
+  await until((t) => (t.controls ?? []).some((i) => i.what === 'tab Export'), 'the lesson lays out its Export tab');
+  await clickControl('tab Export');
+  file = await download('button Export table');
+  check(file.name === 'table.csv' && file.bytes.toString('utf8').split('\n').length > 3,
+        `in a lesson, Export table downloads the table as shown (${file.name}, ${file.bytes.length} bytes)`);
 
   // Every lesson to its end at two sizes: each question skipped with its button, every step reached with →.
   for (const [width, height] of [[1280, 800], [1024, 768]]) {

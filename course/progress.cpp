@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fcntl.h>
+#include <sys/stat.h>
 
 namespace impulse::course {
 
@@ -22,6 +23,21 @@ namespace {
 
 using json = nlohmann::ordered_json;
 constexpr std::string_view format_name = "impulse-lab-progress";
+
+// Renames `from` to `to` unless `to` exists (then -1 with errno EEXIST). Linux's renameat2 does it in one step; the
+// browser's file system (emscripten's) has no renameat2 and one thread, where a look before the rename is the same.
+int rename_no_replace(const std::filesystem::path& from, const std::filesystem::path& to) {
+#ifdef __EMSCRIPTEN__
+    struct stat info {};
+    if (::stat(to.c_str(), &info) == 0) {
+        errno = EEXIST;
+        return -1;
+    }
+    return std::rename(from.c_str(), to.c_str());
+#else
+    return ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE);
+#endif
+}
 
 // A whole number from 0 to INT_MAX at `path`; anything else (a fraction, a huge or negative number, text)
 // is an error, never a cast.
@@ -137,7 +153,7 @@ LoadedProgress load_progress(const std::filesystem::path& file) {
     const std::string stamp = file.string() + ".corrupt-" + time_stamp();
     for (int n = 1; n <= 1000; ++n) {
         aside = n == 1 ? stamp : stamp + "-" + std::to_string(n);
-        if (::renameat2(AT_FDCWD, file.c_str(), AT_FDCWD, aside.c_str(), RENAME_NOREPLACE) == 0) {
+        if (rename_no_replace(file, aside) == 0) {
             error.clear();
             break;
         }

@@ -192,19 +192,12 @@ void mark_first_divergence(DiffReport& report) {
 // contact velocity it comes from — and then by its indices (the update, the body, the component), as the
 // worksheet lists its cells.
 std::vector<std::size_t> derivation_position(const formats::json& reference, const std::vector<PathToken>& path) {
-    const auto key_is = [&path](std::size_t i, std::string_view key) {
-        const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
-        return k && *k == key;
-    };
-    const auto index_at = [&path](std::size_t i) {
-        return i < path.size() && std::holds_alternative<std::size_t>(path[i]);
-    };
     std::size_t rest = 0;
     ItemKind kind = ItemKind::contact;
-    if (key_is(0, "frames") && index_at(1) && key_is(2, "contacts") && index_at(3)) {
+    if (key_at(path, 0, "frames") && index_at(path, 1) && key_at(path, 2, "contacts") && index_at(path, 3)) {
         rest = 4;
-    } else if (key_is(0, "frames") && index_at(1) && key_is(2, "phases") && index_at(3) && key_is(4, "iterations") &&
-               index_at(5)) {
+    } else if (key_at(path, 0, "frames") && index_at(path, 1) && key_at(path, 2, "phases") && index_at(path, 3) &&
+               key_at(path, 4, "iterations") && index_at(path, 5)) {
         const formats::json* phase = value_at(reference, {path.begin(), path.begin() + 4});
         kind = phase && phase->is_object() && phase->value("phase", "") == "position" ? ItemKind::position_iteration
                                                                                       : ItemKind::velocity_iteration;
@@ -284,37 +277,31 @@ std::map<std::string, formats::json> numbers_of(const formats::json& reference, 
 // The item (a prepared contact or an iteration) a path into a trace document lies in, and where its key starts.
 std::optional<std::pair<ItemAt, std::size_t>> item_of(const formats::json& reference,
                                                       const std::vector<PathToken>& path) {
-    const auto key_is = [&path](std::size_t i, std::string_view key) {
-        const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
-        return k && *k == key;
-    };
-    const auto index = [&path](std::size_t i) -> std::optional<std::size_t> {
-        if (i >= path.size() || !std::holds_alternative<std::size_t>(path[i])) return std::nullopt;
-        return std::get<std::size_t>(path[i]);
-    };
-    if (!key_is(0, "frames") || !index(1)) return std::nullopt;
+    if (!key_at(path, 0, "frames") || !index_at(path, 1)) return std::nullopt;
     const formats::json* frame = value_at(reference, {path.begin(), path.begin() + 2});
     if (!frame) return std::nullopt;
-    const std::string frame_path = formats::json_path_index("frames", *index(1));
-    if (key_is(2, "contacts") && index(3)) {
+    const std::string frame_path = formats::json_path_index("frames", *index_at(path, 1));
+    if (key_at(path, 2, "contacts") && index_at(path, 3)) {
         const formats::json* contact = value_at(reference, {path.begin(), path.begin() + 4});
         if (!contact) return std::nullopt;
-        return std::pair{ItemAt{ItemKind::contact,
-                                formats::json_path_index(formats::json_path_child(frame_path, "contacts"), *index(3)),
-                                contact, frame_path, frame},
-                         std::size_t{4}};
+        return std::pair{
+            ItemAt{ItemKind::contact,
+                   formats::json_path_index(formats::json_path_child(frame_path, "contacts"), *index_at(path, 3)),
+                   contact, frame_path, frame},
+            std::size_t{4}};
     }
-    if (key_is(2, "phases") && index(3) && key_is(4, "iterations") && index(5)) {
+    if (key_at(path, 2, "phases") && index_at(path, 3) && key_at(path, 4, "iterations") && index_at(path, 5)) {
         const formats::json* phase = value_at(reference, {path.begin(), path.begin() + 4});
         const formats::json* iteration = value_at(reference, {path.begin(), path.begin() + 6});
         if (!phase || !iteration || !phase->is_object()) return std::nullopt;
         const std::string phase_path =
-            formats::json_path_index(formats::json_path_child(frame_path, "phases"), *index(3));
-        return std::pair{ItemAt{phase->value("phase", "") == "position" ? ItemKind::position_iteration
-                                                                        : ItemKind::velocity_iteration,
-                                formats::json_path_index(formats::json_path_child(phase_path, "iterations"), *index(5)),
-                                iteration, frame_path, frame, *index(3)},
-                         std::size_t{6}};
+            formats::json_path_index(formats::json_path_child(frame_path, "phases"), *index_at(path, 3));
+        return std::pair{
+            ItemAt{
+                phase->value("phase", "") == "position" ? ItemKind::position_iteration : ItemKind::velocity_iteration,
+                formats::json_path_index(formats::json_path_child(phase_path, "iterations"), *index_at(path, 5)),
+                iteration, frame_path, frame, *index_at(path, 3)},
+            std::size_t{6}};
     }
     return std::nullopt;
 }

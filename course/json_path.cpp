@@ -7,6 +7,16 @@
 
 namespace impulse::course {
 
+bool key_at(const std::vector<PathToken>& path, std::size_t i, std::string_view key) {
+    const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
+    return k && *k == key;
+}
+
+std::optional<std::size_t> index_at(const std::vector<PathToken>& path, std::size_t i) {
+    if (i >= path.size() || !std::holds_alternative<std::size_t>(path[i])) return std::nullopt;
+    return std::get<std::size_t>(path[i]);
+}
+
 namespace {
 
 bool is_key_char(char c) {

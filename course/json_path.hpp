@@ -6,6 +6,7 @@
 #include "formats/json_values.hpp"
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -15,6 +16,11 @@ namespace impulse::course {
 
 // One step of a path: an object key or an array index.
 using PathToken = std::variant<std::string, std::size_t>;
+
+// Whether step i of a path is the key `key`; the index at step i when that step is an index. A step past the
+// path's end is neither.
+bool key_at(const std::vector<PathToken>& path, std::size_t i, std::string_view key);
+std::optional<std::size_t> index_at(const std::vector<PathToken>& path, std::size_t i);
 
 // Throws formats::InputError(where, ...) when `path` is not keys and [indices] in the form json_path_child and
 // json_path_index write.

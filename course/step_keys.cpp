@@ -114,22 +114,14 @@ std::string step_key_of(const std::vector<PathToken>& path, std::size_t from) {
 }
 
 Described describe_path(const formats::json& document, const std::vector<PathToken>& path) {
-    const auto key_is = [&path](std::size_t i, std::string_view key) {
-        const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
-        return k && *k == key;
-    };
-    const auto index_at = [&path](std::size_t i) {
-        return i < path.size() && std::holds_alternative<std::size_t>(path[i]);
-    };
-
     // Inside an item: frames[f].contacts[k].… or frames[f].phases[p].iterations[i].…
     std::optional<ItemKind> item;
     std::size_t rest = 0;
-    if (key_is(0, "frames") && index_at(1) && key_is(2, "contacts") && index_at(3)) {
+    if (key_at(path, 0, "frames") && index_at(path, 1) && key_at(path, 2, "contacts") && index_at(path, 3)) {
         item = ItemKind::contact;
         rest = 4;
-    } else if (key_is(0, "frames") && index_at(1) && key_is(2, "phases") && index_at(3) && key_is(4, "iterations") &&
-               index_at(5)) {
+    } else if (key_at(path, 0, "frames") && index_at(path, 1) && key_at(path, 2, "phases") && index_at(path, 3) &&
+               key_at(path, 4, "iterations") && index_at(path, 5)) {
         const formats::json* phase = value_at(document, {path.begin(), path.begin() + 4});
         if (phase && phase->is_object() && phase->contains("phase"))
             item = (*phase)["phase"] == "position" ? ItemKind::position_iteration : ItemKind::velocity_iteration;

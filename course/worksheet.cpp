@@ -118,37 +118,30 @@ formats::json rounded_for_hand_work(const formats::json& value) {
 
 Wording word_path(const Trace& trace, const formats::json& document, const std::vector<PathToken>& path,
                   WordingCache* cache) {
-    const auto key_is = [&path](std::size_t i, std::string_view key) {
-        const auto* k = i < path.size() ? std::get_if<std::string>(&path[i]) : nullptr;
-        return k && *k == key;
-    };
-    const auto index = [&path](std::size_t i) -> std::optional<std::size_t> {
-        if (i >= path.size() || !std::holds_alternative<std::size_t>(path[i])) return std::nullopt;
-        return std::get<std::size_t>(path[i]);
-    };
     Wording w{"", path_text(path, 0), describe_path(document, path).unit};
-    if (key_is(0, "settings") || key_is(0, "scene") || key_is(0, "recording") || key_is(0, "conventions")) {
+    if (key_at(path, 0, "settings") || key_at(path, 0, "scene") || key_at(path, 0, "recording") ||
+        key_at(path, 0, "conventions")) {
         w.place = std::get<std::string>(path[0]);
         w.quantity = path_text(path, 1);
         return w;
     }
-    const std::optional<std::size_t> f = index(1);
-    if (!key_is(0, "frames") || !f || *f >= trace.frames.size()) return w;
+    const std::optional<std::size_t> f = index_at(path, 1);
+    if (!key_at(path, 0, "frames") || !f || *f >= trace.frames.size()) return w;
     w.place = "frame " + std::to_string(trace.frames[*f].frame);
     w.quantity = path_text(path, 2);
 
     // Inside an item: the step that computes (or first uses) the key, as the worksheet names it.
     std::optional<Cursor> c;
     std::size_t rest = 0;
-    if (key_is(2, "contacts") && index(3) && *index(3) < trace.frames[*f].contacts.size()) {
-        c = Cursor{static_cast<int>(*f), Stage::preparation, static_cast<int>(*index(3)), 0};
+    if (key_at(path, 2, "contacts") && index_at(path, 3) && *index_at(path, 3) < trace.frames[*f].contacts.size()) {
+        c = Cursor{static_cast<int>(*f), Stage::preparation, static_cast<int>(*index_at(path, 3)), 0};
         rest = 4;
-    } else if (key_is(2, "phases") && index(3) && key_is(4, "iterations") && index(5)) {
+    } else if (key_at(path, 2, "phases") && index_at(path, 3) && key_at(path, 4, "iterations") && index_at(path, 5)) {
         const formats::json* phase = value_at(document, {path.begin(), path.begin() + 4});
         const formats::json* iteration = value_at(document, {path.begin(), path.begin() + 6});
         if (phase && iteration && phase->contains("phase"))
             c = Cursor{static_cast<int>(*f), (*phase)["phase"] == "position" ? Stage::position : Stage::velocity,
-                       static_cast<int>(*index(5)), 0};
+                       static_cast<int>(*index_at(path, 5)), 0};
         rest = 6;
     }
     if (!c || rest >= path.size()) return w;

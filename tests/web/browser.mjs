@@ -237,7 +237,9 @@ try {
       for (let guard = 0; guard < 3 * steps; ++guard) {
         s = await state();
         if (s.lesson.question && s.lesson.question.state === 'open') {
-          await until((t) => t.items.some((i) => i.what === 'button Skip'), `lesson ${number} shows Skip`);
+          // Settled first: in the frames after → the lesson panel may still move (its question's height is known a
+          // frame late), and a click where Skip was a frame before can miss it.
+          await until((t) => t.idle && t.items.some((i) => i.what === 'button Skip'), `lesson ${number} shows Skip`);
           await clickItem('button Skip');
           await until((t) => t.lesson.question.state !== 'open', `Skip gives lesson ${number}'s step ${s.lesson.step} up`);
           continue;

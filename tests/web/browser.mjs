@@ -82,8 +82,10 @@ async function until(test, what, arg = null) {
   }
 }
 // Clicks one of the site's controls (the start page's buttons, the inspector's tabs and export buttons) where the
-// last frame laid it out.
+// last frame laid it out, once the page has settled: a message or a question appears in the state before the frames
+// that lay it out, and a click where a control was a frame before can miss it.
 async function clickControl(what) {
+  await until((t, a) => t.idle && (t.controls ?? []).some((i) => i.what === a), `${what} is laid out`, what);
   const s = await state();
   const item = (s.controls ?? []).find((i) => i.what === what);
   if (!item) return false;
@@ -93,7 +95,7 @@ async function clickControl(what) {
 }
 // Clicks a control and returns the download it starts: its name and its bytes.
 async function download(what) {
-  if (!await until((t, a) => (t.controls ?? []).some((i) => i.what === a), `${what} is laid out`, what)) {
+  if (!await until((t, a) => t.idle && (t.controls ?? []).some((i) => i.what === a), `${what} is laid out`, what)) {
     return { name: '', bytes: Buffer.alloc(0) };
   }
   try {
@@ -105,6 +107,7 @@ async function download(what) {
   }
 }
 async function clickItem(what) {
+  await until((t, a) => t.idle && (t.items ?? []).some((i) => i.what === a), `${what} is laid out`, what);
   const s = await state();
   const item = (s.items ?? []).find((i) => i.what === what);
   if (!item) return false;
@@ -237,9 +240,7 @@ try {
       for (let guard = 0; guard < 3 * steps; ++guard) {
         s = await state();
         if (s.lesson.question && s.lesson.question.state === 'open') {
-          // Settled first: in the frames after → the lesson panel may still move (its question's height is known a
-          // frame late), and a click where Skip was a frame before can miss it.
-          await until((t) => t.idle && t.items.some((i) => i.what === 'button Skip'), `lesson ${number} shows Skip`);
+          // clickItem waits for the panel to settle: in the frames after → its question's height is known a frame late.
           await clickItem('button Skip');
           await until((t) => t.lesson.question.state !== 'open', `Skip gives lesson ${number}'s step ${s.lesson.step} up`);
           continue;

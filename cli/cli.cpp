@@ -8,6 +8,7 @@
 #include "formats/atomic_file.hpp"
 #include "formats/input_files.hpp"
 #include "cli/interrupt.hpp"
+#include "cli/states_csv.hpp"
 #include "formats/input_error.hpp"
 #include "formats/printable_text.hpp"
 #include "formats/suggest.hpp"
@@ -87,6 +88,14 @@ void add_run(CLI::App& app, RunOptions& o, FlagCatalog& c) {
         ->type_name("SPEC");
     add_max_trace_mb(*run, o.max_trace_mb, c);
     output_file(run->add_option("--states", o.states_file, "Write every body's state per frame as CSV, atomically"), c);
+    std::ostringstream default_states_mb;
+    default_states_mb << default_max_states_mb;
+    finite_number(run->add_option("--max-states-mb", o.max_states_mb,
+                                  "Stop writing --states when its CSV would pass this size in MB (default " +
+                                      default_states_mb.str() +
+                                      "): it then ends with the last whole frame, and the "
+                                      "run goes on"),
+                  c, 1e-6, 1e9);
     run->add_flag("--keep-partial", o.keep_partial,
                   "When Ctrl-C or SIGTERM stops the run, write the trace and states of the frames done (they are "
                   "valid files); without it nothing is written and the summary of those frames is printed");

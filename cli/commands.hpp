@@ -44,7 +44,8 @@ struct RunOptions {
     std::vector<std::string> record;
     std::optional<double> max_trace_mb;  // default formats::default_max_trace_mb
     std::optional<std::string> states_file;
-    bool keep_partial = false;  // Ctrl-C or SIGTERM: write the trace and states of the frames done
+    std::optional<double> max_states_mb;  // default cli::default_max_states_mb
+    bool keep_partial = false;            // Ctrl-C or SIGTERM: write the trace and states of the frames done
 };
 
 // `progress` is where a progress bar may go (a terminal), or null for none.

@@ -10,7 +10,7 @@
 #include "cli/outputs.hpp"
 #include "cli/progress.hpp"
 #include "cli/run_summary.hpp"
-#include "formats/csv.hpp"
+#include "cli/states_csv.hpp"
 #include "explain/format.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -22,7 +22,6 @@
 #include "world/world.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -31,23 +30,6 @@
 namespace impulse::cli {
 
 namespace {
-
-// One CSV row per body per frame; frame -1 is the scene as given (time 0).
-void append_states(std::string& csv, int frame, double time, const Scene& scene, const std::vector<RigidBody>& bodies) {
-    char line[512];
-    for (std::size_t i = 0; i < bodies.size(); ++i) {
-        const RigidBody& b = bodies[i];
-        std::snprintf(line, sizeof line, "%d,%.17g,%zu,", frame, time, i);
-        csv += line;
-        csv += formats::csv_field(scene.body_names[i]);
-        std::snprintf(line, sizeof line,
-                      ",%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g,%.17g\n",
-                      b.position.x(), b.position.y(), b.position.z(), b.orientation.w(), b.orientation.x(),
-                      b.orientation.y(), b.orientation.z(), b.velocity.x(), b.velocity.y(), b.velocity.z(),
-                      b.angular_velocity.x(), b.angular_velocity.y(), b.angular_velocity.z(), kinetic_energy(b));
-        csv += line;
-    }
-}
 
 // The frames the recorder has finished, written to the spool of the trace's frame list and dropped from memory.
 void spool_frames(Trace& trace, formats::Spool& frames) {
@@ -89,9 +71,6 @@ std::string bench_verdict(const bench::BenchScene& spec, const bench::Accuracy& 
                 std::to_string(spec.frames) + " frames";
     return text;
 }
-
-// The states' rows are written to their file in pieces of about this size.
-constexpr std::size_t states_piece_bytes = 1 << 20;
 
 }  // namespace
 
@@ -145,11 +124,8 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
                                                                    : std::filesystem::path(*options.trace_file));
 
     const int frames = scene.world.frames;
-    std::string states;
-    if (states_out) {
-        states = "frame,time,body,name,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz,kinetic_energy\n";
-        append_states(states, -1, world.time(), scene, world.bodies());
-    }
+    StatesCsv states(states_out ? &*states_out : nullptr, options.max_states_mb, scene);
+    states.add(-1, world.time(), world.bodies());
     RunSummary summary(scene_name, frames, scene.settings.duration, scene);
 
     std::optional<bench::AccuracyTracker> accuracy;
@@ -184,10 +160,9 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
         }
         summary.add(report, world.bodies());
         if (trace_frames) spool_frames(trace, *trace_frames);
-        if (states_out) {
-            append_states(states, frame, world.time(), scene, world.bodies());
-            if (states.size() >= states_piece_bytes) states_out->append(states), states.clear();
-        }
+        states.add(frame, world.time(), world.bodies());
+        if (frame == 0)
+            if (const std::string note = states.fit_note(frames); !note.empty()) err << note << '\n';
         if (accuracy) accuracy->observe(frame, world.bodies(), report);
         if (whole_run && !fit_said)
             if (const std::string note = trace_fit_note(trace_recorder, frame + 1, frames, options.max_trace_mb);
@@ -214,7 +189,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
             trace_out->append(formats::trace_frames_close);
         }
     }
-    if (write && states_out) states_out->append(states);
+    if (write) states.flush();
     if (const std::optional<int> signal = interrupt_received()) {
         if (interrupted) throw Interrupted{*signal};
         interrupted = signal;
@@ -222,6 +197,7 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     if (!interrupted || options.keep_partial) {
         if (trace_recorder.stopped_at())
             err << formats::trace_stopped_note(*trace_recorder.stopped_at(), options.max_trace_mb) << '\n';
+        if (states.stopped_at()) err << states.stopped_note() << '\n';
         outputs.commit({trace_out ? &*trace_out : nullptr, states_out ? &*states_out : nullptr});
     }
 

@@ -26,8 +26,8 @@ interrupt() {
   local expected=130
   [ "$signal" = TERM ] && expected=143
   test "$code" = "$expected" || fail "SIG$signal: exit code $code, expected $expected"
-  # One line, besides run's early note that the trace will not hold the whole run.
-  test "$(grep -vc 'note: --trace: at about' "$work/stderr")" = 1 || fail "SIG$signal: stderr is not one line"
+  # One line, besides run's early notes that the trace and the states will not hold the whole run.
+  test "$(grep -vEc 'note: --(trace|states): at ' "$work/stderr")" = 1 || fail "SIG$signal: stderr is not one line"
   grep -q "interrupted (SIG$signal) after [0-9]* of 100000 frames" "$work/stderr" || fail "SIG$signal: no interrupted line"
   done=$(sed -n 's/.* after \([0-9]*\) of 100000 frames.*/\1/p' "$work/stderr")
   test "$done" -gt 0 || fail "SIG$signal: no frame done in a second"

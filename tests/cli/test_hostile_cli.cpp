@@ -242,3 +242,40 @@ TEST_CASE("a long run's trace and states are written as they go: its memory does
     CHECK(trace_long - trace_short > 30u << 20);
     if (!impulse::test::address_sanitized) CHECK(trace_long_peak - trace_short_peak < 16 << 20);
 }
+
+TEST_CASE("--max-states-mb bounds --states on disk: the CSV ends with a whole frame, two notes say where") {
+    // --states had no size bound: 100000 frames of grid_1000 would have written about 23 GB.
+    TempDir dir;
+    const std::string states = dir.file("s.csv").string();
+    const CliResult r = run_cli({"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "500", "--states",
+                                 states, "--max-states-mb", "0.05"});
+    CHECK(r.code == 0);
+    const std::string csv = read_text(states);
+    CHECK(csv.size() <= 50000);
+    // Whole frames only: every frame from -1 to the last has its three bodies, and the file ends with a row's end.
+    std::istringstream lines(csv);
+    std::string line;
+    std::getline(lines, line);
+    CHECK(line.rfind("frame,time,body,", 0) == 0);
+    int rows = 0, last_frame = -2;
+    while (std::getline(lines, line)) {
+        const int frame = std::stoi(line);
+        CHECK(frame == (rows / 3) - 1);
+        last_frame = frame;
+        ++rows;
+    }
+    CHECK(rows % 3 == 0);
+    CHECK(csv.back() == '\n');
+    REQUIRE(last_frame > 10);
+    CHECK(r.err.find("impulse-lab: note: --states: at ") != std::string::npos);
+    CHECK(r.err.find("the states keep the first frames that fit in --max-states-mb 0.05") != std::string::npos);
+    CHECK(r.err.find("impulse-lab: note: the states reached --max-states-mb 0.05 at frame " +
+                     std::to_string(last_frame + 1) + " and end with frame " + std::to_string(last_frame) + ";") !=
+          std::string::npos);
+    CHECK(r.out.find("500 frames") != std::string::npos);  // the run went on to its end
+    // A run that fits says nothing.
+    const CliResult small = run_cli({"run", IMPULSE_SOURCE_DIR "/scenes/stack_3.json", "--frames", "5", "--states",
+                                     states, "--max-states-mb", "0.05"});
+    CHECK(small.code == 0);
+    CHECK(small.err.find("--max-states-mb") == std::string::npos);
+}

@@ -11,6 +11,7 @@
 #include "formats/json_text.hpp"
 
 #include <algorithm>
+#include <array>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -75,9 +76,10 @@ public:
             level.key = k;
             throw InputError(path(true), "key given twice in the same object");
         }
-        charge(member_bytes + text_bytes(k.size()) * (level.hashed.empty() ? 1 : 2) +
-               (level.hashed.empty() ? 0 : hashed_key_bytes));
-        level.key = std::move(k);
+        const std::size_t bytes = member_bytes + text_bytes(k.size()) * (level.hashed.empty() ? 1 : 2) +
+                                  (level.hashed.empty() ? 0 : hashed_key_bytes);
+        level.key = std::move(k);  // first: a refusal names the key being read ("bodies[9].name", not "bodies[9].")
+        charge(bytes);
         return true;
     }
 
@@ -122,9 +124,7 @@ private:
         used_ += bytes;
         if (used_ > limit_)
             throw InputError(path(true), "holds more than one document may: reading it would take over " +
-                                             std::to_string(limit_ >> 20) +
-                                             " MiB of memory (a file within the input limit written as our programs "
-                                             "write it takes far less)");
+                                             std::to_string(limit_ >> 20) + " MiB of memory");
     }
 
     // Puts `v` where the parser is: the root, the next element of an array, or the value of the last key.
@@ -186,24 +186,67 @@ std::string line_and_column(std::string_view text, std::size_t at) {
     return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
+// Empties `document` without asking for memory. nlohmann's destructor first moves a container's elements onto a
+// stack it reserves (destroying an array of 50 million numbers asks for 800 MB more), so a document dropped after
+// a refusal, under a memory cap, ended the program (std::bad_alloc in a destructor: SIGABRT) instead of reporting
+// the refusal. Here each container is emptied from its back, deepest first, and an element is removed only once it
+// is empty: no destructor called has anything to move. The path down is at most as deep as the reader allows.
+void release(json& document) {
+    std::array<json*, max_json_depth + 2> path{};
+    std::size_t depth = 0;
+    path[depth++] = &document;
+    while (depth > 0) {
+        json& top = *path[depth - 1];
+        json* last = nullptr;
+        if (top.is_array() && !top.empty()) last = &top.back();
+        if (top.is_object() && !top.empty()) last = &top.get_ptr<json::object_t*>()->back().second;
+        if (!last) {
+            --depth;
+            continue;
+        }
+        if (last->is_structured() && !last->empty()) {
+            path[depth++] = last;
+            continue;
+        }
+        if (top.is_array()) {
+            top.get_ptr<json::array_t*>()->pop_back();
+        } else {
+            json::object_t& members = *top.get_ptr<json::object_t*>();
+            members.std::vector<std::pair<const std::string, json>>::pop_back();
+        }
+    }
+    document = nullptr;
+}
+
 }  // namespace
 
 json parse_json_text(std::string_view text, std::size_t memory_limit) {
     json document;
     DocumentBuilder builder(document, memory_limit);
-    if (json::sax_parse(text.begin(), text.end(), &builder, json::input_format_t::json, true, false)) return document;
+    bool parsed = false;
+    try {
+        parsed = json::sax_parse(text.begin(), text.end(), &builder, json::input_format_t::json, true, false);
+    } catch (...) {  // refused as too large (or out of memory): the part read is let go of without more memory
+        release(document);
+        throw;
+    }
+    if (parsed) return document;
     // nlohmann's message reads "[json.exception.parse_error.101] parse error at line 3, column 0: syntax error
     // ... ; last read: ..."; its line can point past a newline it read ahead, while its byte offset is the
-    // offending character itself, so the position is counted from that.
+    // offending character itself, so the position is counted from that. The path is read before the document
+    // it points into is let go of.
     const std::string& what = builder.error();
     const std::size_t bracket = what.find("] ");
-    if (builder.number_overflow())
-        throw InputError(builder.path(true),
-                         "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)));
     const std::size_t colon = what.find(": ", what.find("parse error"));
     const std::size_t at = builder.error_position() > 0 ? builder.error_position() - 1 : 0;
-    throw InputError("", "invalid JSON at " + line_and_column(text, at) + ": " +
-                             (colon == std::string::npos ? what : what.substr(colon + 2)));
+    const InputError error =
+        builder.number_overflow()
+            ? InputError(builder.path(true),
+                         "invalid JSON: " + (bracket == std::string::npos ? what : what.substr(bracket + 2)))
+            : InputError("", "invalid JSON at " + line_and_column(text, at) + ": " +
+                                 (colon == std::string::npos ? what : what.substr(colon + 2)));
+    release(document);
+    throw error;
 }
 
 }  // namespace impulse::formats

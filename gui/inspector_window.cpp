@@ -60,7 +60,14 @@ void draw_lesson_layout(model::Session& session, UiState& state, model::ActionHo
     const float right = screen.x - lesson;
     const float share = sizes.derivation_share > 0 ? sizes.derivation_share : 0.5f;
     const float derivation = body * share;
-    const float scene = right * (sizes.scene_share > 0 ? sizes.scene_share : 0.55f);
+    // The tabs beside the scene want their six names in a row (scrolled, Export hid behind arrows at 1280x800):
+    // unless the splitter was moved, the scene gives way to them, down to 40 % of the row.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    float tabs_width = style.WindowPadding.x * 2 + ImGui::GetFontSize() * 2;  // and room for the panel's edges
+    for (const char* name : {"Contacts", "Bodies", "Plots", "Navigator", "Settings", "Export"})
+        tabs_width += ImGui::CalcTextSize(name).x + style.FramePadding.x * 2 + style.ItemInnerSpacing.x;
+    const float scene =
+        sizes.scene_share > 0 ? right * sizes.scene_share : std::clamp(right - tabs_width, right * 0.4f, right * 0.55f);
 
     if (begin_panel("Lesson", 0, toolbar_height, lesson, body)) draw_lesson(session, state);
     ImGui::End();

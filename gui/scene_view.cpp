@@ -238,6 +238,18 @@ void draw_scene_view(const model::Session& session, UiState& state) {
     for (int b : v.bodies.moved)
         if (!concealed[static_cast<std::size_t>(b)]) moved_bodies.push_back(b);
 
+    // The legend, wrapped to the canvas (a lesson's scene is narrow), over the top of it; the bodies are fitted
+    // into the part below it and above the scale bar, so the legend never covers them.
+    std::string legend;
+    for (const std::string& line :
+         wrap_lines("orange: moved by this item (faint: before) · green: normal · red: penetration · violet: impulse "
+                    "so far · magenta: this impulse · blue: velocity × 0.1 s",
+                    size.x - 24.0f))
+        legend += (legend.empty() ? "" : "\n") + line;
+    const float legend_bottom = top_left.y + 6 + ImGui::CalcTextSize(legend.c_str()).y;
+    const float fit_top = std::min(legend_bottom + 4, top_left.y + size.y / 2);
+    const float fit_bottom = std::max(bottom_right.y - 24, fit_top + 25);
+
     // Fit the bodies (and contact points) into the canvas.
     Projector project{view_rotation(camera), Vec3::Zero(), ImVec2(), 1.0f};
     Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
@@ -255,8 +267,9 @@ void draw_scene_view(const model::Session& session, UiState& state) {
     const Vec3 mid_view = (low + high) / 2;
     project.centre = project.view.transpose() * mid_view;
     const double span_x = std::max(high.x() - low.x(), 0.2), span_y = std::max(high.y() - low.y(), 0.2);
-    project.scale = static_cast<float>(std::min(size.x / span_x, size.y / span_y)) * 0.85f * camera.zoom;
-    project.origin = ImVec2(top_left.x + size.x / 2 + camera.pan_x, top_left.y + size.y / 2 + camera.pan_y);
+    project.scale =
+        static_cast<float>(std::min(size.x / span_x, (fit_bottom - fit_top) / span_y)) * 0.85f * camera.zoom;
+    project.origin = ImVec2(top_left.x + size.x / 2 + camera.pan_x, (fit_top + fit_bottom) / 2 + camera.pan_y);
 
     const double extent = std::max(span_x, span_y) * 0.75;
     if (scene.ground) {
@@ -375,16 +388,9 @@ void draw_scene_view(const model::Session& session, UiState& state) {
     }
 
     draw_scale_bar(draw, ImVec2(top_left.x + 12, bottom_right.y - 14), project.scale);
-    // The legend, wrapped to the canvas (a lesson's scene is narrow).
-    std::string legend;
-    for (const std::string& line :
-         wrap_lines("orange: moved by this item (faint: before) · green: normal · red: penetration · violet: impulse "
-                    "so far · magenta: this impulse · blue: velocity × 0.1 s",
-                    size.x - 24.0f))
-        legend += (legend.empty() ? "" : "\n") + line;
     draw->AddText(ImVec2(top_left.x + 12, top_left.y + 6), IM_COL32(180, 180, 180, 255), legend.c_str());
     if (!v.bodies.exact)
-        draw->AddText(ImVec2(top_left.x + 12, top_left.y + 40), IM_COL32(255, 120, 100, 255),
+        draw->AddText(ImVec2(top_left.x + 12, legend_bottom + 2), IM_COL32(255, 120, 100, 255),
                       "bodies shown at the frame's start and end: the recording's contact filter left out a move");
     draw->PopClipRect();
 }

@@ -2,6 +2,7 @@
 // before it was held.
 
 #include "support/capped_run.hpp"
+#include "support/read_text.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 #include "support/terminal.hpp"
@@ -18,6 +19,7 @@
 #include <unistd.h>
 
 using impulse::test::CliResult;
+using impulse::test::read_text;
 using impulse::test::run_cli;
 using impulse::test::TempDir;
 
@@ -25,13 +27,6 @@ namespace {
 
 const std::string program = IMPULSE_LAB_PROGRAM;
 const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
-
-std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 }  // namespace
 

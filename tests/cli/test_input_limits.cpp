@@ -6,13 +6,13 @@
 
 #include "formats/input_limits.hpp"
 #include "support/capped_run.hpp"
+#include "support/read_text.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 
 using impulse::test::TempDir;
@@ -104,8 +104,8 @@ TEST_CASE("a file at the input limit of each kind is read or refused in words wi
     CHECK(r.err.empty());
 
     // Text a person writes has its own, smaller limit: a lesson of 4 MiB, its last step a long read, is valid.
-    std::ifstream lesson_in(IMPULSE_SOURCE_DIR "/lessons/01-impulse-is-a-velocity-change.md");
-    const std::string lesson_text((std::istreambuf_iterator<char>(lesson_in)), std::istreambuf_iterator<char>());
+    const std::string lesson_text =
+        impulse::test::read_text(IMPULSE_SOURCE_DIR "/lessons/01-impulse-is-a-velocity-change.md");
     const auto lesson = fill(dir.file("01-impulse-is-a-velocity-change.md"), lesson_text,
                              "The impulse changes the velocity by its size over the mass. ", "\n",
                              impulse::formats::max_text_input_bytes);

@@ -5,13 +5,14 @@
 #include "course/class_report.hpp"
 #include "course/diff.hpp"
 #include "course/json_path.hpp"
+#include "course/lesson.hpp"
 #include "course/worksheet.hpp"
 #include "formats/csv.hpp"
 #include "formats/json_text.hpp"
 #include "formats/trace_json.hpp"
-#include "course/lesson.hpp"
 
 #include "support/opened.hpp"
+#include "support/read_text.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -24,6 +25,7 @@
 using namespace impulse;
 using namespace impulse::course;
 using impulse::test::CliResult;
+using impulse::test::read_text;
 using impulse::test::run_cli;
 using impulse::test::TempDir;
 
@@ -31,13 +33,6 @@ namespace {
 
 const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
 const std::string lesson_7 = IMPULSE_SOURCE_DIR "/lessons/07-calculating-and-applying-the-impulse.md";
-
-std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::vector<formats::CsvRow> read_csv(const std::filesystem::path& file) {
     return formats::parse_csv(read_text(file));

@@ -2,14 +2,15 @@
 // student's engine would) graded cell by cell, a folder of submissions summarised one row per file, and
 // bad input refused in one line.
 
-#include "formats/csv.hpp"
 #include "course/diff.hpp"
 #include "course/json_path.hpp"
 #include "course/worksheet.hpp"
+#include "formats/csv.hpp"
 #include "formats/json_text.hpp"
 #include "formats/trace_json.hpp"
 
 #include "support/opened.hpp"
+#include "support/read_text.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -23,6 +24,7 @@
 using namespace impulse;
 using namespace impulse::course;
 using impulse::test::CliResult;
+using impulse::test::read_text;
 using impulse::test::run_cli;
 using impulse::test::TempDir;
 
@@ -30,13 +32,6 @@ namespace {
 
 const std::string cases = IMPULSE_SOURCE_DIR "/scenes/cases/";
 const std::string ruler = cases + "ruler.json";
-
-std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 formats::json read_json(const std::filesystem::path& file) {
     return formats::parse_json_text(read_text(file));

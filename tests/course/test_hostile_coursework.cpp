@@ -11,6 +11,7 @@
 #include "formats/trace_json.hpp"
 
 #include "support/opened.hpp"
+#include "support/read_text.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -24,19 +25,13 @@
 
 using namespace impulse;
 using impulse::test::CliResult;
+using impulse::test::read_text;
 using impulse::test::run_cli;
 using impulse::test::TempDir;
 
 namespace {
 
 const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
-
-std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 // The ruler's CSV worksheet with every cell's value set by `fill` (from the reference value at its path).
 std::string ruler_sheet(const std::function<std::string(const formats::json&)>& fill) {

@@ -2,17 +2,18 @@
 // shipped cases write under every method), the inputs and cells of a step, the places --steps names, the
 // files `impulse-lab worksheet` writes, and the paths and CSV they are written in.
 
-#include "formats/csv.hpp"
+#include "course/course_schemas.hpp"
 #include "course/json_path.hpp"
 #include "course/step_keys.hpp"
 #include "course/worksheet.hpp"
+#include "formats/csv.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
-#include "course/course_schemas.hpp"
 #include "formats/trace_json.hpp"
 #include "model/navigator.hpp"
 
 #include "support/opened.hpp"
+#include "support/read_text.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 
@@ -27,17 +28,11 @@ using namespace impulse;
 using namespace impulse::course;
 using impulse::test::opened;
 using impulse::test::opened_session;
+using impulse::test::read_text;
 
 namespace {
 
 const std::string cases = IMPULSE_SOURCE_DIR "/scenes/cases/";
-
-std::string read_text(const std::filesystem::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 // Every key of an item object in StepKey's form: nested keys joined by '.', "[]" after an array of objects.
 void collect_keys(const formats::json& object, const std::string& prefix, std::set<std::string>& keys) {

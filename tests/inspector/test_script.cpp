@@ -2,8 +2,8 @@
 // with a changed setting while keeping the cursor's place, and --script lines parsed, performed and exported
 // exactly as the window's keys and buttons do them.
 
-#include "formats/input_files.hpp"
 #include "formats/input_error.hpp"
+#include "formats/input_files.hpp"
 #include "formats/json_text.hpp"
 #include "formats/trace_json.hpp"
 #include "model/derivation_view.hpp"
@@ -13,6 +13,7 @@
 #include "support/temp_dir.hpp"
 
 #include "support/opened.hpp"
+#include "support/read_text.hpp"
 
 #include <doctest/doctest.h>
 
@@ -26,19 +27,14 @@
 using namespace impulse;
 using namespace impulse::model;
 
+using impulse::test::read_text;
+
 namespace {
 
 const std::string& scenes = test::shipped_scenes;
 
 Session opened(const std::string& name, const OpenOptions& options = {}) {
     return test::opened_session(name, options);
-}
-
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
 }
 
 formats::InputError open_error(const std::string& path, const OpenOptions& options) {

@@ -156,9 +156,9 @@ void lean_setup(const std::vector<RigidBody>& rigid, std::span<const RowPreparat
     for (const SolverBody& s : solver) {
         LeanBody b{};
         for (int k = 0; k < 3; ++k) b.v[k] = s.velocity[k], b.w[k] = s.angular_velocity[k];
-        b.inverse_mass = s.inverse_mass;
+        b.inverse_mass = s.mass.inverse_mass;
         for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) b.inverse_inertia[3 * r + c] = s.inverse_inertia(r, c);
+            for (int c = 0; c < 3; ++c) b.inverse_inertia[3 * r + c] = s.mass.inverse_inertia_world(r, c);
         bodies.push_back(b);
     }
     std::vector<ContactRow> rows;
@@ -173,7 +173,7 @@ void lean_setup(const std::vector<RigidBody>& rigid, std::span<const RowPreparat
         c.body0 = row.body[0];
         c.body1 = row.body[1];
         for (int k = 0; k < 3; ++k) {
-            c.n[k] = row.normal[k], c.t1[k] = row.tangent1[k], c.t2[k] = row.tangent2[k];
+            c.n[k] = row.basis(k, 0), c.t1[k] = row.basis(k, 1), c.t2[k] = row.basis(k, 2);
             c.r0[k] = row.anchor[0][k], c.r1[k] = row.anchor[1][k];
         }
         c.normal_mass = row.normal_mass;

@@ -6,6 +6,7 @@
 // friction acts. The basis matrix has the three axes as its COLUMNS, so it maps contact -> world, and its
 // transpose maps world -> contact.
 
+#include "math/products.hpp"
 #include "math/types.hpp"
 
 namespace impulse {
@@ -32,11 +33,18 @@ struct Basis {
 // the true cross product in both branches, so the basis is orthonormal and right-handed for every normal.
 Basis basis(const Vec3& unit_normal);
 
+// C^T v and C v: a vector in contact and in world coordinates, for the basis matrix C (contact_to_world).
+inline Vec3 to_contact(const Mat3& contact_to_world, const Vec3& world) {
+    return transposed_times(contact_to_world, world);
+}
+inline Vec3 to_world(const Mat3& contact_to_world, const Vec3& contact) {
+    return times(contact_to_world, contact);
+}
 inline Vec3 to_contact(const Basis& b, const Vec3& world) {
-    return b.contact_to_world.transpose() * world;
+    return to_contact(b.contact_to_world, world);
 }
 inline Vec3 to_world(const Basis& b, const Vec3& contact) {
-    return b.contact_to_world * contact;
+    return to_world(b.contact_to_world, contact);
 }
 
 }  // namespace impulse

@@ -10,7 +10,7 @@ ContactVelocityTerms contact_velocity(const Basis& basis, const PerBody<Vec3>& r
     for (int i = 0; i < 2; ++i) {
         if (!relative_position[i]) continue;
         const BodyMotion& m = *motion[i];
-        v.point_velocity[i] = m.angular_velocity.cross(*relative_position[i]) + m.velocity;  // (9.5)
+        v.point_velocity[i] = point_velocity(m.velocity, m.angular_velocity, *relative_position[i]);  // (9.5)
         Vec3 local = to_contact(basis, *v.point_velocity[i]);
         if (tangential_acceleration_velocity) {
             Vec3 from_acceleration = to_contact(basis, m.last_frame_acceleration * duration);

@@ -4,6 +4,7 @@
 // the sliding speeds that friction works on.
 
 #include "derivation/basis.hpp"
+#include "math/products.hpp"
 #include "math/types.hpp"
 
 namespace impulse {
@@ -27,6 +28,13 @@ struct ContactVelocityTerms {
 
     bool operator==(const ContactVelocityTerms&) const = default;
 };
+
+// A body's point velocity at q_rel from its centre, theta-dot x q_rel + p-dot  (9.5), world. Inline, in plain
+// doubles (math/products.hpp): the book's step 4 and every accumulating method's rows read velocities through it.
+IMPULSE_KERNEL Vec3 point_velocity(const Vec3& velocity, const Vec3& angular_velocity, const Vec3& relative_position) {
+    const Vec3 turning = cross(angular_velocity, relative_position);
+    return {turning.x() + velocity.x(), turning.y() + velocity.y(), turning.z() + velocity.z()};
+}
 
 ContactVelocityTerms contact_velocity(const Basis& basis, const PerBody<Vec3>& relative_position,
                                       const PerBody<BodyMotion>& motion, double duration,

@@ -13,16 +13,11 @@ Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_p
 
 Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
                            const PerBody<MassProperties>& mass) {
-    // In world coordinates an impulse g at the contact changes body i's point velocity by
-    // m^-1 g + (I^-1 (q_rel x g)) x q_rel = (m^-1 1 - [q_rel]x I^-1 [q_rel]x) g, the matrix form of the
-    // per-unit-impulse chain (14.2, 14.1, 9.5) for every direction at once.
-    Mat3 world = Mat3::Zero();
-    for (int i = 0; i < 2; ++i) {
-        if (!relative_position[i]) continue;
-        const Mat3 r = skew(*relative_position[i]);
-        world += mass[i]->inverse_mass * Mat3::Identity() - r * mass[i]->inverse_inertia_world * r;
-    }
-    return basis.contact_to_world.transpose() * world * basis.contact_to_world;
+    std::array<Vec3, 2> q_rel{Vec3::Zero(), Vec3::Zero()};
+    ContactMass m{nullptr, nullptr};
+    for (int i = 0; i < 2; ++i)
+        if (relative_position[i]) q_rel[i] = *relative_position[i], m[i] = &*mass[i];
+    return delta_velocity_matrix(basis, q_rel, m);
 }
 
 FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,

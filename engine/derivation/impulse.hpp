@@ -9,6 +9,7 @@
 #include "math/full_pivot_lu.hpp"
 #include "math/types.hpp"
 
+#include <array>
 #include <optional>
 
 namespace impulse {
@@ -60,7 +61,33 @@ struct Impulse {
 Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_per_unit_impulse);
 
 // K = C^T (sum_i m_i^-1 1 - [q_rel_i]x I_i^-1 [q_rel_i]x) C: the change of contact velocity per unit impulse,
-// both in contact coordinates (step 3 for every direction at once; K00 is d up to rounding).
+// both in contact coordinates (step 3 for every direction at once; K00 is d up to rounding). In world coordinates
+// an impulse g at the contact changes body i's point velocity by m^-1 g + (I^-1 (q_rel x g)) x q_rel =
+// (m^-1 1 - [q_rel]x I^-1 [q_rel]x) g, the matrix form of the per-unit-impulse chain (14.2, 14.1, 9.5) for every
+// direction at once. Inline, in plain doubles (math/products.hpp): the book's friction solve and every
+// accumulating method's friction rows take K from here. Written as the matrix products it is, multiplications by
+// the skew matrices' zeros included: they decide which zero an entry that sums to zero is, and the trace shows it.
+IMPULSE_KERNEL Mat3 delta_velocity_matrix(const Basis& basis, const std::array<Vec3, 2>& relative_position,
+                                          const ContactMass& mass) {
+    // world = sum over the bodies of m^-1 1 - [q_rel]x I^-1 [q_rel]x, added entry by entry to a matrix of zeros
+    const auto share = [&](int i) {
+        const Mat3 r = skew(relative_position[i]);
+        const Mat3 turn = product(product(r, mass[i]->inverse_inertia_world), r);
+        const double m = mass[i]->inverse_mass;
+        Mat3 w;
+        w(0, 0) = m * 1.0 - turn(0, 0), w(1, 0) = m * 0.0 - turn(1, 0), w(2, 0) = m * 0.0 - turn(2, 0);
+        w(0, 1) = m * 0.0 - turn(0, 1), w(1, 1) = m * 1.0 - turn(1, 1), w(2, 1) = m * 0.0 - turn(2, 1);
+        w(0, 2) = m * 0.0 - turn(0, 2), w(1, 2) = m * 0.0 - turn(1, 2), w(2, 2) = m * 1.0 - turn(2, 2);
+        return w;
+    };
+    Mat3 world = share(0);
+    for (int k = 0; k < 9; ++k) world.data()[k] = 0.0 + world.data()[k];
+    if (mass[1]) {
+        const Mat3 w = share(1);
+        for (int k = 0; k < 9; ++k) world.data()[k] += w.data()[k];
+    }
+    return product(transposed_product(basis.contact_to_world, world), basis.contact_to_world);
+}
 Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
                            const PerBody<MassProperties>& mass);
 

@@ -7,14 +7,16 @@ namespace impulse {
 
 VelocityChange velocity_change(const Vec3& impulse_world, const PerBody<Vec3>& relative_position,
                                const PerBody<MassProperties>& mass) {
-    const std::array<bool, 2> bodies = present(relative_position);
-    const auto impulse_on = [&](int i) -> Vec3 { return body_sign(i) * impulse_world; };  // +-g
-    const PerBody<Vec3> torque =
-        per_body(bodies, [&](int i) -> Vec3 { return relative_position[i]->cross(impulse_on(i)); });  // (14.2)
-    return {.impulsive_torque = torque,
-            .velocity_change = per_body(bodies, [&](int i) -> Vec3 { return impulse_on(i) * mass[i]->inverse_mass; }),
-            .rotation_change =
-                per_body(bodies, [&](int i) -> Vec3 { return mass[i]->inverse_inertia_world * *torque[i]; })};
+    VelocityChange change;
+    for (int i = 0; i < 2; ++i) {
+        if (!relative_position[i]) continue;
+        const Vec3 impulse_on = body_sign(i) * impulse_world;  // +-g
+        const BodyVelocityChange body = body_velocity_change(impulse_on, *relative_position[i], *mass[i]);
+        change.impulsive_torque[i] = body.impulsive_torque;
+        change.velocity_change[i] = body.velocity_change;
+        change.rotation_change[i] = body.rotation_change;
+    }
+    return change;
 }
 
 }  // namespace impulse

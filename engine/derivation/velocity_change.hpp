@@ -15,6 +15,21 @@ struct VelocityChange {
     bool operator==(const VelocityChange&) const = default;
 };
 
+// Step 7 for one body, given the impulse it receives (+g for body 0, -g for body 1), world: u = q_rel x g (14.2),
+// g m^-1 (7.5), I^-1 u (14.1). Inline, in plain doubles (math/products.hpp): the book's step 7 and every
+// accumulating method's visits apply impulses through it.
+struct BodyVelocityChange {
+    Vec3 impulsive_torque;
+    Vec3 velocity_change;
+    Vec3 rotation_change;
+};
+IMPULSE_KERNEL BodyVelocityChange body_velocity_change(const Vec3& impulse, const Vec3& relative_position,
+                                                       const MassProperties& mass) {
+    const Vec3 u = cross(relative_position, impulse);
+    const double m = mass.inverse_mass;
+    return {u, {impulse.x() * m, impulse.y() * m, impulse.z() * m}, times(mass.inverse_inertia_world, u)};
+}
+
 // Follows equation 14.2, u = q_rel x g. (The chapter's code snippet writes g x q_rel, which has the
 // opposite sign; the reference engine's code agrees with the equation.)
 VelocityChange velocity_change(const Vec3& impulse_world, const PerBody<Vec3>& relative_position,

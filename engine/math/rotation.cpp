@@ -17,12 +17,6 @@ Quat turn(double angle, const Vec3& axis) {
 
 }  // namespace
 
-Mat3 skew(const Vec3& r) {
-    Mat3 m;
-    m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
-    return m;
-}
-
 Quat rotated(const Quat& orientation, const Vec3& rotation_vector, OrientationUpdate update) {
     if (update == OrientationUpdate::first_order) {
         // q' = q + 1/2 (0, theta) q: the derivative dq/dt = 1/2 w q integrated over one unit of time.

@@ -1,13 +1,10 @@
 #pragma once
-// Rotations: the skew matrix of a cross product, orientation updates from a rotation vector, and the
+// Rotations: orientation updates from a rotation vector, and the
 // conversions a person needs to write an orientation down.
 
 #include "math/types.hpp"
 
 namespace impulse {
-
-// [r]x, the matrix with [r]x g = r x g.
-Mat3 skew(const Vec3& r);
 
 // How an orientation is turned by a small rotation vector theta (axis * angle, world frame).
 enum class OrientationUpdate {

@@ -6,8 +6,8 @@
 //
 // The hot loop reads plain data (Box2D's contact constraint structs): a ContactRow per contact holding what a
 // visit needs, copied once per frame from the contact's preparation, and a SolverBody per body holding its
-// velocities and mass. The row functions compute in plain doubles, component by component (Eigen's packed
-// arithmetic on 3-vectors mixes 16- and 8-byte loads and stores of the same values, which stalls the loop).
+// velocities and mass. The rows derive nothing themselves: step 3's d, K's entries, step 4's point velocity and
+// step 7's apply are the derivation's own inline forms (derivation/*.hpp), the ones the book's methods use.
 // The recorder sees the same numbers through the same functions: a method runs one loop templated on whether
 // it records, so recording costs nothing when off and changes no bit when on.
 //
@@ -55,6 +55,8 @@
 //   impulsive_torque = r x (+-g),  velocity_change = (+-g) m^-1,  rotation_change = I^-1 impulsive_torque.
 
 #include "body/rigid_body.hpp"
+#include "derivation/contact_velocity.hpp"
+#include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
 #include "memory/contact_memory.hpp"
 #include "record/iteration_records.hpp"
@@ -94,8 +96,7 @@ inline Axes axes_of(const Vec3& v) {
 struct SolverBody {
     Vec3 velocity = Vec3::Zero();          // p-dot (m/s)
     Vec3 angular_velocity = Vec3::Zero();  // theta-dot (rad/s)
-    double inverse_mass = 0.0;             // m^-1
-    Mat3 inverse_inertia = Mat3::Zero();   // I^-1, world axes, as prepared
+    MassProperties mass;                   // m^-1 and I^-1 (world axes), as prepared
 };
 
 // The solver's bodies for a frame: velocities from `bodies`, mass as the contacts were prepared with (in `memory`:
@@ -106,23 +107,15 @@ std::pmr::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, st
 // Copies the solver's velocities back to the bodies.
 void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>& bodies);
 
-// m v, written out: Eigen's 3x3 product is a call at -O2.
-IMPULSE_ROW_FUNCTION Vec3 times(const Mat3& m, const Vec3& v) {
-    return {m(0, 0) * v.x() + m(0, 1) * v.y() + m(0, 2) * v.z(), m(1, 0) * v.x() + m(1, 1) * v.y() + m(1, 2) * v.z(),
-            m(2, 0) * v.x() + m(2, 1) * v.y() + m(2, 2) * v.z()};
-}
-
 // One contact's rows: what a visit reads, fixed for the frame, and the total it accumulates.
 struct ContactRow {
     int contact = 0;                  // index in the prepared list
     std::array<int, 2> body{0, -1};   // solver bodies; -1 = the world (body 1 only)
     bool tangent_invertible = false;  // K_tt is invertible (here, beside the ints: a row is read whole every visit)
-    Vec3 normal;                      // contact x, world
-    Vec3 tangent1;                    // contact y
-    Vec3 tangent2;                    // contact z
+    Mat3 basis;                       // step 1's contact_to_world: columns normal (contact x), tangent 1, tangent 2
     std::array<Vec3, 2> anchor;       // r_i: contact point minus body centre (step 2); zero for the world
-    double normal_mass = 0.0;         // 1 / K_nn: impulse per unit change of normal velocity (step 3's 1 / d)
-    double normal_response = 0.0;     // K_nn (d up to rounding): normal velocity per unit normal impulse
+    double normal_mass = 0.0;         // 1 / K_nn = 1 / d: impulse per unit change of normal velocity
+    double normal_response = 0.0;     // K_nn = step 3's d: normal velocity per unit normal impulse
     double friction = 0.0;            // mu
     std::array<double, 2> normal_to_tangent{0.0, 0.0};      // K_tn: slip velocity per unit normal impulse
     std::array<double, 3> tangent_response{0.0, 0.0, 0.0};  // K_tt (11, 12, 22): slip per unit friction impulse
@@ -131,10 +124,10 @@ struct ContactRow {
     Axes total_impulse;                                     // lambda (N s)
 };
 
-// Fills `row` with the rows of a prepared contact, with its bodies' mass from `bodies` (K as
-// derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes) only the
-// normal row is filled. Returns whether an impulse can move the contact at all (K_nn > 0); a contact that cannot
-// is never visited. (In place: a row is 264 bytes, and a frame builds one per contact.)
+// Fills `row` with the rows of a prepared contact, with its bodies' mass from `bodies` (K_nn = d of step 3, the
+// other entries derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes)
+// only the normal row is filled. Returns whether an impulse can move the contact at all (K_nn > 0); a contact that
+// cannot is never visited. (In place: a row is 264 bytes, and a frame builds one per contact.)
 bool fill_contact_row(ContactRow& row, const RowPreparation& contact, const SolverBody* bodies,
                       bool friction_rows = true);
 
@@ -164,34 +157,36 @@ inline double prepared_normal_velocity(const RowVelocity& v) {
     return v.separating_velocity + v.desired_delta_velocity;
 }
 
-// Body `slot`'s point velocity at the row's anchor, v + w x r (9.5), world, added to `out` with `sign`.
+// A body's point velocity at the row's anchor (step 4's, 9.5), world, added to `out` with `sign`.
 IMPULSE_ROW_FUNCTION void add_point_velocity(const SolverBody& b, const Vec3& r, double sign, double* out) {
-    const Vec3& v = b.velocity;
-    const Vec3& w = b.angular_velocity;
-    out[0] += sign * (v.x() + (w.y() * r.z() - w.z() * r.y()));
-    out[1] += sign * (v.y() + (w.z() * r.x() - w.x() * r.z()));
-    out[2] += sign * (v.z() + (w.x() * r.y() - w.y() * r.x()));
+    const Vec3 v = point_velocity(b.velocity, b.angular_velocity, r);
+    out[0] += sign * v.x();
+    out[1] += sign * v.y();
+    out[2] += sign * v.z();
 }
 
-IMPULSE_ROW_FUNCTION double along(const Vec3& axis, const double* v) {
-    return axis.x() * v[0] + axis.y() * v[1] + axis.z() * v[2];
+// The contact's normal, world.
+inline Vec3 normal_of(const ContactRow& row) {
+    return row.basis.col(0);
+}
+
+// Body 0's point velocity minus body 1's at the row's anchors, world.
+IMPULSE_ROW_FUNCTION Vec3 relative_velocity(const ContactRow& row, const SolverBody* bodies) {
+    double relative[3] = {0.0, 0.0, 0.0};
+    add_point_velocity(bodies[row.body[0]], row.anchor[0], 1.0, relative);
+    if (row.body[1] >= 0) add_point_velocity(bodies[row.body[1]], row.anchor[1], -1.0, relative);
+    return {relative[0], relative[1], relative[2]};
 }
 
 // Step 4 for the row: the contact velocity (v_n, v_t1, v_t2) from the bodies as they are now, plus slip_offset.
 IMPULSE_ROW_FUNCTION Axes row_velocity(const ContactRow& row, const SolverBody* bodies) {
-    double relative[3] = {0.0, 0.0, 0.0};
-    add_point_velocity(bodies[row.body[0]], row.anchor[0], 1.0, relative);
-    if (row.body[1] >= 0) add_point_velocity(bodies[row.body[1]], row.anchor[1], -1.0, relative);
-    return {along(row.normal, relative), along(row.tangent1, relative) + row.slip_offset[0],
-            along(row.tangent2, relative) + row.slip_offset[1]};
+    const Vec3 v = transposed_times(row.basis, relative_velocity(row, bodies));
+    return {v.x(), v.y() + row.slip_offset[0], v.z() + row.slip_offset[1]};
 }
 
 // The normal velocity alone (the split impulse's push rows).
 IMPULSE_ROW_FUNCTION double row_normal_velocity(const ContactRow& row, const SolverBody* bodies) {
-    double relative[3] = {0.0, 0.0, 0.0};
-    add_point_velocity(bodies[row.body[0]], row.anchor[0], 1.0, relative);
-    if (row.body[1] >= 0) add_point_velocity(bodies[row.body[1]], row.anchor[1], -1.0, relative);
-    return along(row.normal, relative);
+    return transposed_times(row.basis, relative_velocity(row, bodies)).x();
 }
 
 // lambda_n after the normal row; `unclamped` receives the total before the push-only clamp.
@@ -325,33 +320,24 @@ inline RowVisit within_limits(const Vec3& total, double friction) {
 
 // The impulse `a` (contact coordinates) in world coordinates, g = C a.
 IMPULSE_ROW_FUNCTION Vec3 world_impulse(const ContactRow& row, const Axes& a) {
-    return {row.normal.x() * a.n + row.tangent1.x() * a.t1 + row.tangent2.x() * a.t2,
-            row.normal.y() * a.n + row.tangent1.y() * a.t1 + row.tangent2.y() * a.t2,
-            row.normal.z() * a.n + row.tangent1.z() * a.t1 + row.tangent2.z() * a.t2};
+    return to_world(row.basis, vector_of(a));
 }
 
-// Step 7 for one body: adds g m^-1 and I^-1 (r x g) to it; with `Change` a VelocityChange*, records exactly what
-// was added as its body `slot`'s values.
+// Step 7 for one body (derivation/velocity_change.hpp): adds g m^-1 and I^-1 (r x g) to it; with `Change` a
+// VelocityChange*, records exactly what was added as its body `slot`'s values.
 template <typename Change>
-IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, double gx, double gy, double gz, int slot,
-                                        Change change) {
-    const double ux = r.y() * gz - r.z() * gy, uy = r.z() * gx - r.x() * gz,
-                 uz = r.x() * gy - r.y() * gx;   // u = q_rel x g  (14.2)
-    const double m = body.inverse_mass;          // (7.5)
-    const Mat3& inertia = body.inverse_inertia;  // I^-1 u  (14.1)
-    const double wx = inertia(0, 0) * ux + inertia(0, 1) * uy + inertia(0, 2) * uz;
-    const double wy = inertia(1, 0) * ux + inertia(1, 1) * uy + inertia(1, 2) * uz;
-    const double wz = inertia(2, 0) * ux + inertia(2, 1) * uy + inertia(2, 2) * uz;
-    body.velocity.x() += gx * m;
-    body.velocity.y() += gy * m;
-    body.velocity.z() += gz * m;
-    body.angular_velocity.x() += wx;
-    body.angular_velocity.y() += wy;
-    body.angular_velocity.z() += wz;
+IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, const Vec3& impulse, int slot, Change change) {
+    const BodyVelocityChange c = body_velocity_change(impulse, r, body.mass);
+    body.velocity.x() += c.velocity_change.x();
+    body.velocity.y() += c.velocity_change.y();
+    body.velocity.z() += c.velocity_change.z();
+    body.angular_velocity.x() += c.rotation_change.x();
+    body.angular_velocity.y() += c.rotation_change.y();
+    body.angular_velocity.z() += c.rotation_change.z();
     if constexpr (!std::is_same_v<Change, std::nullptr_t>) {
-        change->impulsive_torque[slot] = Vec3(ux, uy, uz);
-        change->velocity_change[slot] = Vec3(gx * m, gy * m, gz * m);
-        change->rotation_change[slot] = Vec3(wx, wy, wz);
+        change->impulsive_torque[slot] = c.impulsive_torque;
+        change->velocity_change[slot] = c.velocity_change;
+        change->rotation_change[slot] = c.rotation_change;
     }
 }
 
@@ -359,9 +345,9 @@ IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, double 
 // also records exactly what was added; with std::nullptr_t, records nothing.
 template <typename Change>
 IMPULSE_ROW_FUNCTION void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse, Change change) {
-    const double gx = impulse.x(), gy = impulse.y(), gz = impulse.z();
-    apply_to_body(bodies[row.body[0]], row.anchor[0], gx, gy, gz, 0, change);
-    if (row.body[1] >= 0) apply_to_body(bodies[row.body[1]], row.anchor[1], -gx, -gy, -gz, 1, change);
+    apply_to_body(bodies[row.body[0]], row.anchor[0], impulse, 0, change);
+    if (row.body[1] >= 0)
+        apply_to_body(bodies[row.body[1]], row.anchor[1], Vec3(-impulse.x(), -impulse.y(), -impulse.z()), 1, change);
 }
 
 // Keeps `after` as the row's total, field by field (a copy of the struct can become one 16-byte load of values

@@ -170,7 +170,7 @@ private:
             const Vec3& anchor = row.anchor[i];
             separated += body_sign(i) * (moved_[b] + (times(turned_[b], anchor) - anchor));
         }
-        return soft_[r].prepared_penetration - separated.dot(row.normal);
+        return soft_[r].prepared_penetration - dot(separated, normal_of(row));
     }
 
     // The soft bias of a point at penetration p for the coming solve and relax (contact_solver.c's three cases),

@@ -84,7 +84,7 @@ PhaseOutcome push_apart(FrameContext& frame) {
             largest = std::max(largest, std::abs(push) / row.normal_mass);
 
             VelocityChange change;
-            apply_impulse(row, pseudo.data(), Vec3(row.normal * push), &change);
+            apply_impulse(row, pseudo.data(), Vec3(normal_of(row) * push), &change);
             PositionChange moves;
             for (int b = 0; b < 2; ++b) {
                 if (row.body[b] < 0) continue;

@@ -135,8 +135,8 @@ int scaling(const BenchOptions& options, const fs::path& folder, std::ostream& o
                 const int used = r.resolution.position.iterations_used + r.resolution.velocity.iterations_used;
                 contacts += r.contacts;
                 resolutions += used;
-                resolve_ms.push_back(r.times.resolve * 1e3);
-                if (used > 0) per_resolution_us.push_back(r.times.resolve * 1e6 / used);
+                resolve_ms.push_back(r.times.resolve() * 1e3);
+                if (used > 0) per_resolution_us.push_back(r.times.resolve() * 1e6 / used);
                 bar.update(++done);
             }
             const char* name = search == WorstFirstSearch::priority_queue ? "priority_queue" : "full_scan";

@@ -44,14 +44,15 @@ void RunSummary::add(const StepReport& r, const std::vector<RigidBody>& bodies) 
     total_.integrate += r.times.integrate;
     total_.broad_phase += r.times.broad_phase;
     total_.narrow_phase += r.times.narrow_phase;
-    total_.resolve += r.times.resolve;
+    total_.prepare += r.times.prepare;
+    total_.position += r.times.position;
+    total_.velocity += r.times.velocity;
     if (r.deepest_penetration > deepest_) deepest_ = r.deepest_penetration, deepest_frame_ = r.frame;
     top_end_ = bodies[top_].position;
     const double drift = (top_end_ - top_start_).norm();
     if (drift > top_drift_most_) top_drift_most_ = drift, top_drift_frame_ = r.frame;
 
-    last_ = {r.frame, r.contacts, r.deepest_penetration, r.kinetic_energy,
-             r.times.integrate + r.times.broad_phase + r.times.narrow_phase + r.times.resolve};
+    last_ = {r.frame, r.contacts, r.deepest_penetration, r.kinetic_energy, r.times.total()};
     if (r.frame % asked_every_ == 0) asked_rows_.push_back(last_);
     if (r.frame % stride_ == 0) spread_rows_.push_back(last_);
     if (spread_rows_.size() > 64) {
@@ -90,9 +91,10 @@ void RunSummary::write(std::ostream& out, const Scene& scene, const std::vector<
         out << line << '\n';
     }
     const double n = std::max(1, frames_);
-    out << "  per frame: integrate " << fixed(total_.integrate / n * 1e3, 3) << " ms, broad phase "
-        << fixed(total_.broad_phase / n * 1e3, 3) << " ms, pair tests " << fixed(total_.narrow_phase / n * 1e3, 3)
-        << " ms, resolve " << fixed(total_.resolve / n * 1e3, 3) << " ms\n";
+    const auto ms = [n](double seconds) { return fixed(seconds / n * 1e3, 3) + " ms"; };
+    out << "  per frame: integrate " << ms(total_.integrate) << ", broad phase " << ms(total_.broad_phase)
+        << ", narrow phase " << ms(total_.narrow_phase) << ", prepare " << ms(total_.prepare) << ", position "
+        << ms(total_.position) << ", velocity " << ms(total_.velocity) << "\n";
     out << "  iteration limit (or every sweep) used in " << position_limited_ << " of " << frames_
         << " frames (positions) and " << velocity_limited_ << " (velocities)\n";
     out << "  deepest penetration " << fixed(deepest_ * 1e3, 3) << " mm (frame " << deepest_frame_ << "); "

@@ -149,7 +149,7 @@ int lean_sweeps(std::vector<LeanBody>& bodies, std::vector<LeanContact>& contact
 }
 
 // The lean kernel's data, from the production rows (the same numbers), warm-start totals applied.
-void lean_setup(const std::vector<RigidBody>& rigid, std::span<const RowPreparation> prepared,
+void lean_setup(const std::vector<RigidBody>& rigid, std::span<const PreparedContact> prepared,
                 const ContactMemory& memory, std::vector<LeanBody>& bodies, std::vector<LeanContact>& contacts) {
     const std::pmr::vector<SolverBody> solver = solver_bodies(rigid, mass_properties(rigid));
     bodies.clear();
@@ -162,13 +162,13 @@ void lean_setup(const std::vector<RigidBody>& rigid, std::span<const RowPreparat
         bodies.push_back(b);
     }
     std::vector<ContactRow> rows;
-    for (const RowPreparation& c : prepared)
+    for (const PreparedContact& c : prepared)
         if (!fill_contact_row(rows.emplace_back(), c, solver.data())) rows.pop_back();
     RememberedTotals remembered(memory, std::pmr::new_delete_resource());
     contacts.clear();
     for (std::size_t r = 0; r < rows.size(); ++r) {
         const ContactRow& row = rows[r];
-        const RowPreparation& d = prepared[static_cast<std::size_t>(row.contact)];
+        const PreparedContact& d = prepared[static_cast<std::size_t>(row.contact)];
         LeanContact c{};
         c.body0 = row.body[0];
         c.body1 = row.body[1];
@@ -178,7 +178,7 @@ void lean_setup(const std::vector<RigidBody>& rigid, std::span<const RowPreparat
         }
         c.normal_mass = row.normal_mass;
         c.normal_response = row.normal_response;
-        c.target = prepared_normal_velocity(*d.velocity);
+        c.target = prepared_normal_velocity(d);
         c.friction = row.friction;
         for (int k = 0; k < 2; ++k) c.k_tn[k] = row.normal_to_tangent[static_cast<std::size_t>(k)];
         for (int k = 0; k < 3; ++k) {
@@ -275,30 +275,26 @@ int main(int argc, char** argv) {
                   settings.orientation_update);
     const std::vector<Contact> contacts = detect_contacts(scene, bodies).contacts;
     const std::vector<MassProperties> mass = mass_properties(bodies);
-    const std::vector<PreparedContact> prepared = prepare_contacts(contacts, bodies, mass, settings);
-    // What the resolver hands projected Gauss-Seidel when nothing records: the rows' values alone.
-    std::pmr::vector<RowPreparation> rows;
-    prepare_rows(contacts, bodies, settings, true, rows);
+    std::pmr::vector<PreparedContact> prepared;
+    prepare_contacts(contacts, bodies, mass, settings, prepared);
 
     // The production velocity phase, as the resolver calls it, from copies of the frame's start.
     std::vector<RigidBody> out;
-    std::vector<PreparedContact> work;
+    std::pmr::vector<PreparedContact> work;
     ContactMemory kept;
     const auto setup = [&] {
         out = bodies;
         work = prepared;
         kept = memory;
     };
-    const auto production = [&](Recorder& recorder) {
-        FrameContext context{out, work, rows, mass, settings, recorder, &kept, {}};
-        return method_row(VelocityMethod::projected_gauss_seidel).solve(context);
-    };
     Trace trace;
     trace.scene = scene;
     TraceRecorder recorder(trace);
     recorder.begin_frame(frame, bodies, mass);
+    recorder.contacts_prepared({contacts, prepared, bodies, mass, settings});
     setup();
-    production(recorder);
+    FrameContext recorded{out, work, mass, settings, recorder, true, nullptr, &kept, {}};
+    method_row(VelocityMethod::projected_gauss_seidel).solve(recorded);
     int production_sweeps = 0;
     for (const VelocityIteration& it : trace.frames.back().velocity.iterations)
         if (it.sweep && it.sweep->stage == SolverStage::solve)
@@ -306,7 +302,7 @@ int main(int argc, char** argv) {
 
     std::vector<LeanBody> lean_bodies, lean_start;
     std::vector<LeanContact> lean_contacts, lean_contacts_start;
-    lean_setup(bodies, rows, memory, lean_start, lean_contacts_start);
+    lean_setup(bodies, prepared, memory, lean_start, lean_contacts_start);
     const int active = static_cast<int>(lean_contacts_start.size());  // one per row an impulse can move
     int lean_sweeps_run = 0;
 
@@ -316,22 +312,20 @@ int main(int argc, char** argv) {
     for (int r = 0; r < repeats; ++r) {
         prepare_samples.push_back(run_seconds([] {},
                                               [&] {
-                                                  // What the resolver prepares when nothing records:
-                                                  // the bodies' mass, then the rows' values.
+                                                  // What the resolver prepares: the bodies' mass, then
+                                                  // every contact.
                                                   const std::vector<MassProperties> again_mass =
                                                       mass_properties(bodies);
-                                                  std::pmr::vector<RowPreparation> again;
-                                                  prepare_rows(contacts, bodies, settings, true, again);
-                                                  if (again.size() != rows.size() || again_mass.size() != bodies.size())
-                                                      std::abort();
+                                                  std::pmr::vector<PreparedContact> again;
+                                                  prepare_contacts(contacts, bodies, again_mass, settings, again);
+                                                  if (again.size() != prepared.size()) std::abort();
                                               },
                                               min_seconds));
         production_samples.push_back(run_seconds(
             setup,
             [&] {
-                // As the resolver calls it when nothing records: the rows' values and no full preparation.
-                std::vector<PreparedContact> none;
-                FrameContext context{out, none, rows, mass, settings, nobody, &kept, {}};
+                // As the resolver calls it when nothing records.
+                FrameContext context{out, work, mass, settings, nobody, false, nullptr, &kept, {}};
                 timed_production(context);
             },
             min_seconds));
@@ -347,7 +341,8 @@ int main(int argc, char** argv) {
                  lean_s = median(lean_samples);
 
     setup();
-    production(nobody);
+    FrameContext unrecorded{out, work, mass, settings, nobody, false, nullptr, &kept, {}};
+    method_row(VelocityMethod::projected_gauss_seidel).solve(unrecorded);
     double difference = 0.0;
     for (std::size_t b = 0; b < out.size(); ++b)
         for (int k = 0; k < 3; ++k)
@@ -358,7 +353,7 @@ int main(int argc, char** argv) {
     const double lean_ns = lean_s * 1e9 / (double(active) * lean_sweeps_run);
     std::printf("scene %s, frame %d: %zu contacts (%d active), %zu bodies\n", scene_path.c_str(), frame,
                 prepared.size(), active, bodies.size());
-    std::printf("prepare rows (steps 1,2,4,5)%8.3f ms  (%.1f ns per contact)\n", prepare_s * 1e3,
+    std::printf("prepare (steps 1-5)          %8.3f ms  (%.1f ns per contact)\n", prepare_s * 1e3,
                 prepare_s * 1e9 / double(prepared.size()));
     std::printf("production velocity phase   %8.3f ms  %d sweeps  %6.1f ns per contact-iteration\n", production_s * 1e3,
                 production_sweeps, production_ns);

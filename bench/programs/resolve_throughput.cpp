@@ -125,7 +125,9 @@ int main(int argc, char** argv) {
         const double prepare = median_seconds(
             [&] {
                 const std::vector<MassProperties> mass = mass_properties(scene.bodies);
-                prepared += prepare_contacts(scene.contacts, scene.bodies, mass, settings).size();
+                std::pmr::vector<PreparedContact> contacts;
+                prepare_contacts(scene.contacts, scene.bodies, mass, settings, contacts);
+                prepared += contacts.size();
             },
             repeats, min_seconds);
         if (prepared == 0) return 1;  // keeps the preparation from being optimised away

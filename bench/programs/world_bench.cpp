@@ -48,7 +48,9 @@ Figures simulate(const Scene& scene, int frames) {
         f.stage_ms.integrate += r.times.integrate * 1e3 / frames;
         f.stage_ms.broad_phase += r.times.broad_phase * 1e3 / frames;
         f.stage_ms.narrow_phase += r.times.narrow_phase * 1e3 / frames;
-        f.stage_ms.resolve += r.times.resolve * 1e3 / frames;
+        f.stage_ms.prepare += r.times.prepare * 1e3 / frames;
+        f.stage_ms.position += r.times.position * 1e3 / frames;
+        f.stage_ms.velocity += r.times.velocity * 1e3 / frames;
         f.contacts += static_cast<double>(r.contacts) / frames;
         f.pairs += static_cast<double>(r.pairs_tested) / frames;
         f.limited_frames += r.resolution.position.stop == StopReason::iteration_limit ||
@@ -57,7 +59,7 @@ Figures simulate(const Scene& scene, int frames) {
         f.drift_most_mm = std::max(f.drift_most_mm, drift);
         f.drift_end_mm = drift;
     }
-    f.frame_ms = f.stage_ms.integrate + f.stage_ms.broad_phase + f.stage_ms.narrow_phase + f.stage_ms.resolve;
+    f.frame_ms = f.stage_ms.total();
     return f;
 }
 
@@ -80,12 +82,14 @@ int main(int argc, char** argv) {
     if (!csv.check()) return 2;
     std::FILE* table = csv.table();
 
-    std::string rows = formats::csv_row({"scene", "bodies", "frames", "contacts_per_frame", "pairs_per_frame",
-                                         "ms_per_frame", "integrate_ms", "broad_phase_ms", "pair_tests_ms",
-                                         "resolve_ms", "limited_frames", "top_drift_end_mm", "top_drift_most_mm"});
-    std::fprintf(table, "%-22s %6s %6s %9s %9s %10s %9s %9s %9s %9s %8s %11s %11s\n", "scene", "bodies", "frames",
-                 "contacts", "pairs", "ms/frame", "integr.", "broad", "pairs ms", "resolve", "limited", "drift end",
-                 "drift most");
+    // The profile's rows are the world step's stages (StageTimes, resolver/resolver.hpp), in the step's order.
+    std::string rows =
+        formats::csv_row({"scene", "bodies", "frames", "contacts_per_frame", "pairs_per_frame", "ms_per_frame",
+                          "integrate_ms", "broad_phase_ms", "narrow_phase_ms", "prepare_ms", "position_ms",
+                          "velocity_ms", "limited_frames", "top_drift_end_mm", "top_drift_most_mm"});
+    std::fprintf(table, "%-22s %6s %6s %9s %9s %10s %9s %9s %9s %9s %9s %9s %8s %11s %11s\n", "scene", "bodies",
+                 "frames", "contacts", "pairs", "ms/frame", "integr.", "broad", "narrow", "prepare", "position",
+                 "velocity", "limited", "drift end", "drift most");
     for (const std::string& file : scenes) {
         Scene scene;
         try {
@@ -112,17 +116,17 @@ int main(int argc, char** argv) {
         const Figures& median = sorted[sorted.size() / 2];
         const Figures& first = runs.front();
         const std::string name = formats::input_name(file.substr(file.find_last_of('/') + 1));
-        std::fprintf(table, "%-22s %6zu %6d %9.1f %9.1f %10.3f %9.3f %9.3f %9.3f %9.3f %8d %11.2f %11.2f\n",
-                     name.c_str(), scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms,
-                     median.stage_ms.integrate, median.stage_ms.broad_phase, median.stage_ms.narrow_phase,
-                     median.stage_ms.resolve, first.limited_frames, first.drift_end_mm, first.drift_most_mm);
-        rows += formats::csv_row({name, std::to_string(scene.bodies.size()), std::to_string(n),
-                                  formats::csv_number(first.contacts), formats::csv_number(first.pairs),
-                                  formats::csv_number(median.frame_ms), formats::csv_number(median.stage_ms.integrate),
-                                  formats::csv_number(median.stage_ms.broad_phase),
-                                  formats::csv_number(median.stage_ms.narrow_phase),
-                                  formats::csv_number(median.stage_ms.resolve), std::to_string(first.limited_frames),
-                                  formats::csv_number(first.drift_end_mm), formats::csv_number(first.drift_most_mm)});
+        const StageTimes& ms = median.stage_ms;
+        std::fprintf(table, "%-22s %6zu %6d %9.1f %9.1f %10.3f %9.3f %9.3f %9.3f %9.3f %9.3f %9.3f %8d %11.2f %11.2f\n",
+                     name.c_str(), scene.bodies.size(), n, first.contacts, first.pairs, median.frame_ms, ms.integrate,
+                     ms.broad_phase, ms.narrow_phase, ms.prepare, ms.position, ms.velocity, first.limited_frames,
+                     first.drift_end_mm, first.drift_most_mm);
+        rows += formats::csv_row(
+            {name, std::to_string(scene.bodies.size()), std::to_string(n), formats::csv_number(first.contacts),
+             formats::csv_number(first.pairs), formats::csv_number(median.frame_ms), formats::csv_number(ms.integrate),
+             formats::csv_number(ms.broad_phase), formats::csv_number(ms.narrow_phase), formats::csv_number(ms.prepare),
+             formats::csv_number(ms.position), formats::csv_number(ms.velocity), std::to_string(first.limited_frames),
+             formats::csv_number(first.drift_end_mm), formats::csv_number(first.drift_most_mm)});
     }
     return csv.write(rows) ? 0 : 2;
 }

@@ -8,14 +8,23 @@ Basis basis(const Vec3& unit_normal) {
     Basis b;
     b.normal = unit_normal;
     const Vec3& n = unit_normal;
+    Vec3 seed_cross;
     if (std::abs(n.x()) > std::abs(n.y())) {
         b.seed = TangentSeed::world_y;
-        b.tangent1 = Vec3::UnitY().cross(n).normalized();  // (n.z, 0, -n.x) / sqrt(n.z^2 + n.x^2)
+        seed_cross = cross(Vec3(0.0, 1.0, 0.0), n);  // (n.z, 0, -n.x)
     } else {
         b.seed = TangentSeed::world_x;
-        b.tangent1 = Vec3::UnitX().cross(n).normalized();  // (0, -n.z, n.y) / sqrt(n.z^2 + n.y^2)
+        seed_cross = cross(Vec3(1.0, 0.0, 0.0), n);  // (0, -n.z, n.y)
     }
-    b.tangent2 = n.cross(b.tangent1);
+    // Normalised as Eigen's normalized() does: each component divided by the root of the sum of squares, a zero
+    // vector left as it is (never, for a unit normal: its length is at least 1/sqrt(2)).
+    const double squared_length = dot(seed_cross, seed_cross);
+    if (squared_length > 0.0) {
+        const double length = std::sqrt(squared_length);
+        seed_cross = Vec3(seed_cross.x() / length, seed_cross.y() / length, seed_cross.z() / length);
+    }
+    b.tangent1 = seed_cross;
+    b.tangent2 = cross(n, b.tangent1);
     b.contact_to_world.col(0) = b.normal;
     b.contact_to_world.col(1) = b.tangent1;
     b.contact_to_world.col(2) = b.tangent2;

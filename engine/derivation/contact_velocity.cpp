@@ -9,16 +9,12 @@ ContactVelocityTerms contact_velocity(const Basis& basis, const PerBody<Vec3>& r
     v.contact_velocity = Vec3::Zero();
     for (int i = 0; i < 2; ++i) {
         if (!relative_position[i]) continue;
-        const BodyMotion& m = *motion[i];
-        v.point_velocity[i] = point_velocity(m.velocity, m.angular_velocity, *relative_position[i]);  // (9.5)
-        Vec3 local = to_contact(basis, *v.point_velocity[i]);
-        if (tangential_acceleration_velocity) {
-            Vec3 from_acceleration = to_contact(basis, m.last_frame_acceleration * duration);
-            from_acceleration.x() = 0.0;  // only the sliding part; the normal part is for restitution (step 5)
-            v.tangential_acceleration_velocity[i] = from_acceleration;
-            local += from_acceleration;
-        }
-        v.contact_velocity += body_sign(i) * local;
+        const BodyContactVelocity body = body_contact_velocity(basis.contact_to_world, *relative_position[i],
+                                                               *motion[i], duration, tangential_acceleration_velocity);
+        v.point_velocity[i] = body.point_velocity;
+        if (tangential_acceleration_velocity)
+            v.tangential_acceleration_velocity[i] = body.tangential_acceleration_velocity;
+        v.contact_velocity += body_sign(i) * body.local;
     }
     return v;
 }

@@ -36,6 +36,30 @@ IMPULSE_KERNEL Vec3 point_velocity(const Vec3& velocity, const Vec3& angular_vel
     return {turning.x() + velocity.x(), turning.y() + velocity.y(), turning.z() + velocity.z()};
 }
 
+// One body's share of step 4: its point velocity, and with the refinement its tangential acceleration term, both
+// in contact coordinates (the term's normal part zeroed), and their sum, which the contact velocity adds for body 0
+// and subtracts for body 1. Every preparation and the recorder compute step 4 through it.
+struct BodyContactVelocity {
+    Vec3 point_velocity;                    // world (9.5)
+    Vec3 tangential_acceleration_velocity;  // contact coordinates; zero with the refinement off
+    Vec3 local;                             // point velocity in contact coordinates plus that term
+};
+IMPULSE_KERNEL BodyContactVelocity body_contact_velocity(const Mat3& contact_to_world, const Vec3& relative_position,
+                                                         const BodyMotion& motion, double duration,
+                                                         bool tangential_acceleration_velocity) {
+    BodyContactVelocity v;
+    v.point_velocity = point_velocity(motion.velocity, motion.angular_velocity, relative_position);
+    v.local = to_contact(contact_to_world, v.point_velocity);
+    v.tangential_acceleration_velocity = Vec3::Zero();
+    if (tangential_acceleration_velocity) {
+        v.tangential_acceleration_velocity = to_contact(contact_to_world, motion.last_frame_acceleration * duration);
+        // Only the sliding part; the normal part is for restitution (step 5).
+        v.tangential_acceleration_velocity.x() = 0.0;
+        v.local += v.tangential_acceleration_velocity;
+    }
+    return v;
+}
+
 ContactVelocityTerms contact_velocity(const Basis& basis, const PerBody<Vec3>& relative_position,
                                       const PerBody<BodyMotion>& motion, double duration,
                                       bool tangential_acceleration_velocity);

@@ -1,5 +1,7 @@
 #include "derivation/desired_delta_velocity.hpp"
 
+#include "math/products.hpp"
+
 #include <cmath>
 
 namespace impulse {
@@ -15,10 +17,16 @@ DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double r
 
 double velocity_from_acceleration(const Vec3& normal, const PerBody<BodyMotion>& motion, double duration,
                                   const VelocityRefinements& refinements) {
+    const auto of = [&](int i) { return motion[i] ? &motion[i]->last_frame_acceleration : nullptr; };
+    return velocity_from_acceleration(normal, {of(0), of(1)}, duration, refinements);
+}
+
+double velocity_from_acceleration(const Vec3& normal, const std::array<const Vec3*, 2>& acceleration, double duration,
+                                  const VelocityRefinements& refinements) {
     double velocity = 0.0;
     if (refinements.velocity_from_acceleration) {
         for (int i = 0; i < 2; ++i)
-            if (motion[i]) velocity += body_sign(i) * (motion[i]->last_frame_acceleration * duration).dot(normal);
+            if (acceleration[i]) velocity += body_sign(i) * dot(*acceleration[i] * duration, normal);
     }
     return velocity;
 }

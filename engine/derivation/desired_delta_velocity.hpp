@@ -7,6 +7,8 @@
 #include "derivation/contact_velocity.hpp"
 #include "math/types.hpp"
 
+#include <array>
+
 namespace impulse {
 
 struct VelocityRefinements {
@@ -42,6 +44,9 @@ DesiredDeltaVelocity desired_delta_velocity(double separating_velocity, double r
 
 // (a0 - a1) . n x duration, the normal velocity last frame's acceleration built up; 0 with the refinement off.
 double velocity_from_acceleration(const Vec3& normal, const PerBody<BodyMotion>& motion, double duration,
+                                  const VelocityRefinements& refinements);
+// The same from the two bodies' accelerations (body 1 null for the world).
+double velocity_from_acceleration(const Vec3& normal, const std::array<const Vec3*, 2>& acceleration, double duration,
                                   const VelocityRefinements& refinements);
 
 // Step 5 with that velocity already known. The bookkeeping re-runs step 5 after every impulse on a body of the

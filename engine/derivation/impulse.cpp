@@ -22,7 +22,10 @@ Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_pos
 
 FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
                                                            const PerBody<MassProperties>& mass) {
-    const Mat3 k = delta_velocity_matrix(basis, relative_position, mass);
+    return factored_delta_velocity_matrix(delta_velocity_matrix(basis, relative_position, mass));
+}
+
+FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Mat3& k) {
     // Gaussian elimination with complete pivoting (math/full_pivot_lu.hpp): K is singular only when neither
     // body can translate, and nearly so for long lever arms, where the largest pivot first keeps it accurate.
     return {k, FullPivotLu3(k)};

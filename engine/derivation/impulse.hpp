@@ -67,23 +67,24 @@ Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_p
 // direction at once. Inline, in plain doubles (math/products.hpp): the book's friction solve and every
 // accumulating method's friction rows take K from here. Written as the matrix products it is, multiplications by
 // the skew matrices' zeros included: they decide which zero an entry that sums to zero is, and the trace shows it.
+// Body i's share of K in world axes, m^-1 1 - [q_rel]x I^-1 [q_rel]x.
+IMPULSE_KERNEL Mat3 world_delta_velocity_matrix(const Vec3& relative_position, const MassProperties& mass) {
+    const Mat3 r = skew(relative_position);
+    const Mat3 turn = product(product(r, mass.inverse_inertia_world), r);
+    const double m = mass.inverse_mass;
+    Mat3 w;
+    w(0, 0) = m * 1.0 - turn(0, 0), w(1, 0) = m * 0.0 - turn(1, 0), w(2, 0) = m * 0.0 - turn(2, 0);
+    w(0, 1) = m * 0.0 - turn(0, 1), w(1, 1) = m * 1.0 - turn(1, 1), w(2, 1) = m * 0.0 - turn(2, 1);
+    w(0, 2) = m * 0.0 - turn(0, 2), w(1, 2) = m * 0.0 - turn(1, 2), w(2, 2) = m * 1.0 - turn(2, 2);
+    return w;
+}
 IMPULSE_KERNEL Mat3 delta_velocity_matrix(const Basis& basis, const std::array<Vec3, 2>& relative_position,
                                           const ContactMass& mass) {
-    // world = sum over the bodies of m^-1 1 - [q_rel]x I^-1 [q_rel]x, added entry by entry to a matrix of zeros
-    const auto share = [&](int i) {
-        const Mat3 r = skew(relative_position[i]);
-        const Mat3 turn = product(product(r, mass[i]->inverse_inertia_world), r);
-        const double m = mass[i]->inverse_mass;
-        Mat3 w;
-        w(0, 0) = m * 1.0 - turn(0, 0), w(1, 0) = m * 0.0 - turn(1, 0), w(2, 0) = m * 0.0 - turn(2, 0);
-        w(0, 1) = m * 0.0 - turn(0, 1), w(1, 1) = m * 1.0 - turn(1, 1), w(2, 1) = m * 0.0 - turn(2, 1);
-        w(0, 2) = m * 0.0 - turn(0, 2), w(1, 2) = m * 0.0 - turn(1, 2), w(2, 2) = m * 1.0 - turn(2, 2);
-        return w;
-    };
-    Mat3 world = share(0);
+    // The bodies' shares added entry by entry to a matrix of zeros, as Eigen sums them.
+    Mat3 world = world_delta_velocity_matrix(relative_position[0], *mass[0]);
     for (int k = 0; k < 9; ++k) world.data()[k] = 0.0 + world.data()[k];
     if (mass[1]) {
-        const Mat3 w = share(1);
+        const Mat3 w = world_delta_velocity_matrix(relative_position[1], *mass[1]);
         for (int k = 0; k < 9; ++k) world.data()[k] += w.data()[k];
     }
     return product(transposed_product(basis.contact_to_world, world), basis.contact_to_world);
@@ -99,6 +100,7 @@ struct FactoredDeltaVelocityMatrix {
     FullPivotLu3 factors;  // P K Q = L U
 };
 
+FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Mat3& k);
 FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
                                                            const PerBody<MassProperties>& mass);
 

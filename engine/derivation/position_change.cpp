@@ -78,27 +78,25 @@ std::optional<double> maximum_angular_move(const AngularLimitSettings& settings,
 
 }  // namespace
 
-AngularLimit angular_limit(MoveSplit& moves, const AngularLimitSettings& settings, const Vec3& normal,
+LimitedMoves angular_limit(const MoveSplit& moves, const AngularLimitSettings& settings, const Vec3& normal,
                            const PerBody<Vec3>& relative_position, const UnitImpulseChain& chain,
                            OrientationUpdate orientation_update) {
-    AngularLimit limit;
-    limit.policy = settings.policy;
-    limit.factor = settings.factor;
-    limit.before = moves;
+    LimitedMoves out{moves, {settings.policy, settings.factor, {}, {}, moves}};
+    AngularLimit& limit = out.limit;
     for (int i = 0; i < 2; ++i) {
         if (!moves.angular_move[i]) continue;
         limit.maximum[i] =
             maximum_angular_move(settings, normal, *relative_position[i], *chain.bodies[i], orientation_update);
-        double& angular = *moves.angular_move[i];
-        double& linear = *moves.linear_move[i];
+        const double angular = *moves.angular_move[i];
         limit.applied[i] = limit.maximum[i] && std::abs(angular) > *limit.maximum[i];
         if (*limit.applied[i]) {
-            const double total_move = linear + angular;
-            angular = std::copysign(*limit.maximum[i], angular);
-            if (chain.bodies[i]->linear_component > 0.0) linear = total_move - angular;
+            const double total_move = *moves.linear_move[i] + angular;
+            out.moves.angular_move[i] = std::copysign(*limit.maximum[i], angular);
+            if (chain.bodies[i]->linear_component > 0.0)
+                out.moves.linear_move[i] = total_move - *out.moves.angular_move[i];
         }
     }
-    return limit;
+    return out;
 }
 
 PositionChange position_change(const MoveSplit& moves, const Vec3& normal, const UnitImpulseChain& chain) {

@@ -60,12 +60,18 @@ struct AngularLimit {
     bool operator==(const AngularLimit&) const = default;
 };
 
-// Cuts back any angular move beyond its maximum and gives the excess to the same body's linear move, so
-// each body's total move along the normal is kept and only its split changes ("we can transfer some of the
+// The moves after the angular limit, and the limit's record.
+struct LimitedMoves {
+    MoveSplit moves;
+    AngularLimit limit;
+};
+
+// Cuts back any angular move of `moves` beyond its maximum and gives the excess to the same body's linear move,
+// so each body's total move along the normal is kept and only its split changes ("we can transfer some of the
 // burden from them onto the corresponding linearMove component"). A body that cannot translate (inverse mass
 // 0, e.g. a pivot) takes no linear move: its excess is dropped, and the contact keeps that much penetration
 // for a later iteration. (The reference engine would translate such an "infinitely heavy" body.)
-AngularLimit angular_limit(MoveSplit& moves, const AngularLimitSettings& settings, const Vec3& normal,
+LimitedMoves angular_limit(const MoveSplit& moves, const AngularLimitSettings& settings, const Vec3& normal,
                            const PerBody<Vec3>& relative_position, const UnitImpulseChain& chain,
                            OrientationUpdate orientation_update);
 

@@ -1,7 +1,5 @@
 #include "methods/contact_rows.hpp"
 
-#include "methods/solver_common.hpp"
-
 namespace impulse {
 
 std::pmr::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass,
@@ -22,7 +20,7 @@ void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>
     }
 }
 
-bool fill_contact_row(ContactRow& row, const RowPreparation& d, const SolverBody* bodies, bool friction_rows) {
+bool fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBody* bodies, bool friction_rows) {
     row.contact = d.contact;
     ContactMass mass{nullptr, nullptr};
     for (int i = 0; i < 2; ++i) {
@@ -34,7 +32,8 @@ bool fill_contact_row(ContactRow& row, const RowPreparation& d, const SolverBody
     row.friction = friction_rows ? d.friction : 0.0;
     // K_nn is step 3's d, so a rigid normal row visited alone gives the chapter's impulse g = v / d (14.3); the
     // friction rows read the rest of K (derivation/impulse.hpp), as the book's friction solve does.
-    const double k_nn = delta_velocity_per_unit_impulse(d.basis.normal, row.anchor, mass);
+    const double k_nn = d.delta_velocity_per_unit_impulse;
+    if (!(k_nn > 0.0)) return false;  // inert: never visited
     row.normal_response = k_nn;
     row.normal_mass = 1.0 / k_nn;
     if (row.friction != 0.0) {
@@ -52,22 +51,19 @@ bool fill_contact_row(ContactRow& row, const RowPreparation& d, const SolverBody
             row.tangent_mass = {k_11 > 0.0 ? 1.0 / k_11 : 0.0, 0.0, k_22 > 0.0 ? 1.0 / k_22 : 0.0};
         }
     }
-    return k_nn > 0.0;
+    return true;
 }
 
-ActiveRows::ActiveRows(std::size_t capacity, std::pmr::memory_resource* scratch)
-    : rows(scratch), contacts(scratch), keys(scratch) {
+ActiveRows::ActiveRows(std::size_t capacity, std::pmr::memory_resource* scratch) : rows(scratch), keys(scratch) {
     rows.reserve(capacity);
-    contacts.reserve(capacity);
     keys.reserve(capacity);
 }
 
-ContactRow* ActiveRows::add(const RowPreparation& contact, const SolverBody* bodies) {
+ContactRow* ActiveRows::add(const PreparedContact& contact, const SolverBody* bodies) {
     if (!fill_contact_row(rows.emplace_back(), contact, bodies)) {
         rows.pop_back();
         return nullptr;
     }
-    contacts.push_back(contact.contact);
     keys.push_back(contact_key(contact));
     return &rows.back();
 }

@@ -8,8 +8,8 @@
 // visit needs, copied once per frame from the contact's preparation, and a SolverBody per body holding its
 // velocities and mass. The rows derive nothing themselves: step 3's d, K's entries, step 4's point velocity and
 // step 7's apply are the derivation's own inline forms (derivation/*.hpp), the ones the book's methods use.
-// The recorder sees the same numbers through the same functions: a method runs one loop templated on whether
-// it records, so recording costs nothing when off and changes no bit when on.
+// A method runs one loop and reports each visit only when the recorder keeps the frame (record/visits.hpp):
+// recording costs a branch per visit when off, and changes no bit when on.
 //
 // The normal row (K = the 3x3 velocity change per unit impulse in contact coordinates, K_nn = d of step 3):
 //   delta lambda_n = normal_mass mass_scale (target - v_n) - impulse_scale lambda_n,   normal_mass = 1 / d
@@ -61,12 +61,10 @@
 #include "memory/contact_memory.hpp"
 #include "record/iteration_records.hpp"
 #include "preparation/prepared_contact.hpp"
-#include "preparation/row_preparation.hpp"
 
 #include <cmath>
 #include <memory_resource>
 #include <span>
-#include <type_traits>
 #include <vector>
 
 // The row functions are small and called from every visit of every sweep: they are always inlined, so a sweep
@@ -128,19 +126,18 @@ struct ContactRow {
 // other entries derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes)
 // only the normal row is filled. Returns whether an impulse can move the contact at all (K_nn > 0); a contact that
 // cannot is never visited. (In place: a row is 264 bytes, and a frame builds one per contact.)
-bool fill_contact_row(ContactRow& row, const RowPreparation& contact, const SolverBody* bodies,
+bool fill_contact_row(ContactRow& row, const PreparedContact& contact, const SolverBody* bodies,
                       bool friction_rows = true);
 
-// The rows of the frame's contacts that an impulse can move, each with its contact and its contact's key in the
-// contact memory (RememberedTotals, remember_totals): what the warm-started methods build first, in the frame's
-// scratch (FrameContext::scratch).
+// The rows of the frame's contacts that an impulse can move, each with its contact's key in the contact memory
+// (RememberedTotals, remember_totals): what the warm-started methods build first, in the frame's scratch
+// (FrameContext::scratch).
 struct ActiveRows {
     ActiveRows(std::size_t capacity, std::pmr::memory_resource* scratch);
     // Adds the row of `contact`, or nothing when no impulse can move it: the row, or null.
-    ContactRow* add(const RowPreparation& contact, const SolverBody* bodies);
+    ContactRow* add(const PreparedContact& contact, const SolverBody* bodies);
 
     std::pmr::vector<ContactRow> rows;  // in contact order
-    std::pmr::vector<int> contacts;     // each row's contact, as one list (the recorder's contacts_visited)
     std::pmr::vector<ContactKey> keys;  // each row's contact's key in the ContactMemory
 };
 
@@ -153,10 +150,9 @@ struct NormalTarget {
 
 // The normal velocity a rigid row asks for all frame: step 5's desired delta v on top of the separating velocity
 // it was judged on, v_s + desired delta v (the bounce, and Baumgarte's term when it is on).
-inline double prepared_normal_velocity(const RowVelocity& v) {
-    return v.separating_velocity + v.desired_delta_velocity;
+inline double prepared_normal_velocity(const PreparedContact& c) {
+    return c.contact_velocity.x() + c.desired_terms.desired_delta_velocity;
 }
-
 // A body's point velocity at the row's anchor (step 4's, 9.5), world, added to `out` with `sign`.
 IMPULSE_ROW_FUNCTION void add_point_velocity(const SolverBody& b, const Vec3& r, double sign, double* out) {
     const Vec3 v = point_velocity(b.velocity, b.angular_velocity, r);
@@ -300,6 +296,29 @@ IMPULSE_ROW_FUNCTION RowVisit solve_normal_row(const ContactRow& row, double nor
     return v;
 }
 
+// A visit as a method keeps it for the recorder while its loop runs: the velocity it read and its totals. Kept in a
+// buffer and reported once the sweep is over, since a call to the recorder inside the loop would keep every value
+// of the visit alive across it (in memory) on every visit, recorded or not.
+struct KeptVisit {
+    Axes velocity;
+    RowVisit totals;
+};
+
+// Keeps a visit, value by value: a copy of the structs whole would keep them in memory through the whole loop.
+IMPULSE_ROW_FUNCTION void keep_visit(KeptVisit& kept, const Axes& velocity, const RowVisit& v) {
+    const auto copy = [](Axes& to, const Axes& from) {
+        to.n = from.n;
+        to.t1 = from.t1;
+        to.t2 = from.t2;
+    };
+    copy(kept.velocity, velocity);
+    copy(kept.totals.before, v.before);
+    copy(kept.totals.unclamped, v.unclamped);
+    copy(kept.totals.after, v.after);
+    kept.totals.pushed_only = v.pushed_only;
+    kept.totals.sliding = v.sliding;
+}
+
 // A total from elsewhere (last frame's, re-projected on this frame's basis) put inside the limits a total
 // obeys: lambda_n >= 0 and |lambda_t| <= mu lambda_n (scaled back: there is no slip to oppose yet).
 inline RowVisit within_limits(const Vec3& total, double friction) {
@@ -323,10 +342,8 @@ IMPULSE_ROW_FUNCTION Vec3 world_impulse(const ContactRow& row, const Axes& a) {
     return to_world(row.basis, vector_of(a));
 }
 
-// Step 7 for one body (derivation/velocity_change.hpp): adds g m^-1 and I^-1 (r x g) to it; with `Change` a
-// VelocityChange*, records exactly what was added as its body `slot`'s values.
-template <typename Change>
-IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, const Vec3& impulse, int slot, Change change) {
+// Step 7 for one body (derivation/velocity_change.hpp): adds g m^-1 and I^-1 (r x g) to it.
+IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, const Vec3& impulse) {
     const BodyVelocityChange c = body_velocity_change(impulse, r, body.mass);
     body.velocity.x() += c.velocity_change.x();
     body.velocity.y() += c.velocity_change.y();
@@ -334,20 +351,13 @@ IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, const V
     body.angular_velocity.x() += c.rotation_change.x();
     body.angular_velocity.y() += c.rotation_change.y();
     body.angular_velocity.z() += c.rotation_change.z();
-    if constexpr (!std::is_same_v<Change, std::nullptr_t>) {
-        change->impulsive_torque[slot] = c.impulsive_torque;
-        change->velocity_change[slot] = c.velocity_change;
-        change->rotation_change[slot] = c.rotation_change;
-    }
 }
 
-// Step 7: applies g (world) to the row's bodies, +g to body 0 and -g to body 1. With `Change` a VelocityChange*,
-// also records exactly what was added; with std::nullptr_t, records nothing.
-template <typename Change>
-IMPULSE_ROW_FUNCTION void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse, Change change) {
-    apply_to_body(bodies[row.body[0]], row.anchor[0], impulse, 0, change);
+// Step 7: applies g (world) to the row's bodies, +g to body 0 and -g to body 1.
+IMPULSE_ROW_FUNCTION void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse) {
+    apply_to_body(bodies[row.body[0]], row.anchor[0], impulse);
     if (row.body[1] >= 0)
-        apply_to_body(bodies[row.body[1]], row.anchor[1], Vec3(-impulse.x(), -impulse.y(), -impulse.z()), 1, change);
+        apply_to_body(bodies[row.body[1]], row.anchor[1], Vec3(-impulse.x(), -impulse.y(), -impulse.z()));
 }
 
 // Keeps `after` as the row's total, field by field (a copy of the struct can become one 16-byte load of values

@@ -1,19 +1,20 @@
 #pragma once
 // One signature for every resolution method, as solver2d gives every solver one (s2Solve_X(world, context)):
 // a method receives the frame (its bodies, its contacts prepared by steps 1-5, the settings, the forces, the
-// recorder and the contact memory), does its work, reports every iteration to the recorder, ends its phase
+// recorder and the contact memory), does its work, stamps every visit's contact (FrameContext::touched),
+// reports every visit to the recorder when it keeps the frame (record/visits.hpp), ends its phase
 // (recorder.end_phase) and says how the phase ended. Each method is one file in engine/methods/ defining one
 // of the functions below; engine/methods/method_table.hpp maps each settings value to its function, its scope
 // and the settings it reads. Nothing else names a method: adding one is its file, its enumerator in
 // settings/settings.hpp, one row of the table, and its section in docs/methods.md.
 
+#include "body/integrate.hpp"
 #include "body/rigid_body.hpp"
 #include "memory/contact_memory.hpp"
-#include "record/recorder.hpp"
 #include "preparation/prepared_contact.hpp"
-#include "preparation/row_preparation.hpp"
+#include "record/last_touch.hpp"
+#include "record/recorder.hpp"
 #include "settings/settings.hpp"
-#include "body/integrate.hpp"
 
 #include <atomic>
 #include <memory_resource>
@@ -31,14 +32,13 @@ struct Forces {
 
 // One frame as a method sees it.
 struct FrameContext {
-    std::vector<RigidBody>& bodies;          // changed in place
-    std::vector<PreparedContact>& contacts;  // steps 1-5 and the bookkeeping the book's loops update; empty when
-                                             // only the rows were prepared (methods/method_table.hpp, ContactsRead)
-    std::span<const RowPreparation> rows;    // per contact as prepared, what the accumulating methods' rows read
-                                             // (empty when neither method reads rows)
-    std::span<const MassProperties> mass;    // per body, as the contacts were prepared with
+    std::vector<RigidBody>& bodies;        // changed in place
+    std::span<PreparedContact> contacts;   // steps 1-5, and the bookkeeping the book's loops update
+    std::span<const MassProperties> mass;  // per body, as the contacts were prepared with
     const ResolverSettings& settings;
     Recorder& recorder;
+    bool keeping;           // the recorder keeps this frame: report every visit (recorder.*_visit), else none
+    LastTouch* touch;       // stamped with every visit's contact (may be null)
     ContactMemory* memory;  // warm-starting methods' impulses from last frame, replaced at the end (may be null)
     Forces forces;
     // Where a method takes its buffers for the frame (memory/frame_arena.hpp; the heap when no world keeps one).
@@ -52,6 +52,11 @@ struct FrameContext {
     bool stop_requested() {
         if (stop && stop->load(std::memory_order_relaxed)) cut_short = true;
         return cut_short;
+    }
+
+    // A visit of `contact`, for LastTouch.
+    void touched(int contact) const {
+        if (touch) touch->touched(contact);
     }
 };
 

@@ -22,20 +22,11 @@ enum class MethodScope {
                      // step does not integrate first and no position phase runs (recorded empty, `none`)
 };
 
-// What a method reads of the frame's contacts. When nothing records and neither of the frame's methods reads the
-// full preparation, the resolver prepares only what the rows read (resolver/resolver.cpp).
-enum class ContactsRead {
-    prepared,           // the full preparation (steps 1-5 with their intermediates) and its bookkeeping
-    rows,               // steps 1 and 2 as its rows read them (preparation/row_preparation.hpp), unless it records
-    rows_and_velocity,  // the same with steps 4 and 5 (a rigid row's target)
-};
-
 template <typename Id>
 struct MethodRow {
     Id id;
     std::string_view name;
     MethodScope scope;
-    ContactsRead contacts;
     MethodFunction solve;
     // The settings the method reads (keys as in scene files), beyond those every frame reads (duration,
     // orientation_update, the restitution cut-off and the acceleration refinements of steps 4 and 5).
@@ -75,20 +66,18 @@ inline constexpr std::array<std::string_view, 4> split_impulse{"velocity_epsilon
 }  // namespace method_reads
 
 inline constexpr std::array<MethodRow<VelocityMethod>, 4> velocity_methods{{
-    {VelocityMethod::worst_first, "worst_first", MethodScope::velocity_phase, ContactsRead::prepared,
-     worst_first_velocities, method_reads::worst_first,
+    {VelocityMethod::worst_first, "worst_first", MethodScope::velocity_phase, worst_first_velocities,
+     method_reads::worst_first,
      "the book: resolve the contact with the largest desired delta v, update the others, repeat",
      "iterations_per_contact", [](ResolverSettings& s, int n) { s.iterations_per_contact = n; }},
-    {VelocityMethod::sequential_sweep, "sequential_sweep", MethodScope::velocity_phase, ContactsRead::prepared,
-     sequential_sweep_velocities, method_reads::sequential_sweep,
-     "the book's impulse on every contact in index order, `sweeps` times", "sweeps",
+    {VelocityMethod::sequential_sweep, "sequential_sweep", MethodScope::velocity_phase, sequential_sweep_velocities,
+     method_reads::sequential_sweep, "the book's impulse on every contact in index order, `sweeps` times", "sweeps",
      [](ResolverSettings& s, int n) { s.sweeps = n; }},
     {VelocityMethod::projected_gauss_seidel, "projected_gauss_seidel", MethodScope::velocity_phase,
-     ContactsRead::rows_and_velocity, projected_gauss_seidel_velocities, method_reads::projected_gauss_seidel,
+     projected_gauss_seidel_velocities, method_reads::projected_gauss_seidel,
      "sequential impulses: accumulated impulses clamped to push only and to the friction cone, warm started", "sweeps",
      [](ResolverSettings& s, int n) { s.sweeps = n; }},
-    {VelocityMethod::soft_step, "soft_step", MethodScope::whole_step, ContactsRead::rows, soft_step,
-     method_reads::soft_step,
+    {VelocityMethod::soft_step, "soft_step", MethodScope::whole_step, soft_step, method_reads::soft_step,
      "Box2D v3: sub-steps of soft contacts, relax, restitution; it integrates the bodies itself", "soft_step.substeps",
      [](ResolverSettings& s, int n) {
          s.soft_step.substeps = n;
@@ -97,19 +86,17 @@ inline constexpr std::array<MethodRow<VelocityMethod>, 4> velocity_methods{{
 }};
 
 inline constexpr std::array<MethodRow<PositionMethod>, 6> position_methods{{
-    {PositionMethod::linear_projection, "linear_projection", MethodScope::position_phase, ContactsRead::prepared,
-     linear_projection_positions, method_reads::linear_projection,
-     "worst first: move the bodies apart along the normal, by inverse mass"},
-    {PositionMethod::nonlinear_projection, "nonlinear_projection", MethodScope::position_phase, ContactsRead::prepared,
+    {PositionMethod::linear_projection, "linear_projection", MethodScope::position_phase, linear_projection_positions,
+     method_reads::linear_projection, "worst first: move the bodies apart along the normal, by inverse mass"},
+    {PositionMethod::nonlinear_projection, "nonlinear_projection", MethodScope::position_phase,
      nonlinear_projection_positions, method_reads::nonlinear_projection,
      "the book, worst first: move and turn the bodies by their linear and angular inertia"},
-    {PositionMethod::velocity_based, "velocity_based", MethodScope::position_phase, ContactsRead::prepared,
-     velocity_based_positions, method_reads::nonlinear_projection,
+    {PositionMethod::velocity_based, "velocity_based", MethodScope::position_phase, velocity_based_positions,
+     method_reads::nonlinear_projection,
      "worst first: move the bodies back along their paths, then project what remains"},
     {PositionMethod::relaxation,
      "relaxation",
      MethodScope::position_phase,
-     ContactsRead::prepared,
      relaxation_positions,
      method_reads::relaxation,
      "passes, deepest first: remove a fraction of each contact's penetration per visit",
@@ -119,7 +106,6 @@ inline constexpr std::array<MethodRow<PositionMethod>, 6> position_methods{{
     {PositionMethod::split_impulse,
      "split_impulse",
      MethodScope::position_phase,
-     ContactsRead::rows,
      split_impulse_positions,
      method_reads::split_impulse,
      "a push solve on pseudo-velocities that move the bodies and are then discarded",
@@ -129,7 +115,6 @@ inline constexpr std::array<MethodRow<PositionMethod>, 6> position_methods{{
     {PositionMethod::none,
      "none",
      MethodScope::position_phase,
-     ContactsRead::rows,
      no_positions,
      {},
      "no position phase: only velocities (Baumgarte's step-5 bias, a soft contact) separate the bodies"},

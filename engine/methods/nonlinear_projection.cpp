@@ -8,18 +8,24 @@
 
 namespace impulse {
 
-PositionResolution nonlinear_projection(const PreparedContact& contact, double amount,
-                                        const AngularLimitSettings& limit, OrientationUpdate orientation_update) {
-    const ContactPreparation& d = contact.derivation;
+PositionResolution nonlinear_projection(const PreparedContact& contact, const PerBody<MassProperties>& mass,
+                                        double amount, const AngularLimitSettings& limit,
+                                        OrientationUpdate orientation_update) {
+    const Vec3& normal = contact.basis.normal;
+    const PerBody<Vec3> q_rel = relative_positions(contact);
+    // "To resolve penetration we use exactly the same sequence of equations": step 3's chain, whose d the
+    // preparation computed by the same functions.
+    const UnitImpulseChain chain = delta_velocity_per_unit_impulse(normal, q_rel, mass);
     PositionResolution r;
     r.method = PositionMethod::nonlinear_projection;
     r.penetration = contact.penetration;
     r.amount = amount;
-    r.inertia = penetration_inertia(d.unit_impulse_chain);
-    r.moves = move_split(amount, r.inertia);
-    r.angular_limit =
-        angular_limit(r.moves, limit, d.normal, d.relative_position, d.unit_impulse_chain, orientation_update);
-    r.change = position_change(r.moves, d.normal, d.unit_impulse_chain);
+    r.inertia = penetration_inertia(chain);
+    const LimitedMoves limited =
+        angular_limit(move_split(amount, r.inertia), limit, normal, q_rel, chain, orientation_update);
+    r.moves = limited.moves;
+    r.angular_limit = limited.limit;
+    r.change = position_change(r.moves, normal, chain);
     return r;
 }
 
@@ -27,7 +33,8 @@ namespace {
 
 PositionResolution project(const PreparedContact& contact, double amount, const PositionPhaseState& /*state*/,
                            const FrameContext& frame) {
-    return nonlinear_projection(contact, amount, frame.settings.angular_limit, frame.settings.orientation_update);
+    return nonlinear_projection(contact, mass_of(contact, frame.mass), amount, frame.settings.angular_limit,
+                                frame.settings.orientation_update);
 }
 
 }  // namespace

@@ -15,7 +15,7 @@ namespace impulse {
 
 // Whether any non-inert contact is still above the epsilon (tells "resolved" from the other stop reasons);
 // one scan, once per phase.
-bool any_penetration_above(const std::vector<PreparedContact>& contacts, double epsilon);
+bool any_penetration_above(std::span<const PreparedContact> contacts, double epsilon);
 
 // What the position phase carries from one iteration to the next besides the contacts.
 struct PositionPhaseState {
@@ -28,16 +28,15 @@ using Projection = PositionResolution (*)(const PreparedContact& contact, double
 
 // Whether a method can move a contact at all (linear projection cannot move bodies that cannot translate,
 // and choosing such a contact again would only spend iterations).
-using Movable = bool (*)(const PreparedContact& contact);
+using Movable = bool (*)(const PreparedContact& contact, std::span<const MassProperties> mass);
 
 // The phase's chooser (worst_first_selector.hpp): every non-inert contact the method can move, by penetration.
 WorstFirstSelector penetration_selector(const FrameContext& frame, Movable movable);
 
 // Removes `amount` of contact `chosen`'s penetration with `projection`, moves its bodies, updates the
-// penetration of every contact sharing them (telling `selector`), and reports the iteration.
+// penetration of every contact sharing them (telling `selector`), and reports the visit.
 void resolve_penetration(FrameContext& frame, Projection projection, PositionPhaseState& state,
-                         WorstFirstSelector& selector, int chosen, double amount, int iteration,
-                         std::optional<int> pass);
+                         WorstFirstSelector& selector, int chosen, double amount, std::optional<int> pass);
 
 // The book's position phase with the given projection: worst first until nothing is above the epsilon.
 PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, Movable movable);

@@ -1,5 +1,5 @@
-#include "methods/bookkeeping.hpp"
 #include "methods/phases.hpp"
+#include "preparation/bookkeeping.hpp"
 
 #include <algorithm>
 
@@ -14,46 +14,40 @@ double penetration_of(const PreparedContact& c) {
 }  // namespace
 
 WorstFirstSelector penetration_selector(const FrameContext& frame, Movable movable) {
-    const std::vector<PreparedContact>& contacts = frame.contacts;
+    const std::span<const PreparedContact> contacts = frame.contacts;
     std::vector<char> eligible(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i)
-        eligible[i] = !contacts[i].derivation.inert && (!movable || movable(contacts[i]));
+        eligible[i] = !contacts[i].inert && (!movable || movable(contacts[i], frame.mass));
     return WorstFirstSelector(frame.settings.worst_first_search, contacts, frame.bodies.size(), penetration_of,
                               std::move(eligible));
 }
 
-bool any_penetration_above(const std::vector<PreparedContact>& contacts, double epsilon) {
+bool any_penetration_above(std::span<const PreparedContact> contacts, double epsilon) {
     return std::any_of(contacts.begin(), contacts.end(),
-                       [epsilon](const PreparedContact& c) { return !c.derivation.inert && c.penetration > epsilon; });
+                       [epsilon](const PreparedContact& c) { return !c.inert && c.penetration > epsilon; });
 }
 
 void resolve_penetration(FrameContext& frame, Projection projection, PositionPhaseState& state,
-                         WorstFirstSelector& selector, int chosen, double amount, int iteration,
-                         std::optional<int> pass) {
+                         WorstFirstSelector& selector, int chosen, double amount, std::optional<int> pass) {
     const ResolverSettings& settings = frame.settings;
-    std::vector<PreparedContact>& contacts = frame.contacts;
-    const PreparedContact& contact = contacts[static_cast<std::size_t>(chosen)];
-    PositionIteration record{iteration,
-                             chosen,
-                             contact.penetration,
-                             settings.position_epsilon,
-                             pass,
-                             projection(contact, amount, state, frame),
-                             {}};
-    const std::array<int, 2> moved = contact.derivation.bodies;
-    const PositionChange& change = record.resolution->change;
+    const PreparedContact& contact = frame.contacts[static_cast<std::size_t>(chosen)];
+    const PositionResolution resolution = projection(contact, amount, state, frame);
+    frame.touched(chosen);
+    if (frame.keeping)
+        frame.recorder.position_visit(
+            {.contact = chosen, .pass = pass, .epsilon = settings.position_epsilon, .resolution = &resolution});
+    const std::array<int, 2> moved = contact.bodies;
+    const PositionChange& change = resolution.change;
     for (int i = 0; i < 2; ++i) {
         if (moved[i] == world_body) continue;
-        if (record.resolution->rewind)
-            state.rewound_time[static_cast<std::size_t>(moved[i])] += record.resolution->rewind->time;
+        if (resolution.rewind) state.rewound_time[static_cast<std::size_t>(moved[i])] += resolution.rewind->time;
         RigidBody& body = frame.bodies[static_cast<std::size_t>(moved[i])];
         body.position += *change.linear_change[i];
         body.orientation = rotated(body.orientation, *change.angular_change[i], settings.orientation_update);
     }
     const std::span<const int> sharing = selector.sharing(moved);
-    update_penetrations(contacts, sharing, moved, change, frame.recorder.wants_updates() ? &record.updates : nullptr);
+    update_penetrations(frame.contacts, sharing, moved, change);
     selector.values_changed(sharing);
-    frame.recorder.position_iteration(record);
 }
 
 PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, Movable movable) {
@@ -67,8 +61,7 @@ PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, M
         const std::optional<int> chosen = selector.worst(settings.position_epsilon);
         if (!chosen) break;
         const double penetration = frame.contacts[static_cast<std::size_t>(*chosen)].penetration;
-        resolve_penetration(frame, projection, state, selector, *chosen, penetration, outcome.iterations_used,
-                            std::nullopt);
+        resolve_penetration(frame, projection, state, selector, *chosen, penetration, std::nullopt);
         ++outcome.iterations_used;
     }
     outcome.stop = selector.worst(settings.position_epsilon)                          ? StopReason::iteration_limit

@@ -24,21 +24,16 @@
 // velocity epsilon, |K (lambda_after - lambda_before)| (a norm: no basis decides it); iterations_per_contact
 // and velocity_iterations do not apply.
 //
-// Recorded per visit (and per warm start, stage warm_start), only when the recorder keeps iterations (the loop
-// is compiled twice from one template, the same arithmetic both ways): a VelocityIteration with sweep
-// {0, pass, stage}, accumulated {before, unclamped, after, clamp}, and a resolution whose contact_velocity is
-// the velocity read from the bodies, whose desired_delta_velocity is step 5 at preparation with
-// separating_velocity = the current v_n and desired_delta_velocity = target - v_n (the value compared with the
-// epsilon), and whose impulse / impulse_world is the increment applied (model frictionless,
-// static_friction, or sliding_friction when the cone clamped; no friction_solve: that is the book's 3x3
-// solve, not this one). The updates list is filled as worst-first fills it (the linearised bookkeeping of
-// every contact sharing a body), but with desired delta v read in this method's terms, target - v_n.
+// Reported per visit (and per warm start, stage warm_start), when the recorder keeps the frame: the place
+// {0, pass, stage}, the totals {before, unclamped, after, clamp}, the contact velocity read from the bodies, and
+// step 5 as this method judges the visit: the prepared step 5 with separating_velocity = the current v_n and
+// desired_delta_velocity = target - v_n (the value compared with the epsilon). The recorder builds the impulse
+// (the increment applied, sliding when the cone clamped; no friction_solve, which is the book's 3x3 solve) and
+// step 7 from them, and the updates of the contacts sharing a body by the book's linearised formulas with desired
+// delta v in this method's terms, target - v_n (record/visit_records.hpp): this method keeps no bookkeeping.
 
 #include "methods/contact_rows.hpp"
-#include "methods/solver_common.hpp"
 #include "methods/method.hpp"
-#include "methods/bookkeeping.hpp"
-#include "methods/worst_first_selector.hpp"
 
 #include <algorithm>
 
@@ -46,170 +41,128 @@ namespace impulse {
 
 namespace {
 
-ImpulseModel model_of(double friction, ImpulseClamp clamp) {
-    if (friction == 0.0) return ImpulseModel::frictionless;
-    return clamp == ImpulseClamp::friction || clamp == ImpulseClamp::both ? ImpulseModel::sliding_friction
-                                                                          : ImpulseModel::static_friction;
-}
-
 class ProjectedGaussSeidel {
 public:
     explicit ProjectedGaussSeidel(FrameContext& frame)
         : frame_(frame),
           bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          active_(frame.rows.size(), frame.scratch),
+          active_(frame.contacts.size(), frame.scratch),
           targets_(frame.scratch),
-          warm_started_(frame.scratch) {
-        targets_.reserve(frame.rows.size());
-        for (const RowPreparation& d : frame.rows) {
-            ContactRow* row = active_.add(d, bodies_.data());
-            if (!row) continue;                         // nothing can move it: no visits
-            const RowVelocity& velocity = *d.velocity;  // prepared with steps 4 and 5 (the method table says so)
-            row->slip_offset = velocity.tangential_acceleration_velocity;  // step 4's term: 0 with the refinement off
-            targets_.push_back(prepared_normal_velocity(velocity));
+          kept_(frame.scratch) {
+        targets_.reserve(frame.contacts.size());
+        for (const PreparedContact& c : frame.contacts) {
+            ContactRow* row = active_.add(c, bodies_.data());
+            if (!row) continue;                                     // nothing can move it: no visits
+            row->slip_offset = c.tangential_acceleration_velocity;  // step 4's term: 0 with the refinement off
+            targets_.push_back(prepared_normal_velocity(c));
         }
+        if (frame.keeping) kept_.resize(active_.rows.size());
     }
 
     int active_count() const { return static_cast<int>(active_.rows.size()); }
 
     // Last frame's totals, re-projected and clamped, applied before the first sweep. Returns how many.
-    template <bool recording>
     int warm_start(const ContactMemory& memory) {
         RememberedTotals remembered(memory, frame_.scratch);
-        int started = 0;
         for (std::size_t r = 0; r < active_.rows.size(); ++r) {
             const std::optional<RowVisit> total = remembered.of(active_.rows[r], active_.keys[r]);
             if (!total) continue;
-            Axes velocity;
-            if constexpr (recording) velocity = row_velocity(active_.rows[r], bodies_.data());
-            visit<recording>(r, *total, SweepPlace{0, 0, SolverStage::warm_start}, velocity);
-            warm_started_.push_back(active_.rows[r].contact);
-            ++started;
+            // The warm start has no target; the recorder is shown the velocity it started from.
+            if (frame_.keeping)
+                report(r, {row_velocity(active_.rows[r], bodies_.data()), *total},
+                       SweepPlace{0, 0, SolverStage::warm_start});
+            apply(active_.rows[r], bodies_.data(), *total);
+            ++iterations_;
         }
-        return started;
+        return iterations_;
     }
 
     // One sweep over every active contact in index order; returns the largest |K (after - before)|^2 a visit
-    // made at its own contact.
-    template <bool recording>
+    // made at its own contact. The loop reads its data through locals and keeps its visits for the recorder in a
+    // buffer (KeptVisit), so that recording or not, it makes no call.
     double sweep(int pass) {
+        ContactRow* const rows = active_.rows.data();
+        const std::size_t count = active_.rows.size();
+        SolverBody* const bodies = bodies_.data();
+        const double* const targets = targets_.data();
+        KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
         double largest = 0.0;
-        SolverBody* bodies = bodies_.data();
-        for (std::size_t r = 0; r < active_.rows.size(); ++r) {
-            const Axes velocity = row_velocity(active_.rows[r], bodies);
-            const RowVisit v = solve_rows(active_.rows[r], velocity, NormalTarget{targets_[r]});
-            largest = std::max(largest, velocity_change_squared(active_.rows[r], v.increment()));
-            visit<recording>(r, v, SweepPlace{0, pass, SolverStage::solve}, velocity);
+        for (std::size_t r = 0; r < count; ++r) {
+            const Axes velocity = row_velocity(rows[r], bodies);
+            const RowVisit v = solve_rows(rows[r], velocity, NormalTarget{targets[r]});
+            if (kept) [[unlikely]]
+                keep_visit(kept[r], velocity, v);
+            largest = std::max(largest, velocity_change_squared(rows[r], v.increment()));
+            apply(rows[r], bodies, v);
         }
+        iterations_ += static_cast<int>(count);
+        if (kept)
+            for (std::size_t r = 0; r < count; ++r) report(r, kept[r], SweepPlace{0, pass, SolverStage::solve});
         return largest;
     }
 
-    // Writes the velocities back to the bodies, remembers the totals.
+    // Writes the velocities back to the bodies, remembers the totals. Every sweep visits every active contact in
+    // index order, so the last visit of each contact is the last sweep's (or the warm start's, without sweeps): they
+    // are stamped for LastTouch once, here, in that order.
     void finish(ContactMemory* memory) {
         store_velocities(bodies_, frame_.bodies);
         if (memory) remember_totals(active_.rows, active_.keys, *memory);
+        if (frame_.touch)
+            for (const ContactRow& row : active_.rows) frame_.touch->touched(row.contact);
     }
 
-    // The contacts of the last visits, in visit order: every sweep visits every active contact in index order.
-    std::span<const int> last_visited(int sweeps) const {
-        return sweeps > 0 ? std::span<const int>(active_.contacts) : std::span<const int>(warm_started_);
-    }
     int iterations() const { return iterations_; }
 
 private:
-    // Applies the change of row r's total, v.after - v.before, and (recording) reports the visit.
-    template <bool recording>
-    [[gnu::always_inline]] void visit(std::size_t r, const RowVisit& v, const SweepPlace& place, const Axes& velocity) {
-        ContactRow& row = active_.rows[r];
-        const Axes increment = v.increment();
-        const Vec3 impulse = world_impulse(row, increment);
+    // Applies the change of the row's total, v.after - v.before, to the bodies, and keeps the total.
+    [[gnu::always_inline]] static void apply(ContactRow& row, SolverBody* bodies, const RowVisit& v) {
+        apply_impulse(row, bodies, world_impulse(row, v.increment()));
         keep_total(row, v.after);
-        if constexpr (!recording) {
-            apply_impulse(row, bodies_.data(), impulse, nullptr);
-        } else {
-            VelocityChange change;
-            apply_impulse(row, bodies_.data(), impulse, &change);
-            record(r, v, place, vector_of(velocity), vector_of(increment), impulse, change);
-        }
-        ++iterations_;
     }
 
-    void record(std::size_t r, const RowVisit& v, const SweepPlace& place, const Vec3& velocity, const Vec3& increment,
-                const Vec3& impulse, const VelocityChange& change) {
-        const int i = active_.rows[r].contact;
-        const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(i)].derivation;
-        VelocityResolution resolution;
-        resolution.contact_velocity = velocity;
-        resolution.desired_terms = d.desired_terms;
-        resolution.desired_terms.separating_velocity = velocity.x();
-        resolution.desired_terms.desired_delta_velocity = targets_[r] - velocity.x();
-        resolution.impulse_terms.impulse_model = model_of(d.friction, v.clamp());
-        resolution.impulse_terms.impulse = increment;
-        resolution.impulse_terms.impulse_world = impulse;
-        resolution.velocity_change_terms = change;
-        VelocityIteration iteration{.iteration = iterations_,
-                                    .contact = i,
-                                    .desired_delta_velocity = targets_[r] - velocity.x(),
-                                    .epsilon = frame_.settings.velocity_epsilon,
-                                    .sweep = place,
-                                    .accumulated = v.accumulated(),
-                                    .resolution = resolution,
-                                    .updates = {}};
-        // The bookkeeping is never read by this method; it is kept up to date only to give the updates, with
-        // each contact's desired delta v in this method's terms.
-        if (!by_body_) {
-            by_body_.emplace(frame_.contacts, frame_.bodies.size());
-            target_of_.assign(frame_.contacts.size(), 0.0);
-            for (std::size_t k = 0; k < active_.rows.size(); ++k)
-                target_of_[static_cast<std::size_t>(active_.rows[k].contact)] = targets_[k];
-        }
-        by_body_->sharing(d.bodies, sharing_);
-        update_contact_velocities(frame_.contacts, sharing_, d.bodies, change, frame_.settings, &iteration.updates);
-        for (VelocityUpdate& u : iteration.updates) {
-            const double target = target_of_[static_cast<std::size_t>(u.contact)];
-            u.desired_delta_velocity_before = target - u.before.x();
-            u.desired_delta_velocity_after = target - u.after.x();
-        }
-        frame_.recorder.velocity_iteration(iteration);
+    void report(std::size_t r, const KeptVisit& kept, const SweepPlace& place) {
+        const ContactRow& row = active_.rows[r];
+        const PreparedContact& c = frame_.contacts[static_cast<std::size_t>(row.contact)];
+        VelocityVisit visit{.contact = row.contact,
+                            .sweep = place,
+                            .epsilon = frame_.settings.velocity_epsilon,
+                            .updates = DesiredFollows::row_target,
+                            .resolution = nullptr,
+                            .contact_velocity = vector_of(kept.velocity),
+                            .desired_terms = c.desired_terms,
+                            .accumulated = kept.totals.accumulated(),
+                            .friction_rows = row.friction != 0.0};
+        visit.desired_terms.separating_velocity = kept.velocity.n;
+        visit.desired_terms.desired_delta_velocity = targets_[r] - kept.velocity.n;
+        frame_.recorder.velocity_visit(visit);
     }
 
     FrameContext& frame_;
-    // Every buffer but the recorder's in the frame's scratch (FrameContext::scratch).
+    // Every buffer in the frame's scratch (FrameContext::scratch).
     std::pmr::vector<SolverBody> bodies_;
-    ActiveRows active_;                   // the rows, in contact order, with their contacts and keys
-    std::pmr::vector<double> targets_;    // per row: the normal velocity it asks for (m/s)
-    std::pmr::vector<int> warm_started_;  // the contacts warm started, in order
+    ActiveRows active_;                 // the rows, in contact order, with their contacts and keys
+    std::pmr::vector<double> targets_;  // per row: the normal velocity it asks for (m/s)
+    std::pmr::vector<KeptVisit> kept_;  // per row: its visit in the sweep under way, when the frame is recorded
     int iterations_ = 0;
-    // Only to give the recorder its updates:
-    std::optional<ContactsByBody> by_body_;
-    std::vector<double> target_of_;  // per contact
-    std::vector<int> sharing_;
 };
-
-template <bool recording>
-PhaseOutcome solve(FrameContext& frame) {
-    const ResolverSettings& settings = frame.settings;
-    ProjectedGaussSeidel pgs(frame);
-    const int warm_started = settings.warm_start && frame.memory ? pgs.warm_start<recording>(*frame.memory) : 0;
-    PhaseOutcome outcome;
-    outcome.iteration_limit = warm_started + std::max(settings.sweeps, 0) * pgs.active_count();
-    const double epsilon_squared = settings.velocity_epsilon * settings.velocity_epsilon;
-    bool converged = pgs.active_count() == 0;
-    int sweeps = 0;
-    for (; sweeps < settings.sweeps && !converged && !frame.stop_requested(); ++sweeps)
-        converged = pgs.sweep<recording>(sweeps) <= epsilon_squared;
-    pgs.finish(frame.memory);
-    if constexpr (!recording) frame.recorder.contacts_visited(pgs.last_visited(sweeps));
-    outcome.iterations_used = pgs.iterations();
-    outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
-    frame.recorder.end_phase(Phase::velocity, outcome);
-    return outcome;
-}
 
 }  // namespace
 
 PhaseOutcome projected_gauss_seidel_velocities(FrameContext& frame) {
-    return frame.recorder.wants_updates() ? solve<true>(frame) : solve<false>(frame);
+    const ResolverSettings& settings = frame.settings;
+    ProjectedGaussSeidel pgs(frame);
+    const int warm_started = settings.warm_start && frame.memory ? pgs.warm_start(*frame.memory) : 0;
+    PhaseOutcome outcome;
+    outcome.iteration_limit = warm_started + std::max(settings.sweeps, 0) * pgs.active_count();
+    const double epsilon_squared = settings.velocity_epsilon * settings.velocity_epsilon;
+    bool converged = pgs.active_count() == 0;
+    for (int sweeps = 0; sweeps < settings.sweeps && !converged && !frame.stop_requested(); ++sweeps)
+        converged = pgs.sweep(sweeps) <= epsilon_squared;
+    pgs.finish(frame.memory);
+    outcome.iterations_used = pgs.iterations();
+    outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
+    frame.recorder.end_phase(Phase::velocity, outcome);
+    return outcome;
 }
 
 }  // namespace impulse

@@ -8,14 +8,18 @@
 
 namespace impulse {
 
-PositionResolution linear_projection(const PreparedContact& contact, double amount);
+// Each takes the contact's bodies' mass as the frame prepared it (mass_of).
+PositionResolution linear_projection(const PreparedContact& contact, const PerBody<MassProperties>& mass,
+                                     double amount);
 
-PositionResolution nonlinear_projection(const PreparedContact& contact, double amount,
-                                        const AngularLimitSettings& limit, OrientationUpdate orientation_update);
+PositionResolution nonlinear_projection(const PreparedContact& contact, const PerBody<MassProperties>& mass,
+                                        double amount, const AngularLimitSettings& limit,
+                                        OrientationUpdate orientation_update);
 
 // Needs the bodies' current motion: in the book's order (positions first) that is the motion which made
 // the penetration; after the velocity phase the contact no longer closes and everything is projected.
-PositionResolution velocity_based(const PreparedContact& contact, const PerBody<BodyMotion>& motion, double duration,
+PositionResolution velocity_based(const PreparedContact& contact, const PerBody<MassProperties>& mass,
+                                  const PerBody<BodyMotion>& motion, double time_left,
                                   const AngularLimitSettings& limit, OrientationUpdate orientation_update);
 
 }  // namespace impulse

@@ -16,8 +16,8 @@ namespace {
 
 PositionResolution project(const PreparedContact& contact, double amount, const PositionPhaseState& /*state*/,
                            const FrameContext& frame) {
-    PositionResolution r =
-        nonlinear_projection(contact, amount, frame.settings.angular_limit, frame.settings.orientation_update);
+    PositionResolution r = nonlinear_projection(contact, mass_of(contact, frame.mass), amount,
+                                                frame.settings.angular_limit, frame.settings.orientation_update);
     r.method = PositionMethod::relaxation;
     return r;
 }
@@ -26,7 +26,7 @@ PositionResolution project(const PreparedContact& contact, double amount, const 
 
 PhaseOutcome relaxation_positions(FrameContext& frame) {
     const ResolverSettings& settings = frame.settings;
-    std::vector<PreparedContact>& contacts = frame.contacts;
+    std::span<PreparedContact> contacts = frame.contacts;
     PhaseOutcome outcome;
     outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));
     PositionPhaseState state{std::vector<double>(frame.bodies.size(), 0.0)};
@@ -44,7 +44,7 @@ PhaseOutcome relaxation_positions(FrameContext& frame) {
             selector.set_aside(*chosen);  // one visit per pass
             const double amount =
                 settings.relaxation.fraction * contacts[static_cast<std::size_t>(*chosen)].penetration;
-            resolve_penetration(frame, project, state, selector, *chosen, amount, outcome.iterations_used, pass);
+            resolve_penetration(frame, project, state, selector, *chosen, amount, pass);
             ++outcome.iterations_used;
         }
     }

@@ -4,20 +4,19 @@
 // two methods can be compared on the cost of finding the worst contact against the order's effect on
 // accuracy. As in the book, a contact whose desired delta v is at or below the velocity epsilon is skipped,
 // and each impulse updates the bookkeeping of every contact sharing a body (the linearised formulas of
-// methods/bookkeeping.cpp). The sweeps stop early when a whole sweep found nothing to resolve.
+// preparation/bookkeeping.hpp). The sweeps stop early when a whole sweep found nothing to resolve.
 //
 // Each impulse makes its own contact's normal velocity exactly its target and nothing else holds the total:
 // a later contact's impulse may undo it, and no impulse is ever taken back. On a stack the sweep therefore
 // converges like Gauss-Seidel on the book's unclamped system, but cannot remove an impulse that turned out
 // too large (projected Gauss-Seidel can: methods/projected_gauss_seidel.cpp).
 //
-// Recorded: one VelocityIteration per visit with sweep = {0, pass, solve}, the book's derivation values and
-// the bookkeeping updates; the iteration limit is sweeps x contacts (iterations_per_contact and
-// velocity_iterations do not apply).
+// Reported: every visit with sweep = {0, pass, solve} and the book's values; the iteration limit is
+// sweeps x contacts (iterations_per_contact and velocity_iterations do not apply).
 
 #include "methods/solver_common.hpp"
-#include "methods/bookkeeping.hpp"
 #include "methods/phases.hpp"
+#include "preparation/bookkeeping.hpp"
 
 #include <algorithm>
 
@@ -25,43 +24,40 @@ namespace impulse {
 
 namespace {
 
-bool any_desired_delta_velocity_above(const std::vector<PreparedContact>& contacts, double epsilon) {
+bool any_desired_delta_velocity_above(std::span<const PreparedContact> contacts, double epsilon) {
     return std::any_of(contacts.begin(), contacts.end(),
-                       [epsilon](const PreparedContact& c) { return !c.derivation.inert && desired_of(c) > epsilon; });
+                       [epsilon](const PreparedContact& c) { return !c.inert && desired_of(c) > epsilon; });
 }
 
 }  // namespace
 
 PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
-    std::vector<RigidBody>& bodies = frame.bodies;
-    std::vector<PreparedContact>& contacts = frame.contacts;
+    std::span<PreparedContact> contacts = frame.contacts;
     const ResolverSettings& settings = frame.settings;
-    Recorder& recorder = frame.recorder;
     PhaseOutcome outcome;
     outcome.iteration_limit = std::max(settings.sweeps, 0) * static_cast<int>(contacts.size());
-    const ContactsByBody by_body(contacts, bodies.size());  // so a visit updates its neighbours, not every contact
+    const ContactsByBody by_body(contacts, frame.bodies.size());  // so a visit updates its neighbours only
     std::vector<int> sharing;
+    FrictionMatrices k(contacts.size(), frame.scratch);
+    const VelocityRefinements refinements = velocity_refinements(settings);
     for (int pass = 0; pass < settings.sweeps; ++pass) {
         if (frame.stop_requested()) break;
         bool resolved_any = false;
         for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
             const PreparedContact& contact = contacts[static_cast<std::size_t>(i)];
-            if (contact.derivation.inert || desired_of(contact) <= settings.velocity_epsilon) continue;
-            VelocityIteration record{.iteration = outcome.iterations_used,
-                                     .contact = i,
-                                     .desired_delta_velocity = desired_of(contact),
-                                     .epsilon = settings.velocity_epsilon,
-                                     .sweep = SweepPlace{0, pass, SolverStage::solve},
-                                     .accumulated = {},
-                                     .resolution = resolve_velocity(contact, settings.sliding_friction),
-                                     .updates = {}};
-            const std::array<int, 2> changed = contact.derivation.bodies;
-            const VelocityChange& change = record.resolution->velocity_change_terms;
-            apply_velocity_change(bodies, changed, change);
+            if (contact.inert || desired_of(contact) <= settings.velocity_epsilon) continue;
+            const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, settings.sliding_friction);
+            frame.touched(i);
+            if (frame.keeping)
+                frame.recorder.velocity_visit({.contact = i,
+                                               .sweep = SweepPlace{0, pass, SolverStage::solve},
+                                               .epsilon = settings.velocity_epsilon,
+                                               .updates = DesiredFollows::step_5,
+                                               .resolution = &resolution});
+            const std::array<int, 2> changed = contact.bodies;
+            apply_velocity_change(frame.bodies, changed, resolution.velocity_change_terms);
             by_body.sharing(changed, sharing);
-            update_contact_velocities(contacts, sharing, changed, change, settings,
-                                      recorder.wants_updates() ? &record.updates : nullptr);
-            recorder.velocity_iteration(record);
+            update_contact_velocities(contacts, sharing, changed, resolution.velocity_change_terms, refinements);
             ++outcome.iterations_used;
             resolved_any = true;
         }
@@ -69,7 +65,7 @@ PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
     }
     outcome.stop = any_desired_delta_velocity_above(contacts, settings.velocity_epsilon) ? StopReason::sweeps_complete
                                                                                          : StopReason::resolved;
-    recorder.end_phase(Phase::velocity, outcome);
+    frame.recorder.end_phase(Phase::velocity, outcome);
     return outcome;
 }
 

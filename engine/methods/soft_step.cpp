@@ -5,7 +5,6 @@
 #include "methods/soft_step.hpp"
 
 #include "methods/contact_rows.hpp"
-#include "methods/solver_common.hpp"
 #include "body/integrate.hpp"
 
 #include <algorithm>
@@ -46,7 +45,8 @@ struct SoftContact {
 struct SoftBounce {
     double relative_velocity = 0.0;  // v_n when the frame began (step 4), which restitution reverses
     double restitution = 0.0;        // c
-    bool bounces = false;            // c > 0 and it closed faster than the restitution cut-off
+    bool cutoff_applied = false;     // c > 0, but it did not close faster than the restitution cut-off
+    bool bounces = false;            // c > 0 and it closed faster than the cut-off
 };
 
 class SoftStep {
@@ -57,13 +57,14 @@ public:
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
           bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          active_(frame.rows.size(), frame.scratch),
+          active_(frame.contacts.size(), frame.scratch),
           soft_(frame.scratch),
           bounce_(frame.scratch),
           start_position_(frame.scratch),
           start_orientation_(frame.scratch),
           moved_(frame.scratch),
-          turned_(frame.scratch) {
+          turned_(frame.scratch),
+          kept_(frame.scratch) {
         start_position_.reserve(frame.bodies.size());
         start_orientation_.reserve(frame.bodies.size());
         for (const RigidBody& body : frame.bodies) {
@@ -72,20 +73,22 @@ public:
         }
         moved_.assign(frame.bodies.size(), Vec3::Zero());
         turned_.assign(frame.bodies.size(), Mat3::Identity());
-        const double cutoff = settings_.restitution_cutoff;
-        soft_.reserve(frame.rows.size());
-        bounce_.reserve(frame.rows.size());
-        for (const RowPreparation& d : frame.rows) {
+        soft_.reserve(frame.contacts.size());
+        bounce_.reserve(frame.contacts.size());
+        for (const PreparedContact& d : frame.contacts) {
             if (!active_.add(d, bodies_.data())) continue;  // nothing can move it: no visits
             SoftContact& c = soft_.emplace_back();
             c.prepared_penetration = d.penetration;
             aim_at(c, d.penetration);
-            // Step 4's v_s, which restitution reverses: only a contact that may bounce needs it.
+            // Step 4's v_s, which restitution reverses, judged once against the cut-off.
             SoftBounce& bounce = bounce_.emplace_back();
-            if (d.restitution != 0.0) bounce.relative_velocity = separating_velocity(d, frame.bodies, settings_);
             bounce.restitution = d.restitution;
-            bounce.bounces = d.restitution != 0.0 && bounce.relative_velocity < -cutoff;
+            if (d.restitution == 0.0) continue;
+            bounce.relative_velocity = d.contact_velocity.x();
+            bounce.cutoff_applied = !(bounce.relative_velocity < -settings_.restitution_cutoff);
+            bounce.bounces = !bounce.cutoff_applied;
         }
+        if (frame.keeping) kept_.resize(active_.rows.size());
         if (settings_.warm_start && frame.memory) {
             RememberedTotals remembered(*frame.memory, frame.scratch);
             for (std::size_t r = 0; r < active_.rows.size(); ++r)
@@ -94,35 +97,33 @@ public:
         }
     }
 
-    template <bool recording>
     void run() {
         const Forces& f = frame_.forces;
         const int substeps = settings_.soft_step.substeps;
         for (int substep = 0; substep < substeps && !frame_.stop_requested(); ++substep) {
             for (RigidBody& body : frame_.bodies) integrate_velocity(body, f.gravity, substep_, f.damping);
             load_velocities();
-            warm_start<recording>(substep);
+            warm_start(substep);
             for (int pass = 0; pass < settings_.sweeps && (pass % 64 != 0 || !frame_.stop_requested()); ++pass)
-                sweep<recording, true>({substep, pass, SolverStage::solve});
+                sweep<true>({substep, pass, SolverStage::solve});
             store_velocities(bodies_, frame_.bodies);
             for (RigidBody& body : frame_.bodies) integrate_position(body, substep_, settings_.orientation_update);
             track_moves();
             // The first relax sweep finds each contact's p as it visits it (the bodies move only here).
             for (int pass = 0; pass < settings_.sweeps && (pass % 64 != 0 || !frame_.stop_requested()); ++pass)
                 if (pass == 0)
-                    sweep<recording, false, true>({substep, pass, SolverStage::relax});
+                    sweep<false, true>({substep, pass, SolverStage::relax});
                 else
-                    sweep<recording, false>({substep, pass, SolverStage::relax});
+                    sweep<false>({substep, pass, SolverStage::relax});
             store_velocities(bodies_, frame_.bodies);
         }
-        if constexpr (!recording) frame_.recorder.contacts_visited(active_.contacts);
-        std::pmr::vector<int> bounced(frame_.scratch);
+        // Every sweep visits every row in order, so the last sub-step's last sweep holds each contact's last visit
+        // before restitution: stamped for LastTouch once, here (restitution stamps its own).
+        if (frame_.touch)
+            for (const ContactRow& row : active_.rows) frame_.touch->touched(row.contact);
         for (std::size_t r = 0; r < active_.rows.size(); ++r)
-            if (bounce_[r].bounces && soft_[r].most_pushed > 0.0) {
-                restitution<recording>(r, {substeps - 1, 0, SolverStage::restitution});
-                bounced.push_back(active_.rows[r].contact);
-            }
-        if constexpr (!recording) frame_.recorder.contacts_visited(bounced);
+            if (bounce_[r].bounces && soft_[r].most_pushed > 0.0)
+                restitution(r, {substeps - 1, 0, SolverStage::restitution});
         store_velocities(bodies_, frame_.bodies);
     }
 
@@ -131,13 +132,6 @@ public:
     int visits() const { return visits_; }
 
 private:
-    // What a visit aimed at, for the record only.
-    struct Aim {
-        Axes contact_velocity;                // when visited
-        double desired_delta_velocity = 0.0;  // target - current normal velocity (see the header)
-        std::optional<double> position_bias;
-    };
-
     void load_velocities() {
         for (std::size_t b = 0; b < bodies_.size(); ++b) {
             bodies_[b].velocity = frame_.bodies[b].velocity;
@@ -195,40 +189,52 @@ private:
     }
 
     // Every contact's lambda applied again: the sub-step's velocities start without any contact impulse.
-    template <bool recording>
     void warm_start(int substep) {
+        KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
         for (std::size_t r = 0; r < active_.rows.size(); ++r) {
             const ContactRow& row = active_.rows[r];
-            RowVisit v;
+            RowVisit v;  // from 0: the total counts what this sub-step has applied
             v.unclamped = v.after = row.total_impulse;
-            Aim aim;
-            if constexpr (recording) {
-                aim.contact_velocity = row_velocity(row, bodies_.data());
-                const Axes& total = row.total_impulse;
-                aim.desired_delta_velocity = row.normal_response * total.n + row.normal_to_tangent[0] * total.t1 +
-                                             row.normal_to_tangent[1] * total.t2;  // (K lambda)_n
-            }
-            apply<recording>(r, v, {substep, 0, SolverStage::warm_start}, aim);
+            if (kept) [[unlikely]]
+                keep_visit(kept[r], row_velocity(row, bodies_.data()), v);
+            apply(r, v);
         }
+        // The warm start has no target: the recorder is shown the normal velocity change it makes, (K lambda)_n.
+        if (kept)
+            for (std::size_t r = 0; r < active_.rows.size(); ++r) {
+                const ContactRow& row = active_.rows[r];
+                const Axes& total = row.total_impulse;
+                report(r, {substep, 0, SolverStage::warm_start}, kept[r],
+                       row.normal_response * total.n + row.normal_to_tangent[0] * total.t1 +
+                           row.normal_to_tangent[1] * total.t2,
+                       std::nullopt);
+            }
     }
 
     // One sweep of solve (with the soft bias) or relax (without); `moved`: the bodies moved since the last sweep,
-    // so each contact's p is found first (track_penetration).
-    template <bool recording, bool biased, bool moved = false>
+    // so each contact's p is found first (track_penetration). Its visits are kept for the recorder in a buffer and
+    // reported after the sweep (KeptVisit), with the targets they had (a contact's aim changes only at the sweep
+    // that finds its p, before its visit).
+    template <bool biased, bool moved = false>
     void sweep(const SweepPlace& place) {
+        KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
         for (std::size_t r = 0; r < active_.rows.size(); ++r) {
             if constexpr (moved) track_penetration(r);
             const ContactRow& row = active_.rows[r];
             const Axes velocity = row_velocity(row, bodies_.data());
             const NormalTarget target = target_of<biased>(r);
             const RowVisit v = solve_rows(row, velocity, target);
-            Aim aim;
-            if constexpr (recording) aim = {velocity, target.velocity - velocity.n, target.velocity};
-            apply<recording>(r, v, place, aim);
+            if (kept) [[unlikely]]
+                keep_visit(kept[r], velocity, v);
+            apply(r, v);
         }
+        if (kept)
+            for (std::size_t r = 0; r < active_.rows.size(); ++r) {
+                const double target = target_of<biased>(r).velocity;
+                report(r, place, kept[r], target - kept[r].velocity.n, target);
+            }
     }
 
-    template <bool recording>
     void restitution(std::size_t r, const SweepPlace& place) {
         const ContactRow& row = active_.rows[r];
         const double c_used = bounce_[r].restitution;
@@ -236,63 +242,46 @@ private:
         // The target is -c v_n(before): delta lambda_n = -m_n (v_n + c v_n(before)), total kept >= 0.
         const NormalTarget target{-c_used * bounce_[r].relative_velocity};
         const RowVisit v = solve_normal_row(row, velocity.n, target);
-        Aim aim;
-        if constexpr (recording) aim = {velocity, target.velocity - velocity.n, std::nullopt};
-        apply<recording>(r, v, place, aim);
+        apply(r, v);
+        if (frame_.touch) frame_.touch->touched(row.contact);
+        if (frame_.keeping) report(r, place, {velocity, v}, target.velocity - velocity.n, std::nullopt);
     }
 
-    // Applies after - before to the bodies by step 7, keeps the total, and (recording) records the visit.
-    template <bool recording>
-    [[gnu::always_inline]] void apply(std::size_t r, const RowVisit& v, const SweepPlace& place, const Aim& aim) {
+    // Applies after - before to the bodies by step 7 and keeps the total.
+    [[gnu::always_inline]] void apply(std::size_t r, const RowVisit& v) {
         ContactRow& row = active_.rows[r];
-        const Axes increment = v.increment();
-        const Vec3 impulse = world_impulse(row, increment);
+        const Vec3 impulse = world_impulse(row, v.increment());
         keep_total(row, v.after);
         soft_[r].most_pushed = std::max(soft_[r].most_pushed, v.after.n);
-        if constexpr (recording) {
-            VelocityChange change;
-            apply_impulse(row, bodies_.data(), impulse, &change);
-            record(r, place, v, aim, vector_of(increment), impulse, change);
-        } else {
-            apply_impulse(row, bodies_.data(), impulse, nullptr);
-        }
+        apply_impulse(row, bodies_.data(), impulse);
         ++visits_;
     }
 
-    void record(std::size_t r, const SweepPlace& place, const RowVisit& v, const Aim& aim, const Vec3& increment,
-                const Vec3& impulse, const VelocityChange& change) {
+    // The visit as the recorder takes it: the velocity it read, what it aimed at (desired delta v = target - v_n,
+    // and the soft bias as step 5's position bias), its totals.
+    void report(std::size_t r, const SweepPlace& place, const KeptVisit& kept, double desired_delta_velocity,
+                std::optional<double> position_bias) {
+        const Axes& velocity = kept.velocity;
         const ContactRow& row = active_.rows[r];
-        const ContactPreparation& d = frame_.contacts[static_cast<std::size_t>(row.contact)].derivation;
+        const SoftBounce& bounce = bounce_[r];
         const bool bouncing = place.stage == SolverStage::restitution;
-        const bool sliding = v.sliding;
-        VelocityResolution resolution;
-        resolution.contact_velocity = vector_of(aim.contact_velocity);
-        resolution.desired_terms = {.separating_velocity = aim.contact_velocity.n,
-                                    .restitution = d.restitution,
-                                    .restitution_cutoff = settings_.restitution_cutoff,
-                                    .restitution_cutoff_applied = d.restitution != 0.0 && !bounce_[r].bounces,
-                                    .restitution_used = bouncing ? d.restitution : 0.0,
-                                    .velocity_from_acceleration_applied = false,
-                                    .velocity_from_acceleration = 0.0,
-                                    .position_bias = aim.position_bias,
-                                    .desired_delta_velocity = aim.desired_delta_velocity};
-        const bool tangential = d.friction != 0.0 && !bouncing;
-        resolution.impulse_terms = {.impulse_model = !tangential ? ImpulseModel::frictionless
-                                                     : sliding   ? ImpulseModel::sliding_friction
-                                                                 : ImpulseModel::static_friction,
-                                    .friction_solve = std::nullopt,
-                                    .impulse = increment,
-                                    .impulse_world = impulse};
-        resolution.velocity_change_terms = change;
-        const VelocityIteration iteration{.iteration = visits_,
-                                          .contact = row.contact,
-                                          .desired_delta_velocity = aim.desired_delta_velocity,
-                                          .epsilon = 0.0,
-                                          .sweep = place,
-                                          .accumulated = v.accumulated(),
-                                          .resolution = resolution,
-                                          .updates = {}};
-        frame_.recorder.velocity_iteration(iteration);
+        frame_.recorder.velocity_visit({.contact = row.contact,
+                                        .sweep = place,
+                                        .epsilon = 0.0,
+                                        .updates = DesiredFollows::nothing,
+                                        .resolution = nullptr,
+                                        .contact_velocity = vector_of(velocity),
+                                        .desired_terms = {.separating_velocity = velocity.n,
+                                                          .restitution = bounce.restitution,
+                                                          .restitution_cutoff = settings_.restitution_cutoff,
+                                                          .restitution_cutoff_applied = bounce.cutoff_applied,
+                                                          .restitution_used = bouncing ? bounce.restitution : 0.0,
+                                                          .velocity_from_acceleration_applied = false,
+                                                          .velocity_from_acceleration = 0.0,
+                                                          .position_bias = position_bias,
+                                                          .desired_delta_velocity = desired_delta_velocity},
+                                        .accumulated = kept.totals.accumulated(),
+                                        .friction_rows = row.friction != 0.0 && !bouncing});
     }
 
     FrameContext& frame_;
@@ -306,8 +295,9 @@ private:
     std::pmr::vector<SoftBounce> bounce_;  // beside each row
     std::pmr::vector<Vec3> start_position_;
     std::pmr::vector<Quat> start_orientation_;
-    std::pmr::vector<Vec3> moved_;   // per body: its move since the frame began
-    std::pmr::vector<Mat3> turned_;  // per body: its turn since the frame began, R = q q0^-1
+    std::pmr::vector<Vec3> moved_;      // per body: its move since the frame began
+    std::pmr::vector<Mat3> turned_;     // per body: its turn since the frame began, R = q q0^-1
+    std::pmr::vector<KeptVisit> kept_;  // per row: its visit in the sweep under way, when the frame is recorded
     int visits_ = 0;
 };
 
@@ -315,10 +305,7 @@ private:
 
 PhaseOutcome soft_step(FrameContext& frame) {
     SoftStep step(frame);
-    if (frame.recorder.wants_updates())
-        step.run<true>();
-    else
-        step.run<false>();
+    step.run();
     if (frame.memory) {
         if (frame.settings.warm_start)
             step.remember(*frame.memory);

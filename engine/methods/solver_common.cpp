@@ -1,19 +1,31 @@
 #include "methods/solver_common.hpp"
 
-#include "derivation/contact_velocity.hpp"
-#include "derivation/impulse.hpp"
-
 namespace impulse {
 
-VelocityResolution resolve_velocity(const PreparedContact& contact, SlidingFriction sliding) {
-    const ContactPreparation& d = contact.derivation;
+FrictionMatrices::FrictionMatrices(std::size_t contact_count, std::pmr::memory_resource* scratch)
+    : slot_(contact_count, -1, scratch), matrices_(scratch) {}
+
+const FactoredDeltaVelocityMatrix& FrictionMatrices::of(const PreparedContact& contact,
+                                                        std::span<const MassProperties> mass) {
+    int& slot = slot_[static_cast<std::size_t>(contact.contact)];
+    if (slot < 0) {
+        slot = static_cast<int>(matrices_.size());
+        matrices_.push_back(factored_delta_velocity_matrix(
+            delta_velocity_matrix(contact.basis, contact.relative_position, contact_mass(contact, mass))));
+    }
+    return matrices_[static_cast<std::size_t>(slot)];
+}
+
+VelocityResolution resolve_velocity(const PreparedContact& contact, std::span<const MassProperties> mass,
+                                    FrictionMatrices& k, SlidingFriction sliding) {
     VelocityResolution r;
     r.contact_velocity = contact.contact_velocity;
     r.desired_terms = contact.desired_terms;
-    r.impulse_terms = calculate_impulse(d.basis, d.friction != 0.0 ? &delta_velocity_matrix_of(contact) : nullptr,
+    r.impulse_terms = calculate_impulse(contact.basis, contact.friction != 0.0 ? &k.of(contact, mass) : nullptr,
                                         contact.contact_velocity, contact.desired_terms.desired_delta_velocity,
-                                        d.unit_impulse_chain.delta_velocity_per_unit_impulse, d.friction, sliding);
-    r.velocity_change_terms = velocity_change(r.impulse_terms.impulse_world, d.relative_position, contact.mass);
+                                        contact.delta_velocity_per_unit_impulse, contact.friction, sliding);
+    r.velocity_change_terms =
+        velocity_change(r.impulse_terms.impulse_world, relative_positions(contact), mass_of(contact, mass));
     return r;
 }
 
@@ -25,20 +37,6 @@ void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int,
         body.velocity += *change.velocity_change[i];
         body.angular_velocity += *change.rotation_change[i];
     }
-}
-
-Vec3 current_contact_velocity(const PreparedContact& contact, std::span<const RigidBody> bodies,
-                              const ResolverSettings& settings) {
-    const ContactPreparation& d = contact.derivation;
-    PerBody<BodyMotion> motion;
-    for (int i = 0; i < 2; ++i) {
-        if (d.bodies[i] == world_body) continue;
-        const RigidBody& body = bodies[static_cast<std::size_t>(d.bodies[i])];
-        motion[i] = BodyMotion{body.velocity, body.angular_velocity, body.last_frame_acceleration};
-    }
-    return contact_velocity(d.basis, d.relative_position, motion, settings.duration,
-                            settings.tangential_acceleration_velocity)
-        .contact_velocity;
 }
 
 }  // namespace impulse

@@ -1,45 +1,43 @@
 #pragma once
-// What the velocity methods share (solver2d's solver.c): the book's impulse for one contact (steps 6 and 7
-// on its current velocity), applying a velocity change to the bodies, the contact velocity read from the
-// bodies as they are now, and a prepared contact's identity across frames.
+// What the book's velocity methods share (solver2d's solver.c): the book's impulse for one contact (steps 6 and 7
+// on its bookkeeping), with K and its factors kept per contact for the frame, and applying a velocity change to
+// the bodies.
 
 #include "body/rigid_body.hpp"
+#include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
-#include "memory/contact_memory.hpp"
-#include "record/iteration_records.hpp"
 #include "preparation/prepared_contact.hpp"
+#include "record/iteration_records.hpp"
 #include "settings/settings.hpp"
 
 #include <array>
+#include <memory_resource>
 #include <span>
-#include <utility>
 #include <vector>
 
 namespace impulse {
 
+// K and its factors for the book's friction impulse, per contact: computed by the first impulse on the contact
+// and reused by the later ones, since they depend only on what preparation fixed (a frame of a resting grid
+// resolves half of its contacts, so they are not computed for every contact up front).
+class FrictionMatrices {
+public:
+    FrictionMatrices(std::size_t contact_count, std::pmr::memory_resource* scratch);
+    const FactoredDeltaVelocityMatrix& of(const PreparedContact& contact, std::span<const MassProperties> mass);
+
+private:
+    std::pmr::vector<int> slot_;  // per contact: its place in matrices_, or -1
+    std::pmr::vector<FactoredDeltaVelocityMatrix> matrices_;
+};
+
 // Steps 6 and 7 for one contact, on its bookkeeping velocity and desired delta v (step 5, with the Baumgarte
 // term when it is on), the sliding impulse as `sliding` says: worst-first and the sequential sweep both visit
 // a contact this way.
-VelocityResolution resolve_velocity(const PreparedContact& contact, SlidingFriction sliding);
+VelocityResolution resolve_velocity(const PreparedContact& contact, std::span<const MassProperties> mass,
+                                    FrictionMatrices& k, SlidingFriction sliding);
 
 // Adds step 7's velocity_change and rotation_change to the contact's bodies (the world never changes).
 void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int, 2>& changed,
                            const VelocityChange& change);
-
-// Step 4 on the bodies' velocities as they are now, not on the linearised bookkeeping: sequential impulses
-// read the velocity afresh at every visit, so rounding never accumulates in a copy.
-Vec3 current_contact_velocity(const PreparedContact& contact, std::span<const RigidBody> bodies,
-                              const ResolverSettings& settings);
-
-// The key the contact had as detected (before preparation put the world second), for ContactMemory.
-template <typename Prepared>  // ContactPreparation or RowPreparation
-ContactKey contact_key(const Prepared& contact) {
-    ContactKey key{contact.bodies, contact.origin};
-    if (contact.swapped) {
-        std::swap(key.bodies[0], key.bodies[1]);
-        std::swap(key.origin.features[0], key.origin.features[1]);
-    }
-    return key;
-}
 
 }  // namespace impulse

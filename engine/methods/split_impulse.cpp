@@ -23,58 +23,52 @@
 // pseudo w x h only at second order. Moving per visit lets the inspector rebuild every intermediate pose from
 // the trace and land exactly on bodies_after.
 //
-// Recorded per visit, in the position phase's vocabulary (a PositionIteration, pass = sweep index, epsilon =
-// the slop): method split_impulse; penetration = the contact's bookkeeping penetration when visited; push_impulse =
-// the push impulse applied this visit (N s: a projection's amount is in metres); linear_inertia and angular_inertia =
-// step 3's linear and angular components (how readily each body's pseudo velocity gives way along n per unit push), and
-// penetration_inertia = d; linear_move and angular_move = how far this visit moved each body's contact point along n
-// by translation and by rotation, (linear_change) . n and (angular_change x q_rel) . n, body 1's negative as
-// in the book; no angular limit; linear_change and angular_change = the moves applied. The penetration
-// updates are the book's linearised bookkeeping (methods/bookkeeping.cpp) of every contact sharing a body,
-// kept only while recording (the pushes never read it). The loop is compiled twice from one template, with and
-// without the records, on the same arithmetic.
+// Reported per visit, in the position phase's vocabulary: the push impulse applied this visit and the moves it
+// made; the recorder builds the record from them (record/visit_records.hpp): method split_impulse; penetration =
+// the book's bookkeeping penetration when visited (the recorder keeps it; the pushes never read it); push_impulse
+// (N s: a projection's amount is in metres); linear_inertia and angular_inertia = step 3's linear and angular
+// components (how readily each body's pseudo velocity gives way along n per unit push), penetration_inertia = d;
+// linear_move and angular_move = how far this visit moved each body's contact point along n by translation and by
+// rotation, (linear_change) . n and (angular_change x q_rel) . n, body 1's negative as in the book; no angular
+// limit; linear_change and angular_change = the moves applied; and the penetration updates of every contact
+// sharing a body.
 
 #include "methods/contact_rows.hpp"
 #include "methods/method.hpp"
 #include "preparation/position_bias.hpp"
-#include "methods/bookkeeping.hpp"
-#include "methods/worst_first_selector.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 namespace impulse {
 
-namespace {
-
-template <bool recording>
-PhaseOutcome push_apart(FrameContext& frame) {
+PhaseOutcome split_impulse_positions(FrameContext& frame) {
     const ResolverSettings& settings = frame.settings;
-    std::vector<PreparedContact>& contacts = frame.contacts;
     const double h = settings.duration;
     // The pseudo velocities: zero at the start of every frame, with the bodies' mass as prepared.
     std::pmr::vector<SolverBody> pseudo = solver_bodies(frame.bodies, frame.mass, frame.scratch);
     for (SolverBody& p : pseudo) p.velocity = p.angular_velocity = Vec3::Zero();
     std::pmr::vector<ContactRow> rows(frame.scratch);
     std::pmr::vector<double> targets(frame.scratch);
-    std::pmr::vector<int> active(frame.scratch);
-    for (const RowPreparation& c : frame.rows) {
+    for (const PreparedContact& c : frame.contacts) {
         if (!fill_contact_row(rows.emplace_back(), c, pseudo.data(), false)) {  // nothing can push it
             rows.pop_back();
             continue;
         }
         targets.push_back(position_bias(c.penetration, settings.position_bias, h));
-        active.push_back(c.contact);
     }
 
-    std::optional<ContactsByBody> by_body;  // a push updates its neighbours' bookkeeping, not every contact
-    if constexpr (recording) by_body.emplace(contacts, frame.bodies.size());
-    std::vector<int> sharing;
+    // A sweep's pushes and moves, kept for the recorder and reported after the sweep (as the accumulating velocity
+    // methods keep theirs: a call in the loop would keep every value alive across it).
+    struct KeptPush {
+        double push = 0.0;
+        PositionChange moves;
+    };
+    std::pmr::vector<KeptPush> kept(frame.keeping ? rows.size() : 0, frame.scratch);
     PhaseOutcome outcome;
     outcome.iteration_limit = std::max(settings.sweeps, 0) * static_cast<int>(rows.size());
     bool converged = rows.empty();
-    int pass = 0;
-    for (; pass < settings.sweeps && !converged && !frame.stop_requested(); ++pass) {
+    for (int pass = 0; pass < settings.sweeps && !converged && !frame.stop_requested(); ++pass) {
         double largest = 0.0;
         for (std::size_t r = 0; r < rows.size(); ++r) {
             ContactRow& row = rows[r];
@@ -82,59 +76,40 @@ PhaseOutcome push_apart(FrameContext& frame) {
             keep_total(row, v.after);
             const double push = v.after.n - v.before.n;
             largest = std::max(largest, std::abs(push) / row.normal_mass);
-
-            VelocityChange change;
-            apply_impulse(row, pseudo.data(), Vec3(normal_of(row) * push), &change);
+            // The push through step 7 on the pseudo velocities, and the bodies moved by exactly that change times h.
             PositionChange moves;
             for (int b = 0; b < 2; ++b) {
                 if (row.body[b] < 0) continue;
-                moves.linear_change[b] = *change.velocity_change[b] * h;
-                moves.angular_change[b] = *change.rotation_change[b] * h;
-                RigidBody& body = frame.bodies[static_cast<std::size_t>(row.body[b])];
-                body.position += *moves.linear_change[b];
-                body.orientation = rotated(body.orientation, *moves.angular_change[b], settings.orientation_update);
+                SolverBody& body = pseudo[static_cast<std::size_t>(row.body[b])];
+                const BodyVelocityChange change =
+                    body_velocity_change(body_sign(b) * push * normal_of(row), row.anchor[b], body.mass);
+                body.velocity += change.velocity_change;
+                body.angular_velocity += change.rotation_change;
+                moves.linear_change[b] = change.velocity_change * h;
+                moves.angular_change[b] = change.rotation_change * h;
+                RigidBody& moved = frame.bodies[static_cast<std::size_t>(row.body[b])];
+                moved.position += *moves.linear_change[b];
+                moved.orientation = rotated(moved.orientation, *moves.angular_change[b], settings.orientation_update);
             }
-            if constexpr (recording) {
-                const PreparedContact& contact = contacts[static_cast<std::size_t>(row.contact)];
-                const ContactPreparation& d = contact.derivation;
-                PositionResolution resolution;
-                resolution.method = PositionMethod::split_impulse;
-                resolution.penetration = contact.penetration;
-                resolution.push_impulse = push;
-                resolution.inertia = penetration_inertia(d.unit_impulse_chain);
-                for (int b = 0; b < 2; ++b) {
-                    if (row.body[b] < 0) continue;
-                    resolution.moves.linear_move[b] = moves.linear_change[b]->dot(d.normal);
-                    resolution.moves.angular_move[b] =
-                        moves.angular_change[b]->cross(*d.relative_position[b]).dot(d.normal);
-                }
-                resolution.change = moves;
-                PositionIteration record{outcome.iterations_used,
-                                         row.contact,
-                                         contact.penetration,
-                                         settings.position_bias.slop,
-                                         pass,
-                                         resolution,
-                                         {}};
-                by_body->sharing(d.bodies, sharing);
-                update_penetrations(contacts, sharing, d.bodies, moves, &record.updates);
-                frame.recorder.position_iteration(record);
-            }
-            ++outcome.iterations_used;
+            if (!kept.empty()) [[unlikely]]
+                kept[r] = {push, moves};
         }
+        outcome.iterations_used += static_cast<int>(rows.size());
+        for (std::size_t r = 0; r < kept.size(); ++r)
+            frame.recorder.position_visit({.contact = rows[r].contact,
+                                           .pass = pass,
+                                           .epsilon = settings.position_bias.slop,
+                                           .resolution = nullptr,
+                                           .push_impulse = kept[r].push,
+                                           .change = kept[r].moves});
         converged = largest <= settings.velocity_epsilon;
     }
-    if constexpr (!recording)
-        if (pass > 0) frame.recorder.contacts_visited(active);
+    // Every sweep visits every row in order: the last sweep holds each contact's last visit, stamped once, here.
+    if (frame.touch && outcome.iterations_used > 0)
+        for (const ContactRow& row : rows) frame.touch->touched(row.contact);
     outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
     frame.recorder.end_phase(Phase::position, outcome);
     return outcome;
-}
-
-}  // namespace
-
-PhaseOutcome split_impulse_positions(FrameContext& frame) {
-    return frame.recorder.wants_updates() ? push_apart<true>(frame) : push_apart<false>(frame);
 }
 
 }  // namespace impulse

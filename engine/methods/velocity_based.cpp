@@ -15,22 +15,21 @@
 
 namespace impulse {
 
-PositionResolution velocity_based(const PreparedContact& contact, const PerBody<BodyMotion>& motion, double time_left,
+PositionResolution velocity_based(const PreparedContact& contact, const PerBody<MassProperties>& mass,
+                                  const PerBody<BodyMotion>& motion, double time_left,
                                   const AngularLimitSettings& limit, OrientationUpdate orientation_update) {
-    const ContactPreparation& d = contact.derivation;
-
     // Only the motion a body can undo counts: an immovable body stays where it is even if it has a speed.
     PerBody<Vec3> path_velocity, path_rotation;
     Rewind rewind{};
     double separating = 0.0;
     for (int i = 0; i < 2; ++i) {
-        if (!contact.mass[i]) continue;
-        const bool translates = contact.mass[i]->inverse_mass > 0.0;
-        const bool turns = !contact.mass[i]->inverse_inertia_world.isZero(0.0);
+        if (!mass[i]) continue;
+        const bool translates = mass[i]->inverse_mass > 0.0;
+        const bool turns = !mass[i]->inverse_inertia_world.isZero(0.0);
         path_velocity[i] = translates ? motion[i]->velocity : Vec3::Zero();
         path_rotation[i] = turns ? motion[i]->angular_velocity : Vec3::Zero();
-        const Vec3 point_velocity = path_rotation[i]->cross(*d.relative_position[i]) + *path_velocity[i];
-        separating += body_sign(i) * point_velocity.dot(d.normal);
+        const Vec3 point_velocity = path_rotation[i]->cross(contact.relative_position[i]) + *path_velocity[i];
+        separating += body_sign(i) * point_velocity.dot(contact.basis.normal);
     }
     rewind.closing_velocity = -separating;
     rewind.time_limit = std::max(time_left, 0.0);
@@ -39,17 +38,17 @@ PositionResolution velocity_based(const PreparedContact& contact, const PerBody<
                       : 0.0;
     rewind.removed_penetration = rewind.closing_velocity * rewind.time;
     for (int i = 0; i < 2; ++i) {
-        if (!contact.mass[i]) continue;
+        if (!mass[i]) continue;
         rewind.linear_change[i] = -*path_velocity[i] * rewind.time;
         rewind.angular_change[i] = -*path_rotation[i] * rewind.time;
     }
 
     // The rest, if any, by nonlinear projection.
-    PositionResolution r =
-        nonlinear_projection(contact, contact.penetration - rewind.removed_penetration, limit, orientation_update);
+    PositionResolution r = nonlinear_projection(contact, mass, contact.penetration - rewind.removed_penetration, limit,
+                                                orientation_update);
     r.method = PositionMethod::velocity_based;
     for (int i = 0; i < 2; ++i) {
-        if (!contact.mass[i]) continue;
+        if (!mass[i]) continue;
         *r.change.linear_change[i] += *rewind.linear_change[i];
         *r.change.angular_change[i] += *rewind.angular_change[i];
     }
@@ -66,13 +65,14 @@ PositionResolution project(const PreparedContact& contact, double /*amount*/, co
     PerBody<BodyMotion> motion;
     double time_left = settings.duration;
     for (int i = 0; i < 2; ++i) {
-        const int id = contact.derivation.bodies[i];
+        const int id = contact.bodies[i];
         if (id == world_body) continue;
         const RigidBody& body = frame.bodies[static_cast<std::size_t>(id)];
         motion[i] = BodyMotion{body.velocity, body.angular_velocity, body.last_frame_acceleration};
         time_left = std::min(time_left, settings.duration - state.rewound_time[static_cast<std::size_t>(id)]);
     }
-    return velocity_based(contact, motion, time_left, settings.angular_limit, settings.orientation_update);
+    return velocity_based(contact, mass_of(contact, frame.mass), motion, time_left, settings.angular_limit,
+                          settings.orientation_update);
 }
 
 }  // namespace

@@ -102,48 +102,6 @@ std::optional<int> ContactTournament::top() const {
     return winner;
 }
 
-// --- ContactsByBody ---------------------------------------------------------------------------------------
-
-ContactsByBody::ContactsByBody(std::span<const PreparedContact> contacts, std::size_t body_count)
-    : first_(body_count + 1, 0) {
-    // Count each body's contacts, turn the counts into starts, then place the contacts in index order.
-    for (const PreparedContact& c : contacts)
-        for (const int body : c.derivation.bodies)
-            if (body != world_body) ++first_[static_cast<std::size_t>(body) + 1];
-    for (std::size_t b = 0; b < body_count; ++b) first_[b + 1] += first_[b];
-    contacts_.resize(static_cast<std::size_t>(first_[body_count]));
-    std::vector<int> next(first_.begin(), first_.end() - 1);
-    for (std::size_t i = 0; i < contacts.size(); ++i)
-        for (const int body : contacts[i].derivation.bodies)
-            if (body != world_body)
-                contacts_[static_cast<std::size_t>(next[static_cast<std::size_t>(body)]++)] = static_cast<int>(i);
-}
-
-std::span<const int> ContactsByBody::contacts_of(int body) const {
-    if (body == world_body) return {};
-    const auto b = static_cast<std::size_t>(body);
-    return std::span<const int>(contacts_).subspan(static_cast<std::size_t>(first_[b]),
-                                                   static_cast<std::size_t>(first_[b + 1] - first_[b]));
-}
-
-void ContactsByBody::sharing(const std::array<int, 2>& moved, std::vector<int>& out) const {
-    out.clear();
-    const std::span<const int> a = contacts_of(moved[0]);
-    const std::span<const int> b = moved[1] == moved[0] ? std::span<const int>() : contacts_of(moved[1]);
-    // Both lists ascend: merge them, a contact on both bodies once.
-    std::size_t i = 0, j = 0;
-    while (i < a.size() || j < b.size()) {
-        int next;
-        if (j == b.size() || (i < a.size() && a[i] < b[j]))
-            next = a[i++];
-        else if (i == a.size() || b[j] < a[i])
-            next = b[j++];
-        else
-            next = a[i++], ++j;
-        out.push_back(next);
-    }
-}
-
 // --- WorstFirstSelector -----------------------------------------------------------------------------------
 
 WorstFirstSelector::WorstFirstSelector(WorstFirstSearch search, std::span<const PreparedContact> contacts,

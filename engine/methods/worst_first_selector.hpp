@@ -11,7 +11,7 @@
 // index on a tie (the scan's "first wins"), NaN never chosen. Both visit the contacts sharing a body in index
 // order, so the bookkeeping updates, the records and the bodies come out bit-identical.
 
-#include "preparation/prepared_contact.hpp"
+#include "preparation/bookkeeping.hpp"
 #include "settings/settings.hpp"
 
 #include <array>
@@ -72,20 +72,6 @@ private:
     std::size_t leaves_ = 0;            // a power of two, at least the contact count
     std::vector<Entry> tree_;           // [1] the root, [k] the winner of [2k] and [2k + 1], [leaves_ + i] contact i
     std::vector<std::size_t> changed_;  // change(): the nodes of one level whose entry changed, ascending
-};
-
-// Per body, the indices of the contacts touching it, ascending (one flat array with an offset per body).
-class ContactsByBody {
-public:
-    ContactsByBody(std::span<const PreparedContact> contacts, std::size_t body_count);
-    // The contacts touching either of `moved` (the world touches nothing), each once, ascending, into `out`.
-    void sharing(const std::array<int, 2>& moved, std::vector<int>& out) const;
-
-private:
-    std::span<const int> contacts_of(int body) const;
-
-    std::vector<int> first_;     // per body, where its contacts start in contacts_; one more at the end
-    std::vector<int> contacts_;  // every body's contacts, body after body
 };
 
 // One phase's chooser: the full scan or the priority queue, as the settings say.

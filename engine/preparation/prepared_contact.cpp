@@ -1,20 +1,10 @@
 #include "preparation/prepared_contact.hpp"
 
-#include "derivation/relative_position.hpp"
 #include "preparation/position_bias.hpp"
 
 #include <utility>
 
 namespace impulse {
-
-const FactoredDeltaVelocityMatrix& delta_velocity_matrix_of(const PreparedContact& contact) {
-    if (!contact.delta_velocity_matrix.value) {
-        const ContactPreparation& d = contact.derivation;
-        contact.delta_velocity_matrix.value =
-            factored_delta_velocity_matrix(d.basis, d.relative_position, contact.mass);
-    }
-    return *contact.delta_velocity_matrix.value;
-}
 
 std::vector<MassProperties> mass_properties(std::span<const RigidBody> bodies) {
     std::vector<MassProperties> mass;
@@ -47,80 +37,92 @@ std::optional<double> step_5_position_bias(double penetration, const ResolverSet
     return position_bias(penetration, settings.position_bias, settings.duration);
 }
 
-PreparedContact prepare_contact(int index, const Contact& contact, std::span<const RigidBody> bodies,
-                                std::span<const MassProperties> mass, const ResolverSettings& settings) {
-    const OrientedContact o = oriented(contact);
-
-    // What the steps need of each body (nothing of the world).
-    const auto centre = [&](int i) -> std::optional<Vec3> {
-        if (o.bodies[i] == world_body) return std::nullopt;
-        return bodies[static_cast<std::size_t>(o.bodies[i])].position;
-    };
-    const auto mass_of = [&](int i) -> std::optional<MassProperties> {
-        if (o.bodies[i] == world_body) return std::nullopt;
-        return mass[static_cast<std::size_t>(o.bodies[i])];
-    };
-    const PerBody<MassProperties> body_mass{mass_of(0), mass_of(1)};
-    const PerBody<BodyMotion> motion = contact_motion(o.bodies, bodies);
-
-    // Steps 1-5.
-    const Basis contact_basis = basis(o.normal);
-    const PerBody<Vec3> q_rel = relative_position(contact.point, {centre(0), centre(1)});
-    const UnitImpulseChain chain = delta_velocity_per_unit_impulse(o.normal, q_rel, body_mass);
-    const ContactVelocityTerms velocity =
-        contact_velocity(contact_basis, q_rel, motion, settings.duration, settings.tangential_acceleration_velocity);
-    const DesiredDeltaVelocity desired =
-        desired_delta_velocity(velocity.contact_velocity.x(), contact.restitution, o.normal, motion, settings.duration,
-                               velocity_refinements(settings), step_5_position_bias(contact.penetration, settings));
-
-    // Built in one piece, every member from its value: a PreparedContact declared first and filled in after
-    // would first clear its half kilobyte of optional per-body values, then overwrite them.
-    return PreparedContact{.penetration = contact.penetration,
-                           .contact_velocity = velocity.contact_velocity,
-                           .desired_terms = desired,  // the bookkeeping starts from steps 4 and 5
-                           .derivation = {.contact = index,
-                                          .swapped = o.swapped,
-                                          .bodies = o.bodies,
-                                          .point = contact.point,
-                                          .normal = o.normal,
-                                          .penetration = contact.penetration,
-                                          .restitution = contact.restitution,
-                                          .friction = contact.friction,
-                                          .origin = o.origin,
-                                          .inert = chain.delta_velocity_per_unit_impulse <= 0.0,
-                                          .basis = contact_basis,
-                                          .relative_position = q_rel,
-                                          .unit_impulse_chain = chain,
-                                          .velocity_terms = velocity,
-                                          .desired_terms = desired},
-                           .mass = body_mass,
-                           .delta_velocity_matrix = {}};
-}
-
 namespace {
 
-// One contact's preparation, made where the vector keeps it: emplace_back constructs the element from this by
-// calling the conversion, and the PreparedContact it returns initializes the element itself. (push_back of
-// prepare_contact's result would build it on the stack and then copy its 1.2 kB into the vector.)
-struct PreparationOf {
-    int index;
-    const Contact& contact;
-    std::span<const RigidBody> bodies;
-    std::span<const MassProperties> mass;
-    const ResolverSettings& settings;
-
-    operator PreparedContact() const { return prepare_contact(index, contact, bodies, mass, settings); }
-};
+// prepare_contact's work, into `c` (a vector's element, built where it is kept).
+void prepare(PreparedContact& c, int index, const Contact& contact, std::span<const RigidBody> bodies,
+             std::span<const MassProperties> mass, const ResolverSettings& settings) {
+    const OrientedContact o = oriented(contact);
+    c.contact = index;
+    c.bodies = o.bodies;
+    c.swapped = o.swapped;
+    c.origin = o.origin;
+    c.restitution = contact.restitution;
+    c.friction = contact.friction;
+    c.penetration = contact.penetration;
+    c.basis = basis(o.normal);  // step 1
+    // Steps 2 to 4 per body, by the derivation's kernels (the same the recorder's records are made by).
+    ContactMass body_mass{nullptr, nullptr};
+    std::array<const Vec3*, 2> acceleration{nullptr, nullptr};
+    c.contact_velocity = Vec3::Zero();
+    c.tangential_acceleration_velocity = {0.0, 0.0};
+    for (int i = 0; i < 2; ++i) {
+        c.relative_position[i] = Vec3::Zero();
+        if (o.bodies[i] == world_body) continue;
+        const RigidBody& body = bodies[static_cast<std::size_t>(o.bodies[i])];
+        body_mass[i] = &mass[static_cast<std::size_t>(o.bodies[i])];
+        acceleration[i] = &body.last_frame_acceleration;
+        c.relative_position[i] = contact.point - body.position;  // q - p  (1.8)
+        const BodyContactVelocity v =
+            body_contact_velocity(c.basis.contact_to_world, c.relative_position[i],
+                                  {body.velocity, body.angular_velocity, body.last_frame_acceleration},
+                                  settings.duration, settings.tangential_acceleration_velocity);
+        c.contact_velocity += body_sign(i) * v.local;
+        c.tangential_acceleration_velocity[0] += body_sign(i) * v.tangential_acceleration_velocity.y();
+        c.tangential_acceleration_velocity[1] += body_sign(i) * v.tangential_acceleration_velocity.z();
+    }
+    c.delta_velocity_per_unit_impulse = delta_velocity_per_unit_impulse(o.normal, c.relative_position, body_mass);
+    c.inert = c.delta_velocity_per_unit_impulse <= 0.0;
+    const VelocityRefinements refinements = velocity_refinements(settings);
+    c.desired_terms =
+        desired_delta_velocity(c.contact_velocity.x(), contact.restitution,
+                               velocity_from_acceleration(o.normal, acceleration, settings.duration, refinements),
+                               refinements, step_5_position_bias(contact.penetration, settings));
+}
 
 }  // namespace
 
-std::vector<PreparedContact> prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
-                                              std::span<const MassProperties> mass, const ResolverSettings& settings) {
-    std::vector<PreparedContact> prepared;
-    prepared.reserve(contacts.size());
+PreparedContact prepare_contact(int index, const Contact& contact, std::span<const RigidBody> bodies,
+                                std::span<const MassProperties> mass, const ResolverSettings& settings) {
+    PreparedContact c;
+    prepare(c, index, contact, bodies, mass, settings);
+    return c;
+}
+
+void prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
+                      std::span<const MassProperties> mass, const ResolverSettings& settings,
+                      std::pmr::vector<PreparedContact>& prepared) {
+    prepared.resize(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i)
-        prepared.emplace_back(PreparationOf{static_cast<int>(i), contacts[i], bodies, mass, settings});
-    return prepared;
+        prepare(prepared[i], static_cast<int>(i), contacts[i], bodies, mass, settings);
+}
+
+ContactMass contact_mass(const PreparedContact& contact, std::span<const MassProperties> mass) {
+    const auto of = [&](int i) {
+        return contact.bodies[i] == world_body ? nullptr : &mass[static_cast<std::size_t>(contact.bodies[i])];
+    };
+    return {of(0), of(1)};
+}
+
+PerBody<MassProperties> mass_of(const PreparedContact& contact, std::span<const MassProperties> mass) {
+    const ContactMass m = contact_mass(contact, mass);
+    return {m[0] ? std::optional(*m[0]) : std::nullopt, m[1] ? std::optional(*m[1]) : std::nullopt};
+}
+
+PerBody<Vec3> relative_positions(const PreparedContact& contact) {
+    PerBody<Vec3> q_rel;
+    for (int i = 0; i < 2; ++i)
+        if (contact.bodies[i] != world_body) q_rel[i] = contact.relative_position[i];
+    return q_rel;
+}
+
+ContactKey contact_key(const PreparedContact& contact) {
+    ContactKey key{contact.bodies, contact.origin};
+    if (contact.swapped) {
+        std::swap(key.bodies[0], key.bodies[1]);
+        std::swap(key.origin.features[0], key.origin.features[1]);
+    }
+    return key;
 }
 
 }  // namespace impulse

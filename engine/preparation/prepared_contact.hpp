@@ -1,84 +1,60 @@
 #pragma once
-// A contact made ready for resolution: derivation steps 1-5 computed once (the book computes basis,
-// relative positions and the bodies' world inverse inertia once per frame and never re-derives geometry
-// mid-resolve), plus the three values the resolver keeps up to date as other contacts are resolved.
+// A contact made ready for resolution, one plain struct for every method (solver2d's and qu3e's one constraint
+// per contact): derivation steps 1-5 computed once per frame by the derivation's own functions (the book computes
+// basis, relative positions and the bodies' world inverse inertia once per frame and never re-derives geometry
+// mid-resolve), plus the book's bookkeeping, which its loops keep up to date as other contacts are resolved.
+//
+// Only the values are kept, not their intermediates: when a recorder keeps the frame, record/contact_record.hpp
+// derives the full record of steps 1-5 from the same contact, the same bodies and the same functions. K, the
+// friction rows' and the book's friction solve's matrix, is not kept either: it is computed where it is read
+// (derivation/impulse.hpp), since the book needs it only for the contacts it resolves.
 
 #include "body/rigid_body.hpp"
 #include "contact/contact.hpp"
 #include "derivation/basis.hpp"
 #include "derivation/contact_velocity.hpp"
-#include "derivation/desired_delta_velocity.hpp"
-#include "derivation/impulse.hpp"
 #include "derivation/delta_velocity_per_unit_impulse.hpp"
+#include "derivation/desired_delta_velocity.hpp"
+#include "memory/contact_memory.hpp"
 #include "settings/settings.hpp"
 
 #include <array>
+#include <memory_resource>
+#include <optional>
 #include <span>
 #include <vector>
 
 namespace impulse {
 
-// Steps 1-5 for one contact, exactly as the recorder stores them.
-struct ContactPreparation {
-    int contact;                // index in the input contact list
-    bool swapped;               // given with the world as body 0: bodies exchanged and normal negated
-    std::array<int, 2> bodies;  // after swapping; bodies[1] may be world_body
-    Vec3 point;
-    Vec3 normal;  // after swapping: from body 1 towards body 0
-    double penetration;
-    double restitution;
-    double friction;
-    ContactOrigin origin;                 // the test and features that made it (features swapped with the bodies)
-    bool inert;                           // both bodies immovable: no impulse or move can change this contact
-    Basis basis;                          // step 1
-    PerBody<Vec3> relative_position;      // step 2
-    UnitImpulseChain unit_impulse_chain;  // step 3
-    ContactVelocityTerms velocity_terms;  // step 4
-    DesiredDeltaVelocity desired_terms;   // step 5
-
-    bool operator==(const ContactPreparation&) const = default;
-};
-
-// A value computed on first use and kept beside what it was computed from. Not part of the value of the struct
-// holding it, so comparisons ignore it.
-template <typename T>
-struct Cached {
-    std::optional<T> value;
-
-    // Empty, not defaulted: then a prepared contact built with an empty cache is not cleared byte by byte first.
-    Cached() {}
-    bool operator==(const Cached&) const { return true; }
-};
-
 struct PreparedContact {
-    // Bookkeeping, updated by the linearised formulas whenever a body of this contact moves or changes speed.
-    // First, next to the derivation's bodies, basis and relative positions, which every update reads too.
-    double penetration;
-    Vec3 contact_velocity;
-    DesiredDeltaVelocity desired_terms;
-    ContactPreparation derivation;
-    PerBody<MassProperties> mass;  // the bodies' inverse mass and world inverse inertia when prepared
-    // K and its factors for the book's friction impulse (derivation/impulse.hpp): computed by the first impulse on
-    // this contact and reused by the later ones, since they depend only on what preparation fixed.
-    mutable Cached<FactoredDeltaVelocityMatrix> delta_velocity_matrix;
+    // Left unset: every member is written by prepare_contact (a vector of them is not cleared byte by byte first).
+    PreparedContact() {}
 
-    bool operator==(const PreparedContact&) const = default;
+    // The bookkeeping, updated by the linearised formulas whenever a body of this contact moves or changes speed
+    // (preparation/bookkeeping.hpp). First: every update reads and writes it. The position phase owns the
+    // penetration and the velocity phase the rest, so a method reads its phase's values as prepared unless it
+    // updates them itself.
+    double penetration;                  // m: as detected, then as the position phase's moves left it
+    Vec3 contact_velocity;               // step 4, contact coordinates: v_s = x
+    DesiredDeltaVelocity desired_terms;  // step 5 on that velocity (with Baumgarte's term when it is on)
+
+    int contact;                             // index in the input contact list
+    std::array<int, 2> bodies;               // after swapping: body 1 may be world_body
+    bool swapped;                            // given with the world as body 0: bodies exchanged and normal negated
+    bool inert;                              // d <= 0: no impulse or move can change this contact
+    ContactOrigin origin;                    // the test and features that made it (features swapped with the bodies)
+    double restitution;                      // c
+    double friction;                         // mu
+    Basis basis;                             // step 1: basis.normal points from body 1 towards body 0
+    std::array<Vec3, 2> relative_position;   // step 2, q - p per body; zero for the world
+    double delta_velocity_per_unit_impulse;  // step 3's d
+    // Step 4's tangential acceleration term, body 0's minus body 1's, along tangents 1 and 2 (0 with the refinement
+    // off): the slip last frame's acceleration builds up, which the accumulating methods' friction rows remove too.
+    std::array<double, 2> tangential_acceleration_velocity;
 };
-
-// The Δv a velocity method compares with its epsilon and resolves: the bookkeeping's (with the Baumgarte term
-// of step 5 when it is on).
-inline double desired_of(const PreparedContact& c) {
-    return c.desired_terms.desired_delta_velocity;
-}
-
-// The contact's K and its factors, computed on first use and then kept in the contact.
-const FactoredDeltaVelocityMatrix& delta_velocity_matrix_of(const PreparedContact& contact);
 
 // Each body's mass properties once per frame, with the world inverse inertia R I^-1 R^T.
 std::vector<MassProperties> mass_properties(std::span<const RigidBody> bodies);
-
-// What steps 1-5 are made of, shared by the full preparation below and the rows' (row_preparation.hpp), so the
-// two compute each value the same way.
 
 // Body 0 must be a body: a contact given as (world, body) becomes (body, world) with the normal reversed and
 // the features exchanged, so the normal still points towards body 0.
@@ -98,7 +74,19 @@ std::optional<double> step_5_position_bias(double penetration, const ResolverSet
 PreparedContact prepare_contact(int index, const Contact& contact, std::span<const RigidBody> bodies,
                                 std::span<const MassProperties> mass, const ResolverSettings& settings);
 
-std::vector<PreparedContact> prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
-                                              std::span<const MassProperties> mass, const ResolverSettings& settings);
+// Every contact, in order, into `prepared` (emptied first).
+void prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
+                      std::span<const MassProperties> mass, const ResolverSettings& settings,
+                      std::pmr::vector<PreparedContact>& prepared);
+
+// A prepared contact's bodies' mass, for the kernel (body 1 null for the world) and as the derivation's records
+// take it (body 1 empty for the world).
+ContactMass contact_mass(const PreparedContact& contact, std::span<const MassProperties> mass);
+PerBody<MassProperties> mass_of(const PreparedContact& contact, std::span<const MassProperties> mass);
+// Its relative positions as the derivation's records take them (body 1 empty for the world).
+PerBody<Vec3> relative_positions(const PreparedContact& contact);
+
+// The key the contact had as detected (before preparation put the world second), for ContactMemory.
+ContactKey contact_key(const PreparedContact& contact);
 
 }  // namespace impulse

@@ -2,10 +2,9 @@
 // A trace: everything one run of the resolver computed, as plain structs. The JSON recorder fills it, the
 // trace file stores it (formats/trace_json), and the inspector, lessons and `diff` read it back.
 
+#include "record/contact_record.hpp"
 #include "record/iteration_records.hpp"
-#include "preparation/prepared_contact.hpp"
 #include "record/words.hpp"
-#include "preparation/prepared_contact.hpp"
 #include "scene/scene.hpp"
 
 #include <climits>

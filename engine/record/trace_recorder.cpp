@@ -44,13 +44,16 @@ void TraceRecorder::begin_frame(int frame, std::span<const RigidBody> bodies, st
     count(frame_bytes + frame_body_bytes * bodies.size());
 }
 
-void TraceRecorder::contacts_prepared(std::span<const PreparedContact> contacts) {
+void TraceRecorder::contacts_prepared(const PreparedFrame& frame) {
     if (!recording_) return;
-    trace_.frames.back().contact_count = static_cast<int>(contacts.size());
-    for (const PreparedContact& c : contacts)
-        if (trace_.recording.records_contact(c.derivation.contact))
-            trace_.frames.back().contacts.push_back(c.derivation);
-    count(contact_bytes * trace_.frames.back().contacts.size());
+    FrameRecord& record = trace_.frames.back();
+    record.contact_count = static_cast<int>(frame.detected.size());
+    for (std::size_t i = 0; i < frame.detected.size(); ++i)
+        if (trace_.recording.records_contact(static_cast<int>(i)))
+            record.contacts.push_back(
+                contact_preparation(static_cast<int>(i), frame.detected[i], frame.bodies, frame.mass, frame.settings));
+    visits_.begin(frame);
+    count(contact_bytes * record.contacts.size());
 }
 
 template <typename Update>
@@ -61,20 +64,20 @@ std::vector<Update> TraceRecorder::kept_updates(const std::vector<Update>& updat
     return kept;
 }
 
-void TraceRecorder::position_iteration(const PositionIteration& iteration) {
+void TraceRecorder::position_visit(const PositionVisit& visit) {
     if (!recording_) return;
-    PositionIteration& kept = trace_.frames.back().position.iterations.emplace_back(iteration);
-    if (!trace_.recording.records_contact(iteration.contact)) kept.resolution.reset();
-    if (trace_.recording.contacts) kept.updates = kept_updates(iteration.updates);
+    PositionIteration& kept = trace_.frames.back().position.iterations.emplace_back(visits_.position_iteration(visit));
+    if (!trace_.recording.records_contact(kept.contact)) kept.resolution.reset();
+    if (trace_.recording.contacts) kept.updates = kept_updates(kept.updates);
     count((kept.resolution ? position_iteration_bytes : iteration_line_bytes) +
           position_update_bytes * kept.updates.size());
 }
 
-void TraceRecorder::velocity_iteration(const VelocityIteration& iteration) {
+void TraceRecorder::velocity_visit(const VelocityVisit& visit) {
     if (!recording_) return;
-    VelocityIteration& kept = trace_.frames.back().velocity.iterations.emplace_back(iteration);
-    if (!trace_.recording.records_contact(iteration.contact)) kept.resolution.reset();
-    if (trace_.recording.contacts) kept.updates = kept_updates(iteration.updates);
+    VelocityIteration& kept = trace_.frames.back().velocity.iterations.emplace_back(visits_.velocity_iteration(visit));
+    if (!trace_.recording.records_contact(kept.contact)) kept.resolution.reset();
+    if (trace_.recording.contacts) kept.updates = kept_updates(kept.updates);
     // A full record's size is an average over the methods; a line is mostly its sweep fields, when it has them.
     const std::size_t line_bytes =
         iteration_line_bytes + (kept.sweep ? sweep_place_bytes : 0) + (kept.accumulated ? accumulated_bytes : 0);
@@ -83,6 +86,7 @@ void TraceRecorder::velocity_iteration(const VelocityIteration& iteration) {
 
 void TraceRecorder::end_phase(Phase phase, const PhaseOutcome& outcome) {
     if (!recording_) return;
+    visits_.end_phase();
     FrameRecord& frame = trace_.frames.back();
     (phase == Phase::position ? frame.position.outcome : frame.velocity.outcome) = outcome;
 }

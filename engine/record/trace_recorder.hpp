@@ -12,6 +12,7 @@
 
 #include "record/recorder.hpp"
 #include "record/trace.hpp"
+#include "record/visit_records.hpp"
 
 #include <cstddef>
 #include <cstdint>
@@ -24,11 +25,11 @@ public:
     // Appends frames to `trace`, whose header (scene, settings, filter) the caller fills.
     explicit TraceRecorder(Trace& trace, std::size_t byte_budget = SIZE_MAX) : trace_(trace), budget_(byte_budget) {}
 
-    bool wants_updates() const override { return recording_; }
     void begin_frame(int frame, std::span<const RigidBody> bodies, std::span<const MassProperties> mass) override;
-    void contacts_prepared(std::span<const PreparedContact> contacts) override;
-    void position_iteration(const PositionIteration& iteration) override;
-    void velocity_iteration(const VelocityIteration& iteration) override;
+    bool keeps_frame() const override { return recording_; }
+    void contacts_prepared(const PreparedFrame& frame) override;
+    void position_visit(const PositionVisit& visit) override;
+    void velocity_visit(const VelocityVisit& visit) override;
     void end_phase(Phase phase, const PhaseOutcome& outcome) override;
     void end_frame(std::span<const RigidBody> bodies) override;
 
@@ -46,6 +47,7 @@ private:
     std::vector<Update> kept_updates(const std::vector<Update>& updates) const;
 
     Trace& trace_;
+    VisitRecords visits_;  // the frame's iterations, from the methods' visits
     bool recording_ = false;
     std::size_t budget_;
     std::size_t estimated_ = 0;

@@ -4,7 +4,7 @@
 
 #include "body/rigid_body.hpp"
 #include "contact/contact.hpp"
-#include "record/recorder.hpp"
+#include "record/last_touch.hpp"
 
 #include <array>
 #include <optional>
@@ -21,60 +21,6 @@ struct NonFiniteBody {
     std::array<int, 2> last_contact_bodies{0, world_body};  // that contact's bodies, as detected
 
     bool operator==(const NonFiniteBody&) const = default;
-};
-
-// Passes every report on to the caller's recorder and remembers the last contact an iteration resolved that
-// touched each body (in resolution order, both phases): who to blame if the body ends the step non-finite. An
-// iteration, or each contact of a sweeping method's last visits (contacts_visited), only stamps its contact with
-// a running count (one store, nothing read, so the recorder-off path stays as fast); the body's last contact,
-// the one with the latest stamp, is looked for only when asked.
-class LastTouch final : public Recorder {
-public:
-    LastTouch(Recorder& inner, std::span<const Contact> contacts, std::size_t /*body_count*/)
-        : inner_(inner), contacts_(contacts), stamp_(contacts.size(), 0) {}
-
-    bool wants_updates() const override { return inner_.wants_updates(); }
-    void begin_frame(int frame, std::span<const RigidBody> bodies, std::span<const MassProperties> mass) override {
-        inner_.begin_frame(frame, bodies, mass);
-    }
-    void contacts_prepared(std::span<const PreparedContact> contacts) override { inner_.contacts_prepared(contacts); }
-    void position_iteration(const PositionIteration& iteration) override {
-        touched(iteration.contact);
-        inner_.position_iteration(iteration);
-    }
-    void velocity_iteration(const VelocityIteration& iteration) override {
-        touched(iteration.contact);
-        inner_.velocity_iteration(iteration);
-    }
-    void contacts_visited(std::span<const int> contacts) override {
-        for (const int c : contacts) touched(c);
-        inner_.contacts_visited(contacts);
-    }
-    void end_phase(Phase phase, const PhaseOutcome& outcome) override { inner_.end_phase(phase, outcome); }
-    void end_frame(std::span<const RigidBody> bodies) override { inner_.end_frame(bodies); }
-
-    // The last contact that touched `body`, if any did, and that contact's bodies.
-    std::optional<int> last_contact(int body) const {
-        std::optional<int> last;
-        for (std::size_t c = 0; c < contacts_.size(); ++c) {
-            const std::array<int, 2>& touching = contacts_[c].bodies;
-            if (stamp_[c] == 0 || (touching[0] != body && touching[1] != body)) continue;
-            if (!last || stamp_[c] > stamp_[static_cast<std::size_t>(*last)]) last = static_cast<int>(c);
-        }
-        return last;
-    }
-    std::array<int, 2> bodies_of(int contact) const { return contacts_[static_cast<std::size_t>(contact)].bodies; }
-
-private:
-    void touched(int contact) {
-        if (contact < 0 || contact >= static_cast<int>(contacts_.size())) return;
-        stamp_[static_cast<std::size_t>(contact)] = ++touches_;
-    }
-
-    Recorder& inner_;
-    std::span<const Contact> contacts_;
-    std::vector<long> stamp_;  // per contact: when an iteration last resolved it (1, 2, ...), 0 = never
-    long touches_ = 0;
 };
 
 // The first body (in body order) whose state is not finite, if any, with no contact to blame.

@@ -144,12 +144,16 @@ StepReport World::step(Recorder& recorder) {
 
     // The memory is the world's own: every step of a run recalls the last one's impulses, so warm starting is
     // on whenever the settings ask for it.
-    start = Clock::now();
-    LastTouch touch(recorder, detection.contacts, bodies_.size());
+    LastTouch touch(detection.contacts);
     FrameArena::Frame scratch(arena_);
-    report.resolution = resolve_contacts(bodies_, detection.contacts, scene_.settings, touch, frame_, &memory_,
-                                         Forces{scene_.world.gravity, damping}, scratch.resource(), stop_);
-    report.times.resolve = seconds_since(start);
+    report.resolution = resolve_contacts(bodies_, detection.contacts, scene_.settings, recorder,
+                                         {.frame = frame_,
+                                          .memory = &memory_,
+                                          .forces = Forces{scene_.world.gravity, damping},
+                                          .touch = &touch,
+                                          .times = &report.times,
+                                          .scratch = scratch.resource(),
+                                          .stop = stop_});
 
     report.non_finite = first_non_finite(bodies_, touch);
 

@@ -7,7 +7,8 @@
 //
 // A step, in the reference engine's demo order: integrate every body, detect contacts, resolve them (a method
 // that owns the whole step, soft step, integrates in its own sub-steps: detect, then resolve). Each stage is
-// timed for the profile (never for traces, which must be byte-identical run to run).
+// timed for the profile (StageTimes, resolver/resolver.hpp; never for traces, which must be byte-identical run to
+// run).
 
 #include "memory/contact_memory.hpp"
 #include "memory/frame_arena.hpp"
@@ -22,13 +23,6 @@
 #include <vector>
 
 namespace impulse {
-
-struct StageTimes {
-    double integrate = 0.0;     // s
-    double broad_phase = 0.0;   // s
-    double narrow_phase = 0.0;  // s: the pair tests
-    double resolve = 0.0;       // s
-};
 
 // The most contacts one frame resolves. A box's pair test gives at most 8 contacts, a sphere's 1, so contacts per
 // pair are bounded by the shapes; the number of pairs is not: 3000 spheres at one point are 4.5 million pairs,

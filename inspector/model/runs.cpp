@@ -51,8 +51,8 @@ Trace resolve_once(const Scene& scene, const TraceFilter& recording, TraceBudget
                                                           ", numbered from 0)");
     std::vector<RigidBody> bodies = scene.bodies;
     TraceRecorder recorder(trace, budget.bytes);
-    LastTouch touch(recorder, contacts, bodies.size());
-    resolve_contacts(bodies, contacts, scene.settings, touch);
+    LastTouch touch(contacts);
+    resolve_contacts(bodies, contacts, scene.settings, recorder, {.touch = &touch});
     if (budget.stopped_at) *budget.stopped_at = recorder.stopped_at();
     if (auto non_finite = first_non_finite(bodies, touch)) {
         end_trace_before(trace, 0);

@@ -413,8 +413,10 @@ private:
                 const OrientationUpdate update = policy == AngularLimitPolicy::angle
                                                      ? named(orientation_update_names, k("settings.orientation_update"))
                                                      : OrientationUpdate::first_order;
-                const AngularLimit a = angular_limit(moves, {policy, number(at(limit, "factor"))}, normal,
-                                                     relative_positions(c, bodies), chain(), update);
+                const LimitedMoves limited = angular_limit(moves, {policy, number(at(limit, "factor"))}, normal,
+                                                           relative_positions(c, bodies), chain(), update);
+                const AngularLimit& a = limited.limit;
+                moves = limited.moves;
                 for (std::size_t i = 0; i < 2; ++i) {
                     if (a.maximum[i]) put(at(at(limit, "maximum"), i), *a.maximum[i]);
                     if (a.applied[i]) put(at(at(limit, "applied"), i), *a.applied[i]);

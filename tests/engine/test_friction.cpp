@@ -20,11 +20,11 @@ namespace {
 struct LandingSphere {
     std::vector<RigidBody> bodies{sphere(1.0, 0.5, {0, 0.5, 0}, {1, -2, 0})};
     Contact c = contact(0, world_body, Vec3::Zero(), {0, 1, 0});
-    PreparedContact p = prepared(c, bodies);
+    ContactPreparation d = derivation(c, bodies);
+    PerBody<MassProperties> mass = mass_of(d.bodies, bodies);
 
     Impulse impulse(double friction) const {
-        const ContactPreparation& d = p.derivation;
-        return calculate_impulse(d.basis, d.relative_position, p.mass, p.contact_velocity, 2.0,
+        return calculate_impulse(d.basis, d.relative_position, mass, d.velocity_terms.contact_velocity, 2.0,
                                  d.unit_impulse_chain.delta_velocity_per_unit_impulse, friction);
     }
 };
@@ -45,7 +45,7 @@ TEST_CASE("inside the friction cone the contact stops sliding: the sphere rolls"
     CHECK_CLOSE(g.friction_solve->cone_limit, 2.0);
     CHECK_CLOSE(g.impulse_world, Vec3(-1 / 3.5, 2, 0));
 
-    const VelocityChange change = velocity_change(g.impulse_world, s.p.derivation.relative_position, s.p.mass);
+    const VelocityChange change = velocity_change(g.impulse_world, s.d.relative_position, s.mass);
     RigidBody after = s.bodies[0];
     after.velocity += *change.velocity_change[0];
     after.angular_velocity += *change.rotation_change[0];
@@ -66,7 +66,7 @@ TEST_CASE("outside the friction cone the tangential impulse is cut back onto the
     CHECK_CLOSE(g.impulse, Vec3(2, 0, -0.2));
     CHECK_CLOSE(g.impulse_world, Vec3(-0.2, 2, 0));
 
-    const VelocityChange change = velocity_change(g.impulse_world, s.p.derivation.relative_position, s.p.mass);
+    const VelocityChange change = velocity_change(g.impulse_world, s.d.relative_position, s.mass);
     RigidBody after = s.bodies[0];
     after.velocity += *change.velocity_change[0];
     after.angular_velocity += *change.rotation_change[0];
@@ -80,5 +80,5 @@ TEST_CASE("a contact with friction exactly zero uses the frictionless impulse") 
     const Impulse g = s.impulse(0.0);
     CHECK(g.impulse_model == ImpulseModel::frictionless);
     CHECK_FALSE(g.friction_solve.has_value());
-    CHECK_CLOSE(g.impulse, Vec3(2.0 / s.p.derivation.unit_impulse_chain.delta_velocity_per_unit_impulse, 0, 0));
+    CHECK_CLOSE(g.impulse, Vec3(2.0 / s.d.unit_impulse_chain.delta_velocity_per_unit_impulse, 0, 0));
 }

@@ -41,7 +41,7 @@ TEST_CASE("linear projection never turns a body and splits the move by inverse m
     const std::vector<RigidBody> bodies{box(1.0, {0.5, 0.5, 0.5}, {0.3, 0.5, 0}),
                                         box(3.0, {0.5, 0.5, 0.5}, {0, -0.5, 0})};
     const PreparedContact p = prepared(contact(0, 1, {0.7, 0, 0.2}, {0, 1, 0}, 0.2), bodies);
-    const PositionResolution r = linear_projection(p, 0.2);
+    const PositionResolution r = linear_projection(p, mass_of(p.bodies, bodies), 0.2);
     CHECK_CLOSE(*r.moves.linear_move[0], 0.15);
     CHECK_CLOSE(*r.moves.linear_move[1], -0.05);
     CHECK_CLOSE(*r.change.angular_change[0], Vec3::Zero(), 0.0);
@@ -99,8 +99,8 @@ TEST_CASE("velocity-based resolution moves a falling sphere back along its path 
     const PreparedContact p = prepared(contact(0, world_body, {0, -0.01, 0}, {0, 1, 0}, 0.01), bodies);
     PerBody<BodyMotion> motion;
     motion[0] = BodyMotion{{0, -2, 0}, Vec3::Zero(), Vec3::Zero()};
-    const PositionResolution r =
-        velocity_based(p, motion, 1.0 / 60.0, {AngularLimitPolicy::lever_arm, 0.2}, OrientationUpdate::first_order);
+    const PositionResolution r = velocity_based(p, mass_of(p.bodies, bodies), motion, 1.0 / 60.0,
+                                                {AngularLimitPolicy::lever_arm, 0.2}, OrientationUpdate::first_order);
     REQUIRE(r.rewind.has_value());
     CHECK_CLOSE(r.rewind->closing_velocity, 2.0);
     CHECK_CLOSE(r.rewind->time, 0.005);
@@ -115,8 +115,8 @@ TEST_CASE("velocity-based resolution cannot go back before the frame began and p
     const PreparedContact p = prepared(contact(0, world_body, {0, -0.05, 0}, {0, 1, 0}, 0.05), bodies);
     PerBody<BodyMotion> motion;
     motion[0] = BodyMotion{{0, -2, 0}, Vec3::Zero(), Vec3::Zero()};
-    const PositionResolution r =
-        velocity_based(p, motion, 1.0 / 60.0, {AngularLimitPolicy::lever_arm, 0.2}, OrientationUpdate::first_order);
+    const PositionResolution r = velocity_based(p, mass_of(p.bodies, bodies), motion, 1.0 / 60.0,
+                                                {AngularLimitPolicy::lever_arm, 0.2}, OrientationUpdate::first_order);
     CHECK_CLOSE(r.rewind->time, 1.0 / 60.0);
     CHECK_CLOSE(r.rewind->removed_penetration, 2.0 / 60.0);
     CHECK_CLOSE(r.amount, 0.05 - 2.0 / 60.0);
@@ -211,8 +211,8 @@ TEST_CASE("the angular limit never translates a body that cannot translate") {
     pivot.inverse_inertia_body = Mat3::Identity();
     const std::vector<RigidBody> bodies{pivot};
     const PreparedContact p = prepared(contact(0, world_body, {1, -0.5, 0}, {0, 1, 0}, 1.0), bodies);
-    const PositionResolution r =
-        nonlinear_projection(p, 1.0, {AngularLimitPolicy::lever_arm, 0.2}, OrientationUpdate::first_order);
+    const PositionResolution r = nonlinear_projection(
+        p, mass_of(p.bodies, bodies), 1.0, {AngularLimitPolicy::lever_arm, 0.2}, OrientationUpdate::first_order);
     CHECK(*r.angular_limit->applied[0]);
     CHECK_CLOSE(*r.moves.angular_move[0], 0.2);
     CHECK(*r.moves.linear_move[0] == 0.0);

@@ -113,7 +113,7 @@ TEST_CASE("every preset turns a closing speed v_s into a separating speed of -c 
         const Contact contact = test::contact(0, world_body, {0, 0, 0}, {0, 1, 0}, 0.0, 0.5);
         ContactMemory memory;
         Recorder nobody;
-        resolve_contacts(bodies, std::span(&contact, 1), settings_of(name), nobody, 0, &memory);
+        resolve_contacts(bodies, std::span(&contact, 1), settings_of(name), nobody, {.frame = 0, .memory = &memory});
         const double separating = test::point_velocity(bodies[0], contact.point).dot(contact.normal);
         CHECK(separating == doctest::Approx(-0.5 * -2.0).epsilon(1e-12));
     }
@@ -125,8 +125,8 @@ TEST_CASE("projected Gauss-Seidel converges to the resting impulses of a stack, 
     SphereStack stack = sphere_stack(masses);
     ContactMemory memory;
     Recorder nobody;
-    const ResolutionSummary summary =
-        resolve_contacts(stack.bodies, stack.contacts, stack_settings(400, false), nobody, 0, &memory);
+    const ResolutionSummary summary = resolve_contacts(stack.bodies, stack.contacts, stack_settings(400, false), nobody,
+                                                       {.frame = 0, .memory = &memory});
     CHECK(summary.velocity.stop == StopReason::resolved);
     CHECK(largest_relative_error(stack, memory, resting_impulses(masses)) < 1e-6);
     for (const RigidBody& body : stack.bodies) CHECK(body.velocity.norm() < 1e-8);
@@ -141,11 +141,11 @@ TEST_CASE("a warm-started frame of a resting stack starts from last frame's tota
         ContactMemory memory;
         Recorder nobody;
         const ResolverSettings s = stack_settings(500, warm_start);
-        resolve_contacts(stack.bodies, stack.contacts, s, nobody, 0, &memory);
+        resolve_contacts(stack.bodies, stack.contacts, s, nobody, {.frame = 0, .memory = &memory});
         for (RigidBody& body : stack.bodies) body.velocity.y() -= g * h;
-        if (!trace) return resolve_contacts(stack.bodies, stack.contacts, s, nobody, 1, &memory);
+        if (!trace) return resolve_contacts(stack.bodies, stack.contacts, s, nobody, {.frame = 1, .memory = &memory});
         TraceRecorder recorder(*trace);
-        return resolve_contacts(stack.bodies, stack.contacts, s, recorder, 1, &memory);
+        return resolve_contacts(stack.bodies, stack.contacts, s, recorder, {.frame = 1, .memory = &memory});
     };
     Trace warm_trace;
     const ResolutionSummary warm = second_frame(true, &warm_trace);
@@ -172,7 +172,7 @@ TEST_CASE("a separating contact keeps a zero total and records the push-only cla
     Trace trace;
     TraceRecorder recorder(trace);
     ContactMemory memory;
-    resolve_contacts(bodies, std::span(&contact, 1), settings_of("pgs"), recorder, 0, &memory);
+    resolve_contacts(bodies, std::span(&contact, 1), settings_of("pgs"), recorder, {.frame = 0, .memory = &memory});
     CHECK(bodies[0].velocity == Vec3(0, 1, 0));
     const VelocityIteration& it = trace.frames.at(0).velocity.iterations.at(0);
     CHECK(it.accumulated->unclamped.x() == doctest::Approx(-1.0));
@@ -189,7 +189,7 @@ TEST_CASE("a box sliding fast on mu 0.3 gets its friction total clamped to the c
     Trace trace;
     TraceRecorder recorder(trace);
     ContactMemory memory;
-    resolve_contacts(bodies, std::span(&contact, 1), settings_of("pgs"), recorder, 0, &memory);
+    resolve_contacts(bodies, std::span(&contact, 1), settings_of("pgs"), recorder, {.frame = 0, .memory = &memory});
     const VelocityIteration& last = trace.frames.at(0).velocity.iterations.back();
     CHECK((last.accumulated->clamp == ImpulseClamp::friction || last.accumulated->clamp == ImpulseClamp::both));
     CHECK(last.resolution->impulse_terms.impulse_model == ImpulseModel::sliding_friction);
@@ -211,7 +211,7 @@ TEST_CASE("the split impulse removes penetration without adding kinetic energy")
         for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
         ContactMemory memory;
         Recorder nobody;
-        resolve_contacts(bodies, std::span(&contact, 1), scene.settings, nobody, 0, &memory);
+        resolve_contacts(bodies, std::span(&contact, 1), scene.settings, nobody, {.frame = 0, .memory = &memory});
         return bodies[0];
     };
     const RigidBody split = run({"preset=pgs_split"});
@@ -227,9 +227,9 @@ TEST_CASE("the split impulse removes penetration without adding kinetic energy")
 
 TEST_CASE("recorded and unrecorded runs of each method are bit-identical") {
     // Every row of the method table, with the book's velocities or positions around it, every preset, and the
-    // step-5 and friction options: the sweeping methods run one loop compiled with and without the records, and
-    // the accumulating methods read their rows from the full preparation when recorded, from the lean one when
-    // not (tests/engine/test_row_preparation.cpp compares the two directly).
+    // step-5 and friction options: every method runs one loop and reports its visits only when the recorder keeps
+    // the frame, and the recorder builds its records apart (record/visit_records.hpp), so a run watched and one
+    // not must end in the same bits.
     std::vector<std::vector<std::string>> runs = method_runs;
     for (const auto& row : velocity_methods) runs.push_back({"velocity_method=" + std::string(row.name)});
     for (const auto& row : position_methods) {

@@ -17,17 +17,18 @@ namespace {
 struct Outcome {
     std::vector<RigidBody> before;
     std::vector<RigidBody> after;
-    PreparedContact prepared;
+    ContactPreparation prepared;
     Impulse impulse;
 };
 
 Outcome apply_impulse(const RandomContact& r) {
-    Outcome o{r.bodies, r.bodies, prepared(r.contact, r.bodies), {}};
-    const ContactPreparation& d = o.prepared.derivation;
-    o.impulse = calculate_impulse(d.basis, d.relative_position, o.prepared.mass, o.prepared.contact_velocity,
-                                  o.prepared.desired_terms.desired_delta_velocity,
+    Outcome o{r.bodies, r.bodies, derivation(r.contact, r.bodies), {}};
+    const ContactPreparation& d = o.prepared;
+    const PerBody<MassProperties> mass = mass_of(d.bodies, r.bodies);
+    o.impulse = calculate_impulse(d.basis, d.relative_position, mass, d.velocity_terms.contact_velocity,
+                                  d.desired_terms.desired_delta_velocity,
                                   d.unit_impulse_chain.delta_velocity_per_unit_impulse, r.contact.friction);
-    const VelocityChange change = velocity_change(o.impulse.impulse_world, d.relative_position, o.prepared.mass);
+    const VelocityChange change = velocity_change(o.impulse.impulse_world, d.relative_position, mass);
     for (int i = 0; i < 2; ++i) {
         if (d.bodies[i] == world_body) continue;
         RigidBody& b = o.after[static_cast<std::size_t>(d.bodies[i])];
@@ -111,14 +112,14 @@ TEST_CASE("with friction the slip stops inside the cone and the impulse lies on 
         r.contact.friction = *in_range(0.05, 1.5);
         require_closing(r);
         const Outcome o = apply_impulse(r);
-        const ContactPreparation& d = o.prepared.derivation;
+        const ContactPreparation& d = o.prepared;
         const Vec3 after = to_contact(d.basis, relative_point_velocity(o.after, r.contact));
-        const double closing = -o.prepared.contact_velocity.x();
+        const double closing = -o.prepared.velocity_terms.contact_velocity.x();
         // Either way the normal velocity reaches its target: -c times the closing speed.
         if (o.impulse.impulse_model != ImpulseModel::frictionless)
             RC_ASSERT(std::abs(after.x() - r.contact.restitution * closing) <= 1e-9 * (1.0 + closing));
         const Vec3& g = o.impulse.impulse;
-        const double scale = 1.0 + o.prepared.contact_velocity.norm();
+        const double scale = 1.0 + o.prepared.velocity_terms.contact_velocity.norm();
         switch (o.impulse.impulse_model) {
             case ImpulseModel::static_friction:
                 ++stuck;
@@ -147,13 +148,14 @@ TEST_CASE("after a nonlinear projection the linearised penetration of that conta
         const PreparedContact p = prepared(r.contact, r.bodies);
         const auto policy = *rc::gen::element(AngularLimitPolicy::none, AngularLimitPolicy::fixed,
                                               AngularLimitPolicy::lever_arm, AngularLimitPolicy::angle);
-        const PositionResolution res = nonlinear_projection(
-            p, r.contact.penetration, {policy, default_angular_limit_factor(policy)}, OrientationUpdate::first_order);
+        const PositionResolution res =
+            nonlinear_projection(p, mass_of(p.bodies, r.bodies), r.contact.penetration,
+                                 {policy, default_angular_limit_factor(policy)}, OrientationUpdate::first_order);
         double removed = 0.0;
         for (int i = 0; i < 2; ++i) {
             if (!res.change.linear_change[i]) continue;
             const Vec3 move =
-                *res.change.linear_change[i] + res.change.angular_change[i]->cross(*p.derivation.relative_position[i]);
+                *res.change.linear_change[i] + res.change.angular_change[i]->cross(p.relative_position[i]);
             removed += body_sign(i) * move.dot(r.contact.normal);
         }
         RC_ASSERT(std::abs(removed - r.contact.penetration) <= 1e-12 * (1.0 + r.contact.penetration));
@@ -163,16 +165,16 @@ TEST_CASE("after a nonlinear projection the linearised penetration of that conta
 TEST_CASE("the angular limit keeps the total move of each body that can translate, and only changes its split") {
     check_property("angular limit keeps the total", [] {
         const RandomContact r = any_contact();
-        const PreparedContact p = prepared(r.contact, r.bodies);
-        const PenetrationInertia inertia = penetration_inertia(p.derivation.unit_impulse_chain);
-        MoveSplit moves = move_split(r.contact.penetration, inertia);
-        const MoveSplit unlimited = moves;
+        const ContactPreparation d = derivation(r.contact, r.bodies);
+        const PenetrationInertia inertia = penetration_inertia(d.unit_impulse_chain);
+        const MoveSplit unlimited = move_split(r.contact.penetration, inertia);
         const auto policy =
             *rc::gen::element(AngularLimitPolicy::fixed, AngularLimitPolicy::lever_arm, AngularLimitPolicy::angle);
         const double factor = policy == AngularLimitPolicy::angle ? *in_range(1.0, 90.0) : *in_range(0.0, 0.5);
-        const AngularLimit limit =
-            angular_limit(moves, {policy, factor}, r.contact.normal, p.derivation.relative_position,
-                          p.derivation.unit_impulse_chain, OrientationUpdate::first_order);
+        const LimitedMoves limited = angular_limit(unlimited, {policy, factor}, r.contact.normal, d.relative_position,
+                                                   d.unit_impulse_chain, OrientationUpdate::first_order);
+        const MoveSplit& moves = limited.moves;
+        const AngularLimit& limit = limited.limit;
         for (int i = 0; i < 2; ++i) {
             if (!moves.linear_move[i]) continue;
             const double total_before = *unlimited.linear_move[i] + *unlimited.angular_move[i];

@@ -189,8 +189,8 @@ TEST_CASE("the recorder's frame range records nothing outside it") {
     Run r{three_spheres(), {}};
     r.trace.recording.first_frame = r.trace.recording.last_frame = 3;
     TraceRecorder recorder(r.trace);
-    resolve_contacts(r.bodies, three_ground_contacts(0.05, 0.2, 0.1), plain_settings(), recorder, 2);
+    resolve_contacts(r.bodies, three_ground_contacts(0.05, 0.2, 0.1), plain_settings(), recorder, {.frame = 2});
     CHECK(r.trace.frames.empty());
-    resolve_contacts(r.bodies, three_ground_contacts(0.05, 0.2, 0.1), plain_settings(), recorder, 3);
+    resolve_contacts(r.bodies, three_ground_contacts(0.05, 0.2, 0.1), plain_settings(), recorder, {.frame = 3});
     CHECK(r.trace.frames.size() == 1);
 }

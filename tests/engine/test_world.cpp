@@ -201,25 +201,8 @@ TEST_CASE("the contact blamed for a body is the last one resolved on it, whichev
     contacts[0].bodies = {0, 1};
     contacts[1].bodies = {1, world_body};
     contacts[2].bodies = {2, world_body};
-    Recorder nobody;
-    LastTouch touch(nobody, contacts, 4);
-    const auto position = [](int contact) {
-        return PositionIteration{0, contact, 0.0, 0.0, std::nullopt, std::nullopt, {}};
-    };
-    const auto velocity = [](int contact) {
-        return VelocityIteration{.iteration = 0,
-                                 .contact = contact,
-                                 .desired_delta_velocity = 0.0,
-                                 .epsilon = 0.0,
-                                 .sweep = {},
-                                 .accumulated = {},
-                                 .resolution = {},
-                                 .updates = {}};
-    };
-    touch.position_iteration(position(1));
-    touch.position_iteration(position(0));
-    touch.velocity_iteration(velocity(2));
-    touch.velocity_iteration(velocity(1));
+    LastTouch touch(contacts);
+    for (const int contact : {1, 0, 2, 1}) touch.touched(contact);
     CHECK(touch.last_contact(0) == 0);
     CHECK(touch.last_contact(1) == 1);
     CHECK(touch.last_contact(2) == 2);

@@ -35,8 +35,8 @@ Detection step_by_hand(const Scene& scene, std::vector<RigidBody>& bodies, Conta
         for (RigidBody& body : bodies)
             integrate(body, scene.world.gravity, scene.settings.duration, damping, scene.settings.orientation_update);
     Detection detection = detect_contacts(scene, bodies);
-    resolve_contacts(bodies, detection.contacts, scene.settings, recorder, frame, memory,
-                     Forces{scene.world.gravity, damping});
+    resolve_contacts(bodies, detection.contacts, scene.settings, recorder,
+                     {.frame = frame, .memory = memory, .forces = Forces{scene.world.gravity, damping}});
     return detection;
 }
 

@@ -35,11 +35,12 @@ struct PickLog : Recorder {
     std::vector<std::tuple<int, int, int, double>> picks;  // frame, phase, contact, value
     int frame = 0;
     void begin_frame(int f, std::span<const RigidBody>, std::span<const MassProperties>) override { frame = f; }
-    void position_iteration(const PositionIteration& it) override {
-        picks.emplace_back(frame, 0, it.contact, it.penetration);
+    bool keeps_frame() const override { return true; }
+    void position_visit(const PositionVisit& v) override {
+        picks.emplace_back(frame, 0, v.contact, v.resolution->penetration);
     }
-    void velocity_iteration(const VelocityIteration& it) override {
-        picks.emplace_back(frame, 1, it.contact, it.desired_delta_velocity);
+    void velocity_visit(const VelocityVisit& v) override {
+        picks.emplace_back(frame, 1, v.contact, v.resolution->desired_terms.desired_delta_velocity);
     }
 };
 
@@ -157,7 +158,7 @@ TEST_CASE("both worst-first searches choose the same contact after any sequence 
     for (PreparedContact& c : contacts) {
         const int a = static_cast<int>(random() % bodies);
         const int b = random() % 3 == 0 ? static_cast<int>(random() % bodies) : world_body;
-        c.derivation.bodies = {a, b == a ? world_body : b};
+        c.bodies = {a, b == a ? world_body : b};
         c.penetration = 0.01 * static_cast<double>(random() % 7);
     }
     const auto penetration_of = [](const PreparedContact& c) { return c.penetration; };
@@ -180,7 +181,7 @@ TEST_CASE("both worst-first searches choose the same contact after any sequence 
             scan.set_aside(*a);
             queue.set_aside(*a);
         }
-        const std::array<int, 2> moved = contacts[static_cast<std::size_t>(*a)].derivation.bodies;
+        const std::array<int, 2> moved = contacts[static_cast<std::size_t>(*a)].bodies;
         const std::vector<int> sharing(queue.sharing(moved).begin(), queue.sharing(moved).end());
         for (const int i : sharing)
             contacts[static_cast<std::size_t>(i)].penetration = 0.01 * static_cast<double>(random() % 7);
@@ -193,7 +194,7 @@ TEST_CASE("both worst-first searches choose the same contact after any sequence 
 TEST_CASE("the contacts sharing a body come once each and in index order") {
     const auto contact_between = [](int a, int b) {
         PreparedContact c{};
-        c.derivation.bodies = {a, b};
+        c.bodies = {a, b};
         return c;
     };
     // Contact 3 touches both bodies 0 and 1; contact 1 touches neither.

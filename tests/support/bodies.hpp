@@ -5,6 +5,7 @@
 #include "contact/contact.hpp"
 #include "shapes/shape.hpp"
 #include "preparation/prepared_contact.hpp"
+#include "record/contact_record.hpp"
 #include "settings/settings.hpp"
 
 #include <vector>
@@ -55,6 +56,23 @@ inline PreparedContact prepared(const Contact& c, const std::vector<RigidBody>& 
                                 const ResolverSettings& settings = plain_settings()) {
     const std::vector<MassProperties> mass = mass_properties(bodies);
     return prepare_contact(0, c, bodies, mass, settings);
+}
+
+// Steps 1-5 of `c` with every intermediate, as the recorder derives them.
+inline ContactPreparation derivation(const Contact& c, const std::vector<RigidBody>& bodies,
+                                     const ResolverSettings& settings = plain_settings()) {
+    return contact_preparation(0, c, bodies, mass_properties(bodies), settings);
+}
+
+// The mass of a contact's bodies, as the derivation's steps take it (body 1 empty for the world).
+inline PerBody<MassProperties> mass_of(const std::array<int, 2>& contact_bodies, const std::vector<RigidBody>& bodies) {
+    PerBody<MassProperties> mass;
+    for (int i = 0; i < 2; ++i)
+        if (contact_bodies[i] != world_body) {
+            const RigidBody& b = bodies[static_cast<std::size_t>(contact_bodies[i])];
+            mass[i] = MassProperties{b.inverse_mass, world_inverse_inertia(b)};
+        }
+    return mass;
 }
 
 // Velocity of a body's material point at world position q, straight from the body (9.5).

@@ -1,0 +1,48 @@
+#include "record/contact_record.hpp"
+
+#include "derivation/relative_position.hpp"
+#include "preparation/prepared_contact.hpp"
+
+namespace impulse {
+
+ContactPreparation contact_preparation(int index, const Contact& contact, std::span<const RigidBody> bodies,
+                                       std::span<const MassProperties> mass, const ResolverSettings& settings) {
+    const OrientedContact o = oriented(contact);
+    // What the steps need of each body (nothing of the world).
+    const auto centre = [&](int i) -> std::optional<Vec3> {
+        if (o.bodies[i] == world_body) return std::nullopt;
+        return bodies[static_cast<std::size_t>(o.bodies[i])].position;
+    };
+    const auto mass_of = [&](int i) -> std::optional<MassProperties> {
+        if (o.bodies[i] == world_body) return std::nullopt;
+        return mass[static_cast<std::size_t>(o.bodies[i])];
+    };
+    const PerBody<MassProperties> body_mass{mass_of(0), mass_of(1)};
+    const PerBody<BodyMotion> motion = contact_motion(o.bodies, bodies);
+
+    const Basis contact_basis = basis(o.normal);
+    const PerBody<Vec3> q_rel = relative_position(contact.point, {centre(0), centre(1)});
+    const UnitImpulseChain chain = delta_velocity_per_unit_impulse(o.normal, q_rel, body_mass);
+    const ContactVelocityTerms velocity =
+        contact_velocity(contact_basis, q_rel, motion, settings.duration, settings.tangential_acceleration_velocity);
+    const DesiredDeltaVelocity desired =
+        desired_delta_velocity(velocity.contact_velocity.x(), contact.restitution, o.normal, motion, settings.duration,
+                               velocity_refinements(settings), step_5_position_bias(contact.penetration, settings));
+    return {.contact = index,
+            .swapped = o.swapped,
+            .bodies = o.bodies,
+            .point = contact.point,
+            .normal = o.normal,
+            .penetration = contact.penetration,
+            .restitution = contact.restitution,
+            .friction = contact.friction,
+            .origin = o.origin,
+            .inert = chain.delta_velocity_per_unit_impulse <= 0.0,
+            .basis = contact_basis,
+            .relative_position = q_rel,
+            .unit_impulse_chain = chain,
+            .velocity_terms = velocity,
+            .desired_terms = desired};
+}
+
+}  // namespace impulse

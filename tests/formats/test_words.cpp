@@ -11,6 +11,7 @@
 #include "record/trace_recorder.hpp"
 #include "record/words.hpp"
 #include "resolver/resolver.hpp"
+#include "resolver/settings_names.hpp"
 #include "settings/settings.hpp"
 #include "formats/settings_json.hpp"
 
@@ -189,6 +190,34 @@ TEST_CASE("the committed trace schema and the word list name the same keys, of t
             CHECK(in_schema.count(key) == 1);
         }
     }
+}
+
+namespace {
+
+// A method table's names in its order, as a schema's enum spells them (`skip`: a name the enum leaves out).
+template <typename Table>
+formats::json names_in_schema_order(const Table& names, std::string_view skip = {}) {
+    formats::json list = formats::json::array();
+    for (const auto& entry : names)
+        if (entry.second != skip) list.push_back(std::string(entry.second));
+    return list;
+}
+
+}  // namespace
+
+TEST_CASE("the schemas list the method table's methods, in its order, so a new method is refused nowhere") {
+    const formats::json scene = formats::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/schemas/scene.schema.json"));
+    const formats::json trace = formats::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/schemas/trace.schema.json"));
+    const formats::json positions = names_in_schema_order(position_method_names);
+    const formats::json velocities = names_in_schema_order(velocity_method_names);
+    const formats::json& settings = scene["$defs"]["settings"]["properties"];
+    CHECK(settings["position_method"]["enum"] == positions);
+    CHECK(settings["velocity_method"]["enum"] == velocities);
+    CHECK(trace["$defs"]["position_phase"]["properties"]["method"]["enum"] == positions);
+    CHECK(trace["$defs"]["velocity_phase"]["properties"]["method"]["enum"] == velocities);
+    // A position iteration is made by a method that iterates: every one but `none`.
+    CHECK(trace["$defs"]["position_iteration"]["properties"]["method"]["enum"] ==
+          names_in_schema_order(position_method_names, "none"));
 }
 
 TEST_CASE("every key a trace writes is a word of its item, its value of the word's kind") {

@@ -327,17 +327,21 @@ std::optional<Axis> least_overlap_every_axis(const Oriented& A, const Oriented& 
     return best;
 }
 
-// The same choice from about half the arithmetic (box_and_box's; the test compares the two on random pairs).
-std::optional<Axis> least_overlap_screened(const Oriented& A, const Oriented& B, const Vec3& between, int a, int b) {
-    // The separating-axis test in two passes. The first estimates every axis's overlap from the dot products of
-    // the boxes' axes, R_ij = a_i . b_j, and of the centres' offset (Gottschalk, Lin and Manocha 1996, OBBTree):
-    // along a face axis a_i the overlap is h_a,i + sum_j h_b,j |R_ij| - |t . a_i|, along an edge axis
-    // a_i x b_j each radius takes two terms of |R| (the box's other two axes). The second computes the exact
-    // overlap (overlap_along) only where an estimate could decide otherwise than the exact value would: an axis
-    // estimated within `screen` of zero (does it separate?) and the axes within `screen` of their kind's least
-    // overlap (which is least?). Estimate and exact value differ by rounding, far less than `screen`, so the
-    // decisions are those of the exact test on every axis, and the chosen axes' directions and overlaps are
-    // the exact ones: the same contacts to the bit, for about half the arithmetic.
+// The axes in the exact test's order: face a_0, face b_0, a_1, b_1, a_2, b_2, then the edges a_i x b_j.
+constexpr int axis_count = 15;
+
+// The first pass of least_overlap_screened: every axis's overlap estimated from the dot products of the boxes'
+// axes, R_ij = a_i . b_j, and of the centres' offset (Gottschalk, Lin and Manocha 1996, OBBTree): along a face
+// axis a_i the overlap is h_a,i + sum_j h_b,j |R_ij| - |t . a_i|, along an edge axis a_i x b_j each radius takes
+// two terms of |R| (the box's other two axes).
+struct OverlapEstimates {
+    std::array<double, axis_count> estimate;
+    std::array<bool, axis_count> exists;
+    std::array<Vec3, 9> cross;  // edge axes, lower-numbered body's edge first
+    double screen;              // how far an estimate may be from the exact overlap, with a wide margin
+};
+
+OverlapEstimates estimated_overlaps(const Oriented& A, const Oriented& B, const Vec3& between, bool a_first) {
     const Vec3& ha = A.half;
     const Vec3& hb = B.half;
     double abs_r[3][3], ta[3], tb[3];
@@ -346,33 +350,45 @@ std::optional<Axis> least_overlap_screened(const Oriented& A, const Oriented& B,
         tb[i] = between.dot(B.axes.col(i));
         for (int j = 0; j < 3; ++j) abs_r[i][j] = std::abs(A.axes.col(i).dot(B.axes.col(j)));
     }
-    const double screen = 1e-9 * (ha.sum() + hb.sum() + between.norm());
-    const double order = a < b ? 1.0 : -1.0;
-    // The axes in the exact test's order: face a_0, face b_0, a_1, b_1, a_2, b_2, then the edges a_i x b_j.
-    constexpr int axis_count = 15;
-    std::array<double, axis_count> estimate;
-    std::array<bool, axis_count> exists;
-    std::array<Vec3, 9> cross;  // edge axes, lower-numbered body's edge first
+    OverlapEstimates e;
+    e.screen = 1e-9 * (ha.sum() + hb.sum() + between.norm());
+    const double order = a_first ? 1.0 : -1.0;
     for (int k = 0; k < 3; ++k) {
-        estimate[2 * k] = ha[k] + (hb[0] * abs_r[k][0] + hb[1] * abs_r[k][1] + hb[2] * abs_r[k][2]) - std::abs(ta[k]);
-        estimate[2 * k + 1] =
+        e.estimate[2 * k] = ha[k] + (hb[0] * abs_r[k][0] + hb[1] * abs_r[k][1] + hb[2] * abs_r[k][2]) - std::abs(ta[k]);
+        e.estimate[2 * k + 1] =
             hb[k] + (ha[0] * abs_r[0][k] + ha[1] * abs_r[1][k] + ha[2] * abs_r[2][k]) - std::abs(tb[k]);
-        exists[2 * k] = exists[2 * k + 1] = true;
+        e.exists[2 * k] = e.exists[2 * k + 1] = true;
     }
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
-            const int e = 3 * i + j, at = 6 + e;
+            const int edge = 3 * i + j, at = 6 + edge;
             // Lower-numbered body's edge x the other's, whichever order the boxes came in, so the tie-break in
             // overlap_along flips it exactly once when they are swapped.
-            cross[e] = order * A.axes.col(i).cross(B.axes.col(j));
-            const double length = cross[e].norm();
-            exists[at] = length >= parallel_edges;
-            if (!exists[at]) continue;
+            e.cross[edge] = order * A.axes.col(i).cross(B.axes.col(j));
+            const double length = e.cross[edge].norm();
+            e.exists[at] = length >= parallel_edges;
+            if (!e.exists[at]) continue;
             const int i1 = (i + 1) % 3, i2 = (i + 2) % 3, j1 = (j + 1) % 3, j2 = (j + 2) % 3;
             const double radius_a = ha[i1] * abs_r[i2][j] + ha[i2] * abs_r[i1][j];
             const double radius_b = hb[j1] * abs_r[i][j2] + hb[j2] * abs_r[i][j1];
-            estimate[at] = (radius_a + radius_b - std::abs(between.dot(cross[e]))) / length;
+            e.estimate[at] = (radius_a + radius_b - std::abs(between.dot(e.cross[edge]))) / length;
         }
+    return e;
+}
+
+// The same choice from about half the arithmetic (box_and_box's; the test compares the two on random pairs).
+std::optional<Axis> least_overlap_screened(const Oriented& A, const Oriented& B, const Vec3& between, int a, int b) {
+    // The separating-axis test in two passes. The first estimates every axis's overlap (estimated_overlaps). The
+    // second computes the exact overlap (overlap_along) only where an estimate could decide otherwise than the
+    // exact value would: an axis estimated within `screen` of zero (does it separate?) and the axes within
+    // `screen` of their kind's least overlap (which is least?). Estimate and exact value differ by rounding, far
+    // less than `screen`, so the decisions are those of the exact test on every axis, and the chosen axes'
+    // directions and overlaps are the exact ones: the same contacts to the bit, for about half the arithmetic.
+    const OverlapEstimates estimates = estimated_overlaps(A, B, between, a < b);
+    const std::array<double, axis_count>& estimate = estimates.estimate;
+    const std::array<bool, axis_count>& exists = estimates.exists;
+    const std::array<Vec3, 9>& cross = estimates.cross;
+    const double screen = estimates.screen;
     const auto exact = [&](int at, Vec3& direction) {
         const Vec3 axis = at < 6 ? (at % 2 == 0 ? A.axes.col(at / 2) : B.axes.col(at / 2)) : cross[at - 6];
         return overlap_along(A, B, between, axis, a < b, direction);

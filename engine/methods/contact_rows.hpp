@@ -267,9 +267,10 @@ IMPULSE_ROW_FUNCTION bool friction_rows(const ContactRow& row, double s1, double
     return true;
 }
 
-// One visit's three rows on the velocity `velocity` (row_velocity). The row's total is not changed here.
-IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& velocity, const NormalTarget& target) {
-    const Axes before = row.total_impulse;
+// One visit's three rows on the velocity `velocity` (row_velocity), from the total `before` (the row's, or a kept
+// visit's when the recorder is shown it). The row's total is not changed here.
+IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& before, const Axes& velocity,
+                                         const NormalTarget& target) {
     double unclamped_n;
     const double n = normal_row(before.n, velocity.n, row.normal_mass, target, unclamped_n);
     double free_x = before.t1, free_y = before.t2, x = 0.0, y = 0.0;
@@ -286,6 +287,10 @@ IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& velo
     return RowVisit{before, {unclamped_n, free_x, free_y}, {n, x, y}, unclamped_n < 0.0, sliding};
 }
 
+IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& velocity, const NormalTarget& target) {
+    return solve_rows(row, row.total_impulse, velocity, target);
+}
+
 // The normal row alone (soft step's restitution, the split impulse's pushes): tangential totals unchanged.
 IMPULSE_ROW_FUNCTION RowVisit solve_normal_row(const ContactRow& row, double normal_velocity,
                                                const NormalTarget& target) {
@@ -296,27 +301,25 @@ IMPULSE_ROW_FUNCTION RowVisit solve_normal_row(const ContactRow& row, double nor
     return v;
 }
 
-// A visit as a method keeps it for the recorder while its loop runs: the velocity it read and its totals. Kept in a
-// buffer and reported once the sweep is over, since a call to the recorder inside the loop would keep every value
-// of the visit alive across it (in memory) on every visit, recorded or not.
+// A visit as a method keeps it for the recorder while its loop runs: what it read, the velocity and the total
+// before. Kept in a buffer, before the visit is solved, and reported once the sweep is over with the visit solved
+// again from them by the same solve_rows (same inputs, same bits): a call to the recorder inside the loop would keep
+// every value of the visit alive across it, and so would keeping the visit's results (its totals unclamped and
+// after, the clamps), on every visit, recorded or not (what the two kept velocity and total need is live anyway).
 struct KeptVisit {
     Axes velocity;
-    RowVisit totals;
+    Axes before;
 };
 
 // Keeps a visit, value by value: a copy of the structs whole would keep them in memory through the whole loop.
-IMPULSE_ROW_FUNCTION void keep_visit(KeptVisit& kept, const Axes& velocity, const RowVisit& v) {
+IMPULSE_ROW_FUNCTION void keep_visit(KeptVisit& kept, const Axes& velocity, const Axes& before) {
     const auto copy = [](Axes& to, const Axes& from) {
         to.n = from.n;
         to.t1 = from.t1;
         to.t2 = from.t2;
     };
     copy(kept.velocity, velocity);
-    copy(kept.totals.before, v.before);
-    copy(kept.totals.unclamped, v.unclamped);
-    copy(kept.totals.after, v.after);
-    kept.totals.pushed_only = v.pushed_only;
-    kept.totals.sliding = v.sliding;
+    copy(kept.before, before);
 }
 
 // A total from elsewhere (last frame's, re-projected on this frame's basis) put inside the limits a total

@@ -69,7 +69,7 @@ public:
             if (!total) continue;
             // The warm start has no target; the recorder is shown the velocity it started from.
             if (frame_.keeping)
-                report(r, {row_velocity(active_.rows[r], bodies_.data()), *total},
+                report(r, row_velocity(active_.rows[r], bodies_.data()), *total,
                        SweepPlace{0, 0, SolverStage::warm_start});
             apply(active_.rows[r], bodies_.data(), *total);
             ++iterations_;
@@ -89,15 +89,19 @@ public:
         double largest = 0.0;
         for (std::size_t r = 0; r < count; ++r) {
             const Axes velocity = row_velocity(rows[r], bodies);
-            const RowVisit v = solve_rows(rows[r], velocity, NormalTarget{targets[r]});
+            const Axes before = rows[r].total_impulse;
             if (kept) [[unlikely]]
-                keep_visit(kept[r], velocity, v);
+                keep_visit(kept[r], velocity, before);
+            const RowVisit v = solve_rows(rows[r], before, velocity, NormalTarget{targets[r]});
             largest = std::max(largest, velocity_change_squared(rows[r], v.increment()));
             apply(rows[r], bodies, v);
         }
         iterations_ += static_cast<int>(count);
         if (kept)
-            for (std::size_t r = 0; r < count; ++r) report(r, kept[r], SweepPlace{0, pass, SolverStage::solve});
+            for (std::size_t r = 0; r < count; ++r)  // each visit solved again from what it read (KeptVisit)
+                report(r, kept[r].velocity,
+                       solve_rows(rows[r], kept[r].before, kept[r].velocity, NormalTarget{targets[r]}),
+                       SweepPlace{0, pass, SolverStage::solve});
         return largest;
     }
 
@@ -120,7 +124,7 @@ private:
         keep_total(row, v.after);
     }
 
-    void report(std::size_t r, const KeptVisit& kept, const SweepPlace& place) {
+    void report(std::size_t r, const Axes& velocity, const RowVisit& totals, const SweepPlace& place) {
         const ContactRow& row = active_.rows[r];
         const PreparedContact& c = frame_.contacts[static_cast<std::size_t>(row.contact)];
         VelocityVisit visit{.contact = row.contact,
@@ -128,12 +132,12 @@ private:
                             .epsilon = frame_.settings.velocity_epsilon,
                             .updates = DesiredFollows::row_target,
                             .resolution = nullptr,
-                            .contact_velocity = vector_of(kept.velocity),
+                            .contact_velocity = vector_of(velocity),
                             .desired_terms = c.desired_terms,
-                            .accumulated = kept.totals.accumulated(),
+                            .accumulated = totals.accumulated(),
                             .friction_rows = row.friction != 0.0};
-        visit.desired_terms.separating_velocity = kept.velocity.n;
-        visit.desired_terms.desired_delta_velocity = targets_[r] - kept.velocity.n;
+        visit.desired_terms.separating_velocity = velocity.n;
+        visit.desired_terms.desired_delta_velocity = targets_[r] - velocity.n;
         frame_.recorder.velocity_visit(visit);
     }
 

@@ -196,15 +196,17 @@ private:
             RowVisit v;  // from 0: the total counts what this sub-step has applied
             v.unclamped = v.after = row.total_impulse;
             if (kept) [[unlikely]]
-                keep_visit(kept[r], row_velocity(row, bodies_.data()), v);
+                keep_visit(kept[r], row_velocity(row, bodies_.data()), v.before);
             apply(r, v);
         }
         // The warm start has no target: the recorder is shown the normal velocity change it makes, (K lambda)_n.
         if (kept)
             for (std::size_t r = 0; r < active_.rows.size(); ++r) {
                 const ContactRow& row = active_.rows[r];
-                const Axes& total = row.total_impulse;
-                report(r, {substep, 0, SolverStage::warm_start}, kept[r],
+                const Axes& total = row.total_impulse;  // the warm start's total after, unchanged since
+                RowVisit v;
+                v.unclamped = v.after = total;
+                report(r, {substep, 0, SolverStage::warm_start}, kept[r].velocity, v,
                        row.normal_response * total.n + row.normal_to_tangent[0] * total.t1 +
                            row.normal_to_tangent[1] * total.t2,
                        std::nullopt);
@@ -213,8 +215,8 @@ private:
 
     // One sweep of solve (with the soft bias) or relax (without); `moved`: the bodies moved since the last sweep,
     // so each contact's p is found first (track_penetration). Its visits are kept for the recorder in a buffer and
-    // reported after the sweep (KeptVisit), with the targets they had (a contact's aim changes only at the sweep
-    // that finds its p, before its visit).
+    // reported after the sweep (KeptVisit), solved again with the targets they had (a contact's aim changes only at
+    // the sweep that finds its p, before its visit).
     template <bool biased, bool moved = false>
     void sweep(const SweepPlace& place) {
         KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
@@ -222,16 +224,18 @@ private:
             if constexpr (moved) track_penetration(r);
             const ContactRow& row = active_.rows[r];
             const Axes velocity = row_velocity(row, bodies_.data());
-            const NormalTarget target = target_of<biased>(r);
-            const RowVisit v = solve_rows(row, velocity, target);
+            const Axes before = row.total_impulse;
             if (kept) [[unlikely]]
-                keep_visit(kept[r], velocity, v);
+                keep_visit(kept[r], velocity, before);
+            const RowVisit v = solve_rows(row, before, velocity, target_of<biased>(r));
             apply(r, v);
         }
         if (kept)
             for (std::size_t r = 0; r < active_.rows.size(); ++r) {
-                const double target = target_of<biased>(r).velocity;
-                report(r, place, kept[r], target - kept[r].velocity.n, target);
+                const NormalTarget target = target_of<biased>(r);
+                const Axes& velocity = kept[r].velocity;
+                report(r, place, velocity, solve_rows(active_.rows[r], kept[r].before, velocity, target),
+                       target.velocity - velocity.n, target.velocity);
             }
     }
 
@@ -244,7 +248,7 @@ private:
         const RowVisit v = solve_normal_row(row, velocity.n, target);
         apply(r, v);
         if (frame_.touch) frame_.touch->touched(row.contact);
-        if (frame_.keeping) report(r, place, {velocity, v}, target.velocity - velocity.n, std::nullopt);
+        if (frame_.keeping) report(r, place, velocity, v, target.velocity - velocity.n, std::nullopt);
     }
 
     // Applies after - before to the bodies by step 7 and keeps the total.
@@ -259,9 +263,8 @@ private:
 
     // The visit as the recorder takes it: the velocity it read, what it aimed at (desired delta v = target - v_n,
     // and the soft bias as step 5's position bias), its totals.
-    void report(std::size_t r, const SweepPlace& place, const KeptVisit& kept, double desired_delta_velocity,
-                std::optional<double> position_bias) {
-        const Axes& velocity = kept.velocity;
+    void report(std::size_t r, const SweepPlace& place, const Axes& velocity, const RowVisit& visit,
+                double desired_delta_velocity, std::optional<double> position_bias) {
         const ContactRow& row = active_.rows[r];
         const SoftBounce& bounce = bounce_[r];
         const bool bouncing = place.stage == SolverStage::restitution;
@@ -280,7 +283,7 @@ private:
                                                           .velocity_from_acceleration = 0.0,
                                                           .position_bias = position_bias,
                                                           .desired_delta_velocity = desired_delta_velocity},
-                                        .accumulated = kept.totals.accumulated(),
+                                        .accumulated = visit.accumulated(),
                                         .friction_rows = row.friction != 0.0 && !bouncing});
     }
 

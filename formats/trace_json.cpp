@@ -171,9 +171,6 @@ ContactPreparation read_preparation(const json& j) {
     d.friction = j[contact_key("friction")].get<double>();
     d.origin = read_origin(j[contact_key("origin")]);
     d.basis.contact_to_world = read_mat3(j[contact_key("basis")]);
-    d.basis.normal = d.basis.contact_to_world.col(0);
-    d.basis.tangent1 = d.basis.contact_to_world.col(1);
-    d.basis.tangent2 = d.basis.contact_to_world.col(2);
     d.basis.seed = read_enum(tangent_seed_names, j[contact_key("tangent_seed")]);
     d.relative_position = read_per_body_vec3(j[contact_key("relative_position")]);
     const PerBody<Vec3> torque = read_per_body_vec3(j[contact_key("torque_per_unit_impulse")]);

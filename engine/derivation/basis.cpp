@@ -6,7 +6,6 @@ namespace impulse {
 
 Basis basis(const Vec3& unit_normal) {
     Basis b;
-    b.normal = unit_normal;
     const Vec3& n = unit_normal;
     Vec3 seed_cross;
     if (std::abs(n.x()) > std::abs(n.y())) {
@@ -23,11 +22,9 @@ Basis basis(const Vec3& unit_normal) {
         const double length = std::sqrt(squared_length);
         seed_cross = Vec3(seed_cross.x() / length, seed_cross.y() / length, seed_cross.z() / length);
     }
-    b.tangent1 = seed_cross;
-    b.tangent2 = cross(n, b.tangent1);
-    b.contact_to_world.col(0) = b.normal;
-    b.contact_to_world.col(1) = b.tangent1;
-    b.contact_to_world.col(2) = b.tangent2;
+    b.contact_to_world.col(0) = n;
+    b.contact_to_world.col(1) = seed_cross;
+    b.contact_to_world.col(2) = cross(n, seed_cross);
     return b;
 }
 

@@ -15,11 +15,12 @@ namespace impulse {
 enum class TangentSeed { world_x, world_y };
 
 struct Basis {
-    Vec3 normal;            // contact x: the contact normal (unit)
     TangentSeed seed;       // world axis used to build tangent 1
-    Vec3 tangent1;          // contact y: normalise(seed x n)
-    Vec3 tangent2;          // contact z: n x tangent1
-    Mat3 contact_to_world;  // columns (normal, tangent1, tangent2)
+    Mat3 contact_to_world;  // columns (normal, tangent1, tangent2): each axis is kept once, as its column
+
+    Vec3 normal() const { return contact_to_world.col(0); }    // contact x: the contact normal (unit)
+    Vec3 tangent1() const { return contact_to_world.col(1); }  // contact y: normalise(seed x n)
+    Vec3 tangent2() const { return contact_to_world.col(2); }  // contact z: n x tangent1
 
     bool operator==(const Basis&) const = default;
 };

@@ -30,8 +30,8 @@ PositionResolution linear_projection(const PreparedContact& contact, const PerBo
     }
     // Every angular move is 0: the chain's rotation per unit move is never read.
     r.change =
-        position_change(r.moves, contact.basis.normal,
-                        delta_velocity_per_unit_impulse(contact.basis.normal, relative_positions(contact), mass));
+        position_change(r.moves, contact.basis.normal(),
+                        delta_velocity_per_unit_impulse(contact.basis.normal(), relative_positions(contact), mass));
     return r;
 }
 

@@ -11,7 +11,7 @@ namespace impulse {
 PositionResolution nonlinear_projection(const PreparedContact& contact, const PerBody<MassProperties>& mass,
                                         double amount, const AngularLimitSettings& limit,
                                         OrientationUpdate orientation_update) {
-    const Vec3& normal = contact.basis.normal;
+    const Vec3 normal = contact.basis.normal();
     const PerBody<Vec3> q_rel = relative_positions(contact);
     // "To resolve penetration we use exactly the same sequence of equations": step 3's chain, whose d the
     // preparation computed by the same functions.

@@ -29,7 +29,7 @@ PositionResolution velocity_based(const PreparedContact& contact, const PerBody<
         path_velocity[i] = translates ? motion[i]->velocity : Vec3::Zero();
         path_rotation[i] = turns ? motion[i]->angular_velocity : Vec3::Zero();
         const Vec3 point_velocity = path_rotation[i]->cross(contact.relative_position[i]) + *path_velocity[i];
-        separating += body_sign(i) * point_velocity.dot(contact.basis.normal);
+        separating += body_sign(i) * point_velocity.dot(contact.basis.normal());
     }
     rewind.closing_velocity = -separating;
     rewind.time_limit = std::max(time_left, 0.0);

@@ -45,7 +45,7 @@ void ContactsByBody::sharing(const std::array<int, 2>& moved, std::vector<int>& 
 double penetration_change(const PreparedContact& contact, int slot, const Vec3& linear_change,
                           const Vec3& angular_change) {
     const Vec3 point_move = linear_change + cross(angular_change, contact.relative_position[slot]);
-    return -body_sign(slot) * dot(point_move, contact.basis.normal);
+    return -body_sign(slot) * dot(point_move, contact.basis.normal());
 }
 
 Vec3 contact_velocity_change(const PreparedContact& contact, int slot, const Vec3& velocity_change,

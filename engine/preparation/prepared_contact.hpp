@@ -45,7 +45,7 @@ struct PreparedContact {
     ContactOrigin origin;                    // the test and features that made it (features swapped with the bodies)
     double restitution;                      // c
     double friction;                         // mu
-    Basis basis;                             // step 1: basis.normal points from body 1 towards body 0
+    Basis basis;                             // step 1: basis.normal() points from body 1 towards body 0
     std::array<Vec3, 2> relative_position;   // step 2, q - p per body; zero for the world
     double delta_velocity_per_unit_impulse;  // step 3's d
     // Step 4's tangential acceleration term, body 0's minus body 1's, along tangents 1 and 2 (0 with the refinement

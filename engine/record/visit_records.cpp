@@ -22,11 +22,11 @@ PositionResolution VisitRecords::push_resolution(const PositionVisit& visit) con
     r.penetration = c.penetration;
     r.push_impulse = visit.push_impulse;
     // How readily each body's pseudo velocity gives way along n per unit push: step 3's components.
-    r.inertia = penetration_inertia(delta_velocity_per_unit_impulse(c.basis.normal, q_rel, mass_of(c, mass_)));
+    r.inertia = penetration_inertia(delta_velocity_per_unit_impulse(c.basis.normal(), q_rel, mass_of(c, mass_)));
     for (int b = 0; b < 2; ++b) {
         if (!q_rel[b]) continue;
-        r.moves.linear_move[b] = dot(*visit.change.linear_change[b], c.basis.normal);
-        r.moves.angular_move[b] = dot(cross(*visit.change.angular_change[b], *q_rel[b]), c.basis.normal);
+        r.moves.linear_move[b] = dot(*visit.change.linear_change[b], c.basis.normal());
+        r.moves.angular_move[b] = dot(cross(*visit.change.angular_change[b], *q_rel[b]), c.basis.normal());
     }
     r.change = visit.change;
     return r;

@@ -218,10 +218,10 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
 
     Table basis_step(std::string(words::step::basis), "basis — contact coordinates from the normal");
     basis_step.row("swapped", yes_no(d.swapped, "yes: given with the world as body 0, exchanged and n reversed", "no"))
-        .row("normal", d.basis.normal)
+        .row("normal", d.basis.normal())
         .row("tangent_seed", std::string(d.basis.seed == TangentSeed::world_x ? "world X" : "world Y"))
-        .row("tangent1", d.basis.tangent1)
-        .row("tangent2", d.basis.tangent2)
+        .row("tangent1", d.basis.tangent1())
+        .row("tangent2", d.basis.tangent2())
         .row("basis", d.basis.contact_to_world);
     tables.push_back(basis_step.done());
 

@@ -203,9 +203,6 @@ private:
     Basis basis_of(const formats::json& matrix) const {
         Basis b;
         b.contact_to_world = mat(matrix);
-        b.normal = b.contact_to_world.col(0);
-        b.tangent1 = b.contact_to_world.col(1);
-        b.tangent2 = b.contact_to_world.col(2);
         b.seed = TangentSeed::world_x;
         return b;
     }
@@ -474,8 +471,8 @@ private:
                 k(current(phase, iteration, std::string::npos, chosen, "contact_velocity", "after")));
         } else if (step == "desired_delta_velocity") {
             const Basis b = basis_of(k(at(c, "basis")));
-            desired(v, v, k(at(v, "contact_velocity"))[0].get<double>(), number(at(v, "restitution")), b.normal, bodies,
-                    v);
+            desired(v, v, k(at(v, "contact_velocity"))[0].get<double>(), number(at(v, "restitution")), b.normal(),
+                    bodies, v);
         } else if (step == "impulse") {
             const Impulse g = calculate_impulse(
                 basis_of(k(at(c, "basis"))), relative_positions(c, bodies), masses(bodies),
@@ -525,7 +522,8 @@ private:
                 const Vec3 after = before + delta;
                 const double restitution =
                     other == chosen ? number(at(v, "restitution")) : number(at(o, "restitution"));
-                const DesiredDeltaVelocity d = desired("", v, after.x(), restitution, b.normal, k(at(o, "bodies")), v);
+                const DesiredDeltaVelocity d =
+                    desired("", v, after.x(), restitution, b.normal(), k(at(o, "bodies")), v);
                 put(at(update, "delta"), json_of(delta));
                 put(at(update, "after"), json_of(after));
                 put(at(update, "desired_delta_velocity_after"), d.desired_delta_velocity);

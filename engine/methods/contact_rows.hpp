@@ -151,7 +151,7 @@ struct NormalTarget {
 // The normal velocity a rigid row asks for all frame: step 5's desired delta v on top of the separating velocity
 // it was judged on, v_s + desired delta v (the bounce, and Baumgarte's term when it is on).
 inline double prepared_normal_velocity(const PreparedContact& c) {
-    return c.contact_velocity.x() + c.desired_terms.desired_delta_velocity;
+    return c.contact_velocity.x() + c.desired_delta_velocity;
 }
 // A body's point velocity at the row's anchor (step 4's, 9.5), world, added to `out` with `sign`.
 IMPULSE_ROW_FUNCTION void add_point_velocity(const SolverBody& b, const Vec3& r, double sign, double* out) {

@@ -34,6 +34,7 @@
 
 #include "methods/contact_rows.hpp"
 #include "methods/method.hpp"
+#include "preparation/bookkeeping.hpp"
 
 #include <algorithm>
 
@@ -133,7 +134,7 @@ private:
                             .updates = DesiredFollows::row_target,
                             .resolution = nullptr,
                             .contact_velocity = vector_of(velocity),
-                            .desired_terms = c.desired_terms,
+                            .desired_terms = desired_again(c, velocity_refinements(frame_.settings)),
                             .accumulated = totals.accumulated(),
                             .friction_rows = row.friction != 0.0};
         visit.desired_terms.separating_velocity = velocity.n;

@@ -46,7 +46,7 @@ PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
         for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
             const PreparedContact& contact = contacts[static_cast<std::size_t>(i)];
             if (contact.inert || desired_of(contact) <= settings.velocity_epsilon) continue;
-            const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, settings.sliding_friction);
+            const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, settings);
             frame.touched(i);
             if (frame.keeping)
                 frame.recorder.velocity_visit({.contact = i,

@@ -17,13 +17,14 @@ const FactoredDeltaVelocityMatrix& FrictionMatrices::of(const PreparedContact& c
 }
 
 VelocityResolution resolve_velocity(const PreparedContact& contact, std::span<const MassProperties> mass,
-                                    FrictionMatrices& k, SlidingFriction sliding) {
+                                    FrictionMatrices& k, const ResolverSettings& settings) {
     VelocityResolution r;
     r.contact_velocity = contact.contact_velocity;
-    r.desired_terms = contact.desired_terms;
-    r.impulse_terms = calculate_impulse(contact.basis, contact.friction != 0.0 ? &k.of(contact, mass) : nullptr,
-                                        contact.contact_velocity, contact.desired_terms.desired_delta_velocity,
-                                        contact.delta_velocity_per_unit_impulse, contact.friction, sliding);
+    r.desired_terms = desired_again(contact, velocity_refinements(settings));
+    r.impulse_terms =
+        calculate_impulse(contact.basis, contact.friction != 0.0 ? &k.of(contact, mass) : nullptr,
+                          contact.contact_velocity, contact.desired_delta_velocity,
+                          contact.delta_velocity_per_unit_impulse, contact.friction, settings.sliding_friction);
     r.velocity_change_terms =
         velocity_change(r.impulse_terms.impulse_world, relative_positions(contact), mass_of(contact, mass));
     return r;

@@ -6,6 +6,7 @@
 #include "body/rigid_body.hpp"
 #include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
+#include "preparation/bookkeeping.hpp"
 #include "preparation/prepared_contact.hpp"
 #include "record/iteration_records.hpp"
 #include "settings/settings.hpp"
@@ -31,10 +32,10 @@ private:
 };
 
 // Steps 6 and 7 for one contact, on its bookkeeping velocity and desired delta v (step 5, with the Baumgarte
-// term when it is on), the sliding impulse as `sliding` says: worst-first and the sequential sweep both visit
-// a contact this way.
+// term when it is on), the sliding impulse as settings.sliding_friction says: worst-first and the sequential sweep
+// both visit a contact this way.
 VelocityResolution resolve_velocity(const PreparedContact& contact, std::span<const MassProperties> mass,
-                                    FrictionMatrices& k, SlidingFriction sliding);
+                                    FrictionMatrices& k, const ResolverSettings& settings);
 
 // Adds step 7's velocity_change and rotation_change to the contact's bodies (the world never changes).
 void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int, 2>& changed,

@@ -26,7 +26,7 @@ PhaseOutcome worst_first_velocities(FrameContext& frame) {
         const std::optional<int> chosen = selector.worst(settings.velocity_epsilon);
         if (!chosen) break;
         const PreparedContact& contact = contacts[static_cast<std::size_t>(*chosen)];
-        const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, settings.sliding_friction);
+        const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, settings);
         frame.touched(*chosen);
         if (frame.keeping)
             frame.recorder.velocity_visit({.contact = *chosen,

@@ -55,10 +55,8 @@ Vec3 contact_velocity_change(const PreparedContact& contact, int slot, const Vec
 }
 
 DesiredDeltaVelocity desired_again(const PreparedContact& contact, const VelocityRefinements& refinements) {
-    // The prepared terms are read from the bookkeeping's own step 5, which sits beside the velocity in memory.
-    const DesiredDeltaVelocity& step5 = contact.desired_terms;
-    return desired_delta_velocity(contact.contact_velocity.x(), step5.restitution, step5.velocity_from_acceleration,
-                                  refinements, step5.position_bias);
+    return desired_delta_velocity(contact.contact_velocity.x(), contact.restitution, contact.velocity_from_acceleration,
+                                  refinements, contact.position_bias);
 }
 
 void update_penetrations(std::span<PreparedContact> contacts, std::span<const int> candidates,
@@ -76,7 +74,7 @@ void update_contact_velocities(std::span<PreparedContact> contacts, std::span<co
         PreparedContact& other = contacts[static_cast<std::size_t>(index)];
         other.contact_velocity +=
             contact_velocity_change(other, slot, *change.velocity_change[m], *change.rotation_change[m]);
-        other.desired_terms = desired_again(other, refinements);
+        other.desired_delta_velocity = desired_again(other, refinements).desired_delta_velocity;
     });
 }
 

@@ -33,7 +33,7 @@ private:
 // The desired delta v a velocity method compares with its epsilon and resolves: the bookkeeping's (with the
 // Baumgarte term of step 5 when it is on).
 inline double desired_of(const PreparedContact& c) {
-    return c.desired_terms.desired_delta_velocity;
+    return c.desired_delta_velocity;
 }
 
 // Calls each(index, slot, m) for every contact `index` of `candidates` (ascending) whose body `slot` is the moved
@@ -66,7 +66,8 @@ Vec3 contact_velocity_change(const PreparedContact& contact, int slot, const Vec
 
 // Step 5 again on `contact`'s bookkeeping velocity, as the reference engine re-runs it on a partly resolved
 // velocity: the restitution cut-off is judged again against the current closing speed; the restitution, the
-// velocity from acceleration and the position bias are the prepared ones.
+// velocity from acceleration and the position bias are the prepared ones. Its desired delta v is the contact's
+// (the bookkeeping keeps it so); the record of a visit takes the terms in full from here.
 DesiredDeltaVelocity desired_again(const PreparedContact& contact, const VelocityRefinements& refinements);
 
 // The book's loops: the bookkeeping of the `candidates` (ascending) sharing a body of `moved` (the resolved

@@ -1,5 +1,6 @@
 #include "preparation/prepared_contact.hpp"
 
+#include "preparation/bookkeeping.hpp"
 #include "preparation/position_bias.hpp"
 
 #include <utility>
@@ -74,10 +75,9 @@ void prepare(PreparedContact& c, int index, const Contact& contact, std::span<co
     c.delta_velocity_per_unit_impulse = delta_velocity_per_unit_impulse(o.normal, c.relative_position, body_mass);
     c.inert = c.delta_velocity_per_unit_impulse <= 0.0;
     const VelocityRefinements refinements = velocity_refinements(settings);
-    c.desired_terms =
-        desired_delta_velocity(c.contact_velocity.x(), contact.restitution,
-                               velocity_from_acceleration(o.normal, acceleration, settings.duration, refinements),
-                               refinements, step_5_position_bias(contact.penetration, settings));
+    c.velocity_from_acceleration = velocity_from_acceleration(o.normal, acceleration, settings.duration, refinements);
+    c.position_bias = step_5_position_bias(contact.penetration, settings);
+    c.desired_delta_velocity = desired_again(c, refinements).desired_delta_velocity;  // step 5
 }
 
 }  // namespace
@@ -92,9 +92,12 @@ PreparedContact prepare_contact(int index, const Contact& contact, std::span<con
 void prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
                       std::span<const MassProperties> mass, const ResolverSettings& settings,
                       std::pmr::vector<PreparedContact>& prepared) {
-    prepared.resize(contacts.size());
+    // Each one made where it is kept, right after its room is taken (not the whole list first: it is larger than
+    // the cache, and would be written twice).
+    prepared.clear();
+    prepared.reserve(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i)
-        prepare(prepared[i], static_cast<int>(i), contacts[i], bodies, mass, settings);
+        prepare(prepared.emplace_back(), static_cast<int>(i), contacts[i], bodies, mass, settings);
 }
 
 ContactMass contact_mass(const PreparedContact& contact, std::span<const MassProperties> mass) {

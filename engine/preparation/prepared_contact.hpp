@@ -34,9 +34,9 @@ struct PreparedContact {
     // (preparation/bookkeeping.hpp). First: every update reads and writes it. The position phase owns the
     // penetration and the velocity phase the rest, so a method reads its phase's values as prepared unless it
     // updates them itself.
-    double penetration;                  // m: as detected, then as the position phase's moves left it
-    Vec3 contact_velocity;               // step 4, contact coordinates: v_s = x
-    DesiredDeltaVelocity desired_terms;  // step 5 on that velocity (with Baumgarte's term when it is on)
+    double penetration;             // m: as detected, then as the position phase's moves left it
+    Vec3 contact_velocity;          // step 4, contact coordinates: v_s = x
+    double desired_delta_velocity;  // step 5 on that velocity (with Baumgarte's term when it is on)
 
     int contact;                             // index in the input contact list
     std::array<int, 2> bodies;               // after swapping: body 1 may be world_body
@@ -51,6 +51,9 @@ struct PreparedContact {
     // Step 4's tangential acceleration term, body 0's minus body 1's, along tangents 1 and 2 (0 with the refinement
     // off): the slip last frame's acceleration builds up, which the accumulating methods' friction rows remove too.
     std::array<double, 2> tangential_acceleration_velocity;
+    // What step 5 is judged again from, fixed at preparation (desired_again gives its terms in full):
+    double velocity_from_acceleration;    // (a0 - a1) . n x duration; 0 with the refinement off
+    std::optional<double> position_bias;  // Baumgarte's term, when it is on
 };
 
 // Each body's mass properties once per frame, with the world inverse inertia R I^-1 R^T.

@@ -10,7 +10,7 @@ void VisitRecords::begin(const PreparedFrame& frame) {
     targets_.clear();
     // v_s + step 5's desired delta v: the bounce and the position bias on top of the velocity it was judged on.
     for (const PreparedContact& c : contacts_)
-        targets_.push_back(c.inert ? 0.0 : c.contact_velocity.x() + c.desired_terms.desired_delta_velocity);
+        targets_.push_back(c.inert ? 0.0 : c.contact_velocity.x() + c.desired_delta_velocity);
     iteration_ = 0;
 }
 
@@ -98,12 +98,12 @@ void VisitRecords::record_updates(const VelocityChange& change, const std::array
         PreparedContact& other = contacts_[static_cast<std::size_t>(index)];
         const Vec3 delta = contact_velocity_change(other, slot, *change.velocity_change[m], *change.rotation_change[m]);
         const Vec3 before = other.contact_velocity;
-        const double desired_before = other.desired_terms.desired_delta_velocity;
+        const double desired_before = other.desired_delta_velocity;
         other.contact_velocity += delta;
         if (follows == DesiredFollows::step_5) {
-            other.desired_terms = desired_again(other, refinements_);
+            other.desired_delta_velocity = desired_again(other, refinements_).desired_delta_velocity;
             it.updates.push_back({index, moved[m], slot, delta, before, other.contact_velocity, desired_before,
-                                  other.desired_terms.desired_delta_velocity});
+                                  other.desired_delta_velocity});
         } else {
             const double target = targets_[static_cast<std::size_t>(index)];
             it.updates.push_back({index, moved[m], slot, delta, before, other.contact_velocity, target - before.x(),

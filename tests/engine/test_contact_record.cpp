@@ -4,6 +4,7 @@
 // every preset with and without Baumgarte's term: the record holds the prepared values, to the bit. (grid_1000 is
 // grid_100's boxes ten times over, and would take most of the test's time under the sanitizers: it is left out.)
 
+#include "preparation/bookkeeping.hpp"
 #include "preparation/prepared_contact.hpp"
 #include "record/contact_record.hpp"
 #include "settings/settings.hpp"
@@ -21,7 +22,7 @@ using namespace impulse;
 namespace {
 
 // The prepared contact's values as the record keeps them.
-void check_same(const PreparedContact& p, const ContactPreparation& d) {
+void check_same(const PreparedContact& p, const ContactPreparation& d, const ResolverSettings& settings) {
     CHECK(p.contact == d.contact);
     CHECK(p.bodies == d.bodies);
     CHECK(p.swapped == d.swapped);
@@ -34,7 +35,8 @@ void check_same(const PreparedContact& p, const ContactPreparation& d) {
     for (int i = 0; i < 2; ++i) CHECK(p.relative_position[i] == d.relative_position[i].value_or(Vec3::Zero()));
     CHECK(p.delta_velocity_per_unit_impulse == d.unit_impulse_chain.delta_velocity_per_unit_impulse);
     CHECK(p.contact_velocity == d.velocity_terms.contact_velocity);
-    CHECK(p.desired_terms == d.desired_terms);
+    CHECK(p.desired_delta_velocity == d.desired_terms.desired_delta_velocity);
+    CHECK(desired_again(p, velocity_refinements(settings)) == d.desired_terms);
     // PGS's slip offset: step 4's tangential acceleration terms, body 0's minus body 1's, from 0.
     std::array<double, 2> tangential{0.0, 0.0};
     for (int i = 0; i < 2; ++i) {
@@ -68,8 +70,10 @@ TEST_CASE("a contact's record of steps 1-5 holds the values it was prepared with
                 prepare_contacts(detection.contacts, world.bodies(), mass, settings, prepared);
                 REQUIRE(prepared.size() == detection.contacts.size());
                 for (std::size_t k = 0; k < prepared.size(); ++k) {
-                    check_same(prepared[k], contact_preparation(static_cast<int>(k), detection.contacts[k],
-                                                                world.bodies(), mass, settings));
+                    check_same(
+                        prepared[k],
+                        contact_preparation(static_cast<int>(k), detection.contacts[k], world.bodies(), mass, settings),
+                        settings);
                     ++compared;
                 }
             }

@@ -106,10 +106,11 @@ std::vector<int> default_iterations();  // 1, 2, 4, 8, 16, 32
 //   worst-first presets (book, chapter)   iterations_per_contact = N  (each phase's limit is N x contacts)
 //   sweep, pgs, pgs_split                 sweeps = N
 //   soft_step                             soft_step.substeps = N, with sweeps = 1 (one relax sweep each)
+//   avbd                                  avbd.iterations = N
 // Chosen by the settings' velocity method, so a preset keeps its mapping whatever it is called.
 void set_iteration_count(ResolverSettings& settings, int n);
-// The name of the setting N was written to, for the results: "iterations_per_contact", "sweeps" or
-// "soft_step.substeps".
+// The name of the setting N was written to, for the results: "iterations_per_contact", "sweeps",
+// "soft_step.substeps" or "avbd.iterations".
 std::string_view iteration_setting(const ResolverSettings& settings);
 
 // "1,2,4" -> {1, 2, 4}: positive integers, no repeats. Throws formats::InputError("--iterations", ...).

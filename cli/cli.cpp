@@ -269,7 +269,7 @@ void add_bench(CLI::App& app, BenchOptions& o, FlagCatalog& c) {
     bench
         ->add_option("--iterations", o.iterations,
                      "Iteration counts N, comma-separated (default 1,2,4,8,16,32): iterations_per_contact for "
-                     "worst-first, sweeps for sweep/pgs/pgs_split, substeps for soft_step")
+                     "worst-first, sweeps for sweep/pgs/pgs_split, substeps for soft_step, iterations for avbd")
         ->type_name("LIST");
     whole_number(bench->add_option("--repeats", o.repeats,
                                    "Timed windows per configuration; the median step time is kept (default 3)"),

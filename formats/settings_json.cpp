@@ -40,6 +40,24 @@ void apply_fields(Scene& scene, const json& object, std::string_view path) {
         if (soft.contains("damping_ratio")) s.soft_step.damping_ratio = soft["damping_ratio"].get<double>();
         if (soft.contains("max_push_velocity")) s.soft_step.max_push_velocity = soft["max_push_velocity"].get<double>();
     }
+    if (has("avbd")) {
+        const json& avbd = object["avbd"];
+        const auto number = [&avbd](const char* key, double& value) {
+            if (avbd.contains(key)) value = avbd[key].get<double>();
+        };
+        if (avbd.contains("iterations")) s.avbd.iterations = avbd["iterations"].get<int>();
+        number("alpha", s.avbd.alpha);
+        number("beta", s.avbd.beta);
+        number("gamma", s.avbd.gamma);
+        number("stiffness_min", s.avbd.stiffness_min);
+        number("stiffness_max", s.avbd.stiffness_max);
+        number("slop", s.avbd.slop);
+        if (avbd.contains("post_stabilize")) s.avbd.post_stabilize = avbd["post_stabilize"].get<bool>();
+        if (!(s.avbd.stiffness_min <= s.avbd.stiffness_max))
+            throw InputError(json_path_child(json_path_child(path, "avbd"), "stiffness_min"),
+                             "must be at most avbd.stiffness_max (" + number_text(s.avbd.stiffness_max) + "), got " +
+                                 number_text(s.avbd.stiffness_min));
+    }
     if (has("angular_limit")) {
         const json& limit = object["angular_limit"];
         if (limit.contains("policy")) {
@@ -134,6 +152,15 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
     if (s.baumgarte) out["baumgarte"] = true;
     if (s.sliding_friction != SlidingFriction::reference)
         out["sliding_friction"] = name_of(sliding_friction_names, s.sliding_friction);
+    if (s.velocity_method == VelocityMethod::avbd || s.avbd != AvbdSettings{})
+        out["avbd"] = {{"iterations", s.avbd.iterations},
+                       {"alpha", s.avbd.alpha},
+                       {"beta", s.avbd.beta},
+                       {"gamma", s.avbd.gamma},
+                       {"stiffness_min", s.avbd.stiffness_min},
+                       {"stiffness_max", s.avbd.stiffness_max},
+                       {"slop", s.avbd.slop},
+                       {"post_stabilize", s.avbd.post_stabilize}};
     return out;
 }
 

@@ -95,6 +95,16 @@ void method_setting(model::Session& session, UiState& state, model::ActionHost& 
         number_field(session, state, host, "contact hertz", name, s.soft_step.contact_hertz);
     if (key == "soft_step.damping_ratio")
         number_field(session, state, host, "damping ratio", name, s.soft_step.damping_ratio);
+    if (key == "avbd.iterations") integer_field(session, state, host, "iterations", name, s.avbd.iterations);
+    if (key == "avbd.alpha") number_field(session, state, host, "stabilisation α", name, s.avbd.alpha);
+    if (key == "avbd.beta") number_field(session, state, host, "stiffness ramp β (N/m²)", name, s.avbd.beta);
+    if (key == "avbd.gamma") number_field(session, state, host, "warm-start decay γ", name, s.avbd.gamma);
+    if (key == "avbd.stiffness_min")
+        number_field(session, state, host, "stiffness min (N/m)", name, s.avbd.stiffness_min);
+    if (key == "avbd.stiffness_max")
+        number_field(session, state, host, "stiffness max (N/m)", name, s.avbd.stiffness_max);
+    if (key == "avbd.slop") number_field(session, state, host, "slop (m)", name, s.avbd.slop);
+    if (key == "avbd.post_stabilize") bool_field(session, state, host, "post-stabilise", name, s.avbd.post_stabilize);
     if (key == "baumgarte") bool_field(session, state, host, "Baumgarte bias (step 5)", name, s.baumgarte);
     if (key == "position_bias.factor")
         number_field(session, state, host, "bias factor β", name, s.position_bias.factor);
@@ -137,6 +147,14 @@ void draw_settings(model::Session& session, UiState& state, model::ActionHost& h
                                           "soft_step.substeps",
                                           "soft_step.contact_hertz",
                                           "soft_step.damping_ratio",
+                                          "avbd.iterations",
+                                          "avbd.post_stabilize",
+                                          "avbd.alpha",
+                                          "avbd.beta",
+                                          "avbd.gamma",
+                                          "avbd.stiffness_min",
+                                          "avbd.stiffness_max",
+                                          "avbd.slop",
                                           "baumgarte",
                                           "position_bias.factor",
                                           "position_bias.slop"};

@@ -14,6 +14,9 @@ namespace impulse {
 using Vec3 = Eigen::Vector3d;
 using Mat3 = Eigen::Matrix3d;
 using Quat = Eigen::Quaterniond;  // unit, rotating body space into world space; stored (x,y,z,w), written [w,x,y,z]
+// A body's six degrees of freedom together, (linear x, y, z, angular x, y, z): AVBD's per-body block.
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
 
 // A value per body of a contact: index 0 is body 0, index 1 is body 1, which is empty when body 1 is the
 // static world. docs/design.md: "Per-body values are arrays [body0, body1], null for the world".

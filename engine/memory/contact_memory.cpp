@@ -81,6 +81,7 @@ void ContactMemory::index_entries() {
 
 void ContactMemory::clear() {
     entries_.clear();
+    stiffness_.clear();
     index_.clear();
     keeps_key_.clear();
 }

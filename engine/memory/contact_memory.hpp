@@ -51,8 +51,21 @@ public:
     template <typename Impulse>
     void remember(std::span<const ContactKey> keys, Impulse impulse) {
         entries_.clear();
+        stiffness_.clear();
         for (std::size_t k = 0; k < keys.size(); ++k) entries_.emplace_back(keys[k], impulse(k));
         index_entries();
+    }
+    // The same, with a stiffness per contact beside its impulse, stiffness(k) = {normal, tangential} (AVBD keeps its
+    // penalty k from frame to frame: derivation/avbd/dual_update.hpp).
+    template <typename Impulse, typename Stiffness>
+    void remember(std::span<const ContactKey> keys, Impulse impulse, Stiffness stiffness) {
+        remember(keys, impulse);
+        for (std::size_t k = 0; k < keys.size(); ++k) stiffness_.push_back(stiffness(k));
+    }
+    // The stiffness remembered at `slot`, when the method that remembered kept one.
+    std::optional<std::array<double, 2>> stiffness_at(std::ptrdiff_t slot) const {
+        if (stiffness_.empty()) return std::nullopt;
+        return stiffness_[static_cast<std::size_t>(slot)];
     }
 
     std::size_t size() const { return entries_.size(); }
@@ -65,7 +78,8 @@ private:
     // empty): a frame's remembering writes 4 bytes per slot and allocates nothing once the index has grown.
     std::vector<std::pair<ContactKey, Vec3>> entries_;
     std::vector<std::int32_t> index_;
-    std::vector<char> keeps_key_;  // per entry: the first with its key, the one slot_of finds
+    std::vector<char> keeps_key_;                   // per entry: the first with its key, the one slot_of finds
+    std::vector<std::array<double, 2>> stiffness_;  // per entry when remembered with one, else empty
 };
 
 }  // namespace impulse

@@ -70,6 +70,7 @@ PhaseOutcome worst_first_velocities(FrameContext& frame);             // worst_f
 PhaseOutcome sequential_sweep_velocities(FrameContext& frame);        // sequential_sweep.cpp
 PhaseOutcome projected_gauss_seidel_velocities(FrameContext& frame);  // projected_gauss_seidel.cpp
 PhaseOutcome soft_step(FrameContext& frame);                          // soft_step.cpp
+PhaseOutcome avbd_step(FrameContext& frame);                          // avbd.cpp
 
 // The position methods.
 PhaseOutcome linear_projection_positions(FrameContext& frame);     // linear_projection.cpp

@@ -16,7 +16,7 @@ constexpr bool rows_in_order(const std::array<MethodRow<Id>, N>& rows) {
 static_assert(rows_in_order(velocity_methods));
 static_assert(rows_in_order(position_methods));
 static_assert(static_cast<int>(PositionMethod::none) + 1 == static_cast<int>(position_methods.size()));
-static_assert(static_cast<int>(VelocityMethod::soft_step) + 1 == static_cast<int>(velocity_methods.size()));
+static_assert(static_cast<int>(VelocityMethod::avbd) + 1 == static_cast<int>(velocity_methods.size()));
 
 bool listed(std::span<const std::string_view> keys, std::string_view key) {
     return std::find(keys.begin(), keys.end(), key) != keys.end();

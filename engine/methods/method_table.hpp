@@ -37,6 +37,9 @@ struct MethodRow {
     void (*set_iterations)(ResolverSettings& settings, int n) = nullptr;
     // Position methods that work in passes: what one pass is called ("relaxation pass", "push sweep").
     std::string_view pass_name = {};
+    // False for a method whose iterations are counted but not yet recorded (AVBD: issue 30's phase 2 records its
+    // block solves): its phase in a trace lists none beside its iterations_used.
+    bool records_iterations = true;
 };
 
 namespace method_reads {
@@ -53,6 +56,9 @@ inline constexpr std::array<std::string_view, 6> soft_step{"sweeps",
                                                            "soft_step.contact_hertz",
                                                            "soft_step.damping_ratio",
                                                            "soft_step.max_push_velocity"};
+inline constexpr std::array<std::string_view, 9> avbd{"warm_start",         "avbd.iterations", "avbd.alpha",
+                                                      "avbd.beta",          "avbd.gamma",      "avbd.stiffness_min",
+                                                      "avbd.stiffness_max", "avbd.slop",       "avbd.post_stabilize"};
 inline constexpr std::array<std::string_view, 4> linear_projection{"position_epsilon", "iterations_per_contact",
                                                                    "position_iterations", "worst_first_search"};
 inline constexpr std::array<std::string_view, 6> nonlinear_projection{"position_epsilon",     "iterations_per_contact",
@@ -65,7 +71,7 @@ inline constexpr std::array<std::string_view, 4> split_impulse{"velocity_epsilon
                                                                "position_bias.slop"};
 }  // namespace method_reads
 
-inline constexpr std::array<MethodRow<VelocityMethod>, 4> velocity_methods{{
+inline constexpr std::array<MethodRow<VelocityMethod>, 5> velocity_methods{{
     {VelocityMethod::worst_first, "worst_first", MethodScope::velocity_phase, worst_first_velocities,
      method_reads::worst_first,
      "the book: resolve the contact with the largest desired delta v, update the others, repeat",
@@ -83,6 +89,17 @@ inline constexpr std::array<MethodRow<VelocityMethod>, 4> velocity_methods{{
          s.soft_step.substeps = n;
          s.sweeps = 1;
      }},
+    {VelocityMethod::avbd,
+     "avbd",
+     MethodScope::whole_step,
+     avbd_step,
+     method_reads::avbd,
+     "augmented vertex block descent: each body's 6x6 block against its contacts' augmented-Lagrangian forces; it "
+     "integrates the bodies itself",
+     "avbd.iterations",
+     [](ResolverSettings& s, int n) { s.avbd.iterations = n; },
+     {},
+     false},
 }};
 
 inline constexpr std::array<MethodRow<PositionMethod>, 6> position_methods{{

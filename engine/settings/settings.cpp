@@ -14,7 +14,7 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 }
 
 namespace {
-constexpr std::array<std::string_view, 6> names{"book", "chapter", "sweep", "pgs", "pgs_split", "soft_step"};
+constexpr std::array<std::string_view, 7> names{"book", "chapter", "sweep", "pgs", "pgs_split", "soft_step", "avbd"};
 }
 
 std::span<const std::string_view> preset_names() {
@@ -56,6 +56,11 @@ std::optional<ResolverSettings> preset(std::string_view name) {
         s.velocity_method = VelocityMethod::soft_step;
         s.position_method = PositionMethod::none;  // the soft contact carries its own push (see SoftStepSettings)
         s.sweeps = 1;
+        return s;
+    }
+    if (name == "avbd") {
+        s.velocity_method = VelocityMethod::avbd;
+        s.position_method = PositionMethod::none;  // the contacts are constraints on positions (see AvbdSettings)
         return s;
     }
     return std::nullopt;

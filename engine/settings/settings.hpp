@@ -2,6 +2,7 @@
 // Everything that chooses how contacts are resolved, in one struct that travels with each run (no global
 // toggles). Presets fill it; a case file or flag may then change single fields.
 
+#include "derivation/avbd/avbd_settings.hpp"
 #include "derivation/desired_delta_velocity.hpp"
 #include "derivation/impulse.hpp"
 #include "derivation/position_change.hpp"
@@ -34,6 +35,8 @@ enum class VelocityMethod {
                              // to the friction cone, warm started from last frame's matching contact
     soft_step,               // Box2D v3's soft step: sub-steps with soft (spring-damper) contacts, relax, then
                              // restitution; it integrates the bodies itself
+    avbd,                    // augmented vertex block descent (Giles et al. 2025): each body's 6x6 block solved
+                             // in turn against its contacts' augmented-Lagrangian forces; it integrates the bodies
 };
 
 // How worst-first finds its next contact. Both choose the same contacts in the same order and give identical
@@ -95,6 +98,7 @@ struct ResolverSettings {
     bool baumgarte = false;
     PositionBiasSettings position_bias{};
     SoftStepSettings soft_step{};
+    AvbdSettings avbd{};
     // The reference engine's chapter-15 refinements of steps 4 and 5 (velocity_refinements() below gives them to
     // step 5). Contacts closing slower than restitution_cutoff (m/s) bounce with restitution 0, so resting
     // contacts do not jitter; 0 switches the cut-off off. Reference engine: 0.25.
@@ -129,6 +133,7 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 //            10 iterations).
 //   pgs_split   pgs with split impulse instead of Baumgarte (Bullet's split-impulse mode).
 //   soft_step   Box2D v3: 4 sub-steps of soft contacts, one relax sweep each, restitution after.
+//   avbd        augmented vertex block descent: 10 iterations of block solves and dual updates (AvbdSettings).
 std::span<const std::string_view> preset_names();
 // "book", "chapter", ... as one line for error messages.
 std::string preset_list_text();

@@ -153,18 +153,20 @@ TEST_CASE("a copy of a world goes on exactly as the world it was copied from") {
 
 TEST_CASE("a stop flag set before a step cuts every preset's frame short, and a world without one finishes it") {
     // Ctrl-C was looked at between frames only: a frame of 1e8 iterations could not be stopped.
-    for (const std::string preset : {"book", "chapter", "sweep", "pgs", "pgs_split", "soft_step"}) {
+    for (const std::string_view name : preset_names()) {
+        const std::string preset(name);
         CAPTURE(preset);
         Scene scene = scene_with("pyramid_10", preset);
         formats::apply_setting(scene, "velocity_iterations=100000000", "--set");
         formats::apply_setting(scene, "position_iterations=100000000", "--set");
         formats::apply_setting(scene, "sweeps=100000", "--set");
+        formats::apply_setting(scene, "avbd.iterations=100000", "--set");
         std::atomic<bool> stop{true};
         World world(scene);
         world.set_stop_flag(&stop);
         const StepReport report = world.step();
         CHECK(report.resolution.cut_short);
-        // Worst-first looks at the flag before its first visit; a sweeping method before its first sweep.
+        // Worst-first looks at the flag before its first visit; a sweeping method (and AVBD) before its first sweep.
         CHECK(report.resolution.velocity.iterations_used + report.resolution.position.iterations_used <=
               static_cast<int>(2 * stop_check_visits));
     }

@@ -1,0 +1,46 @@
+#include "derivation/avbd/dual_update.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impulse {
+
+DualVariables dual_update(const ContactForce& force, const Stiffness& stiffness, const Vec3& constraint,
+                          const AvbdSettings& settings) {
+    DualVariables d{force.force, stiffness};  // lambda <- F  (Eq. 11)
+    // k <- min(k + beta |C*|, k_max) inside the bounds  (Eq. 16)
+    if (force.pushing)
+        d.stiffness.normal =
+            std::min(stiffness.normal + settings.beta * std::abs(constraint.x()), settings.stiffness_max);
+    if (force.pushing && !force.sliding && force.block_stiffness.tangential > 0.0)
+        d.stiffness.tangential =
+            std::min(stiffness.tangential +
+                         settings.beta * std::sqrt(constraint.y() * constraint.y() + constraint.z() * constraint.z()),
+                     settings.stiffness_max);
+    return d;
+}
+
+DualVariables warm_start(const std::optional<RememberedDual>& remembered, double friction,
+                         const AvbdSettings& settings) {
+    DualVariables d;
+    d.stiffness = {settings.stiffness_min, settings.stiffness_min};
+    if (!remembered) return d;
+    const double keep = settings.post_stabilize ? 1.0 : settings.alpha * settings.gamma;  // (Eq. 19)
+    Vec3 lambda = keep * remembered->lambda;
+    lambda.x() = std::max(lambda.x(), 0.0);
+    const double bound = friction * lambda.x();
+    const double size = std::sqrt(lambda.y() * lambda.y() + lambda.z() * lambda.z());
+    if (size > bound) {
+        const double scale = size > 0.0 ? bound / size : 0.0;
+        lambda.y() *= scale;
+        lambda.z() *= scale;
+    }
+    d.lambda = lambda;
+    const auto decayed = [&](double k) {
+        return std::clamp(settings.gamma * k, settings.stiffness_min, settings.stiffness_max);
+    };
+    d.stiffness = {decayed(remembered->stiffness.normal), decayed(remembered->stiffness.tangential)};
+    return d;
+}
+
+}  // namespace impulse

@@ -1,0 +1,384 @@
+// Augmented vertex block descent (AVBD: Giles, Diaz and Yuksel, "Augmented Vertex Block Descent", ACM TOG 44(4),
+// SIGGRAPH 2025; the reference demo savant117/avbd-demo2d), for rigid bodies in 3D. It answers the chapter's
+// question ("how much, and how fast, do we push these bodies apart?") on positions and per body rather than per
+// contact: every body in turn solves a 6x6 block for where it should be, given its inertia and the forces of its
+// contacts, and each contact's force is an augmented Lagrangian whose multiplier lambda and stiffness k grow until
+// the contact holds. It owns the whole step (integration included), like soft step. The equations, with the
+// paper's numbers, are in the derivation steps of engine/derivation/avbd/ and in docs/methods.md; per frame of
+// h = settings.duration:
+//   1. the contacts' rows, linearised at the frame's start (Sec. 4): derivation/avbd/contact_constraint.hpp;
+//   2. warm start (Eq. 19): each contact's lambda and k from the contact memory, decayed by alpha gamma and
+//      gamma, or lambda = 0 and k = k_min for a new one (derivation/avbd/dual_update.hpp);
+//   3. each body's inertial target y = x + h v + h^2 g (Eq. 2) and its initial guess (VBD's adaptive one):
+//      derivation/avbd/implicit_euler.hpp;
+//   4. `avbd.iterations` times: a primal sweep, every body in index order solving its block
+//      H delta x = f (Eqs. 4-6, 13, 17: derivation/avbd/body_block.hpp, block_solve.hpp) against its contacts'
+//      forces at the other bodies' current positions (Gauss-Seidel); then a dual sweep, every contact's lambda
+//      and k updated (Eqs. 11, 16);
+//   5. the velocities from the displacements, v = delta p / h, w = delta theta / h (BDF1);
+//      with `avbd.post_stabilize`, one more primal sweep with alpha = 0 then moves the bodies out of what
+//      penetration is left, after the velocities were taken;
+//   6. the positions written: p = p- + delta p, q turned by delta theta (settings.orientation_update);
+//   7. restitution, which AVBD does not model (its step is implicit Euler, which ends a collision at rest): as soft
+//      step does after its sub-steps, a contact that closed faster than the restitution cut-off when the frame
+//      began and pushed is visited once on velocities with the target -c v_n(before) (steps 3, 4 and 7);
+//   8. lambda (world coordinates) and k remembered in the contact memory for the next frame.
+// A body that cannot move (inverse mass and inverse inertia 0) moves by its velocity and is not solved; a body
+// with no contact lands on its inertial target.
+
+#include "derivation/avbd/block_solve.hpp"
+#include "derivation/avbd/body_block.hpp"
+#include "derivation/avbd/contact_constraint.hpp"
+#include "derivation/avbd/contact_force.hpp"
+#include "derivation/avbd/dual_update.hpp"
+#include "derivation/avbd/implicit_euler.hpp"
+#include "derivation/contact_velocity.hpp"
+#include "derivation/delta_velocity_per_unit_impulse.hpp"
+#include "derivation/velocity_change.hpp"
+#include "methods/method.hpp"
+#include "methods/solver_common.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace impulse {
+
+namespace {
+
+// A contact as AVBD carries it through the frame: its rows, fixed at the frame's start, and its dual variables.
+struct AvbdContact {
+    int contact = 0;                 // index in the prepared list
+    std::array<int, 2> body{0, -1};  // -1 = the world
+    ConstraintJacobian jacobian;     // the rows' gradients (Sec. 4)
+    double initial_normal = 0.0;     // C_n(x-) = slop - penetration (m)
+    double friction = 0.0;           // mu
+    DualVariables dual;              // lambda (N) and k (N/m)
+};
+
+// One of a body's contacts: which, and whether the body is its body 0 or body 1.
+struct BodyContact {
+    int contact = 0;
+    int slot = 0;
+};
+
+class Avbd {
+public:
+    explicit Avbd(FrameContext& frame)
+        : frame_(frame),
+          settings_(frame.settings),
+          avbd_(frame.settings.avbd),
+          h_(frame.settings.duration),
+          contacts_(frame.scratch),
+          keys_(frame.scratch),
+          bounce_(frame.scratch),
+          target_(frame.bodies.size(), frame.scratch),
+          displacement_(frame.bodies.size(), frame.scratch),
+          velocity_(frame.bodies.size(), frame.scratch),
+          mass_(frame.bodies.size(), frame.scratch),
+          solved_(frame.scratch),
+          first_contact_(frame.bodies.size() + 1, 0, frame.scratch),
+          body_contacts_(frame.scratch),
+          bounced_(frame.scratch) {
+        prepare_bodies();
+        prepare_contacts();
+        list_body_contacts();
+    }
+
+    void run() {
+        const int iterations = avbd_.iterations;
+        const int total = iterations + (avbd_.post_stabilize ? 1 : 0);
+        bool velocities_taken = iterations <= 0;
+        if (velocities_taken) take_velocities();
+        for (int it = 0; it < total && sweep(it); ++it) {
+            if (it == iterations - 1) {
+                take_velocities();
+                velocities_taken = true;
+            }
+        }
+        // Cut short (FrameContext::stop): the bodies go where the sweeps got them, at the velocities that implies,
+        // and the frame's restitution, judged on finished velocities, is not run.
+        if (!velocities_taken) take_velocities();
+        write_bodies();
+        if (!frame_.cut_short) restitution();
+        for (const int b : solved_) {
+            RigidBody& body = frame_.bodies[static_cast<std::size_t>(b)];
+            body.last_frame_acceleration = (body.velocity - velocity_[static_cast<std::size_t>(b)].before) / h_;
+        }
+        stamp_visits();
+    }
+
+    void remember(ContactMemory& memory) const {
+        memory.remember(
+            std::span<const ContactKey>(keys_),
+            [this](std::size_t k) -> Vec3 {
+                const AvbdContact& c = contacts_[k];
+                return to_world(basis_of(c), c.dual.lambda);
+            },
+            [this](std::size_t k) -> std::array<double, 2> {
+                const Stiffness& s = contacts_[k].dual.stiffness;
+                return {s.normal, s.tangential};
+            });
+    }
+
+    int visits() const { return visits_; }
+    int visit_limit() const {
+        // Saturated: a count of sweeps set to stop only by the stop flag would overflow an int.
+        const long long limit = static_cast<long long>(solved_.size()) *
+                                (static_cast<long long>(avbd_.iterations) + (avbd_.post_stabilize ? 1 : 0));
+        return static_cast<int>(std::min<long long>(limit, std::numeric_limits<int>::max()));
+    }
+
+private:
+    // A body's velocities before the frame and as the displacement gives them (BDF1).
+    struct Velocities {
+        Vec3 before = Vec3::Zero();
+        Vec3 linear = Vec3::Zero();
+        Vec3 angular = Vec3::Zero();
+    };
+
+    // Restitution's inputs, read before anything moves: only a contact that may bounce needs them.
+    struct Bounce {
+        double separating_velocity = 0.0;  // v_n when the frame began (step 4)
+        double restitution = 0.0;          // c
+    };
+
+    void prepare_bodies() {
+        const Forces& f = frame_.forces;
+        for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
+            const RigidBody& body = frame_.bodies[b];
+            velocity_[b].before = body.velocity;
+            if (is_immovable(body)) {
+                // It moves by its own velocity, which nothing changes: a contact sees it where it is going.
+                displacement_[b] = {body.velocity * h_, body.angular_velocity * h_};
+                continue;
+            }
+            const InertialTarget t = inertial_target(body, f.gravity, h_, f.damping);  // (Eq. 2)
+            target_[b] = t.inertial_target;
+            displacement_[b] = t.initial_guess;
+            mass_[b] = body_mass(body, frame_.mass[b]);
+        }
+    }
+
+    void prepare_contacts() {
+        contacts_.reserve(frame_.contacts.size());
+        keys_.reserve(frame_.contacts.size());
+        std::ptrdiff_t hint = 0;
+        for (const PreparedContact& row : frame_.contacts) {
+            const std::array<int, 2> body = row.bodies;
+            const bool moves0 = !is_immovable(frame_.bodies[static_cast<std::size_t>(body[0])]);
+            const bool moves1 =
+                body[1] != world_body && !is_immovable(frame_.bodies[static_cast<std::size_t>(body[1])]);
+            if (!moves0 && !moves1) continue;  // nothing it could push
+            AvbdContact& c = contacts_.emplace_back();
+            c.contact = row.contact;
+            c.body = body;
+            c.jacobian = constraint_jacobian(row.basis, row.relative_position);
+            c.initial_normal = avbd_.slop - row.penetration;
+            c.friction = row.friction;
+            const ContactKey key = contact_key(row);
+            keys_.push_back(key);
+            std::optional<RememberedDual> remembered;
+            if (settings_.warm_start && frame_.memory) {
+                const std::ptrdiff_t slot = frame_.memory->slot_of(key, hint);
+                if (slot >= 0) {
+                    hint = slot + 1;
+                    const std::optional<std::array<double, 2>> k = frame_.memory->stiffness_at(slot);
+                    remembered = RememberedDual{
+                        to_contact(row.basis, frame_.memory->impulse_at(slot)),
+                        k ? Stiffness{(*k)[0], (*k)[1]} : Stiffness{avbd_.stiffness_min, avbd_.stiffness_min}};
+                }
+            }
+            c.dual = warm_start(remembered, c.friction, avbd_);  // (Eq. 19)
+            Bounce& bounce = bounce_.emplace_back();
+            bounce.restitution = row.restitution;
+            if (row.restitution != 0.0) bounce.separating_velocity = row.contact_velocity.x();
+        }
+    }
+
+    // Each body's contacts, in contact order (a compressed list: body b's are first_contact_[b] .. [b + 1]); the
+    // bodies that take part in the sweeps are the movable ones with a contact. A movable body with none lands on
+    // its inertial target (its block would be M/h^2 alone).
+    void list_body_contacts() {
+        for (const AvbdContact& c : contacts_)
+            for (int i = 0; i < 2; ++i)
+                if (c.body[i] != world_body) ++first_contact_[static_cast<std::size_t>(c.body[i]) + 1];
+        for (std::size_t b = 0; b < frame_.bodies.size(); ++b) first_contact_[b + 1] += first_contact_[b];
+        body_contacts_.resize(static_cast<std::size_t>(first_contact_.back()));
+        std::pmr::vector<int> next(first_contact_.begin(), first_contact_.end() - 1, frame_.scratch);
+        for (std::size_t k = 0; k < contacts_.size(); ++k)
+            for (int i = 0; i < 2; ++i)
+                if (contacts_[k].body[i] != world_body)
+                    body_contacts_[static_cast<std::size_t>(next[static_cast<std::size_t>(contacts_[k].body[i])]++)] = {
+                        static_cast<int>(k), i};
+        for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
+            if (is_immovable(frame_.bodies[b])) continue;
+            if (first_contact_[b + 1] > first_contact_[b])
+                solved_.push_back(static_cast<int>(b));
+            else
+                displacement_[b] = target_[b];
+        }
+    }
+
+    const Displacement& displacement_of(int body) const {
+        static const Displacement world{};
+        return body == world_body ? world : displacement_[static_cast<std::size_t>(body)];
+    }
+
+    ConstraintValue constraint_of(const AvbdContact& c, double alpha) const {
+        return constraint_value(c.jacobian, c.initial_normal, {displacement_of(c.body[0]), displacement_of(c.body[1])},
+                                alpha);
+    }
+
+    // Sweep `it`: every body's primal update, then, in the iterations, every contact's dual update.
+    // Post-stabilisation: the iterations correct nothing (alpha 1), the extra sweep all of it (alpha 0).
+    // False when the stop flag cut it short (looked at every stop_check_visits block solves and once a sweep).
+    bool sweep(int it) {
+        const bool iteration = it < avbd_.iterations;  // else the post-stabilisation sweep
+        const double alpha = !avbd_.post_stabilize ? avbd_.alpha : iteration ? 1.0 : 0.0;
+        if (frame_.stop_requested()) return false;
+        for (const int b : solved_) {
+            if (visits_ % stop_check_visits == 0 && visits_ > 0 && frame_.stop_requested()) return false;
+            visit(static_cast<std::size_t>(b), alpha);
+        }
+        if (iteration) update_duals(alpha);
+        return true;
+    }
+
+    // The primal update of one body (Eqs. 4-6, 13, 17): its block against its contacts as they are now, solved.
+    void visit(std::size_t b, double alpha) {
+        Displacement& x = displacement_[b];
+        BodyBlock block = inertial_block(mass_[b], h_, target_[b], x);
+        for (int k = first_contact_[b]; k < first_contact_[b + 1]; ++k) {
+            const BodyContact& bc = body_contacts_[static_cast<std::size_t>(k)];
+            const AvbdContact& c = contacts_[static_cast<std::size_t>(bc.contact)];
+            const ConstraintValue value = constraint_of(c, alpha);
+            add_contact_force(c.jacobian, bc.slot,
+                              contact_force(c.dual.lambda, c.dual.stiffness, value.constraint, c.friction), block);
+        }
+        if (!mass_[b].translates || !mass_[b].turns_freely) hold_fixed_directions(mass_[b], block);
+        const BlockSolution solution = block_solve(block);  // (Eq. 4)
+        x.linear += solution.position_change.linear;
+        x.angular += solution.position_change.angular;
+        ++visits_;
+    }
+
+    // The dual update of every contact (Eqs. 11, 16), at the bodies' new positions.
+    void update_duals(double alpha) {
+        for (AvbdContact& c : contacts_) {
+            const ConstraintValue value = constraint_of(c, alpha);
+            const ContactForce force = contact_force(c.dual.lambda, c.dual.stiffness, value.constraint, c.friction);
+            c.dual = dual_update(force, c.dual.stiffness, value.constraint, avbd_);
+        }
+    }
+
+    // BDF1: v = delta p / h, w = delta theta / h.
+    void take_velocities() {
+        for (const int b : solved_) {
+            const auto u = static_cast<std::size_t>(b);
+            const Bdf1Velocity v = velocity_from_displacement(frame_.bodies[u], displacement_[u], h_);
+            velocity_[u].linear = v.velocity;
+            velocity_[u].angular = v.angular_velocity;
+        }
+    }
+
+    void write_bodies() {
+        const OrientationUpdate update = settings_.orientation_update;
+        for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
+            RigidBody& body = frame_.bodies[b];
+            const Displacement& d = displacement_[b];
+            if (!is_immovable(body)) {
+                const bool solved = first_contact_[b + 1] > first_contact_[b];
+                body.velocity = solved ? velocity_[b].linear : Vec3(d.linear / h_);
+                body.angular_velocity = solved ? velocity_[b].angular : Vec3(d.angular / h_);
+            }
+            body.position += d.linear;
+            body.orientation = rotated(body.orientation, d.angular, update);
+        }
+    }
+
+    // Not AVBD's (implicit Euler ends a collision at rest): soft step's bounce, once, on the velocities.
+    void restitution() {
+        const double cutoff = settings_.restitution_cutoff;
+        for (std::size_t k = 0; k < contacts_.size(); ++k) {
+            const Bounce& bounce = bounce_[k];
+            const AvbdContact& c = contacts_[k];
+            if (bounce.restitution == 0.0 || bounce.separating_velocity >= -cutoff || !(c.dual.lambda.x() > 0.0))
+                continue;
+            const PreparedContact& row = frame_.contacts[static_cast<std::size_t>(c.contact)];
+            PerBody<Vec3> relative;
+            PerBody<MassProperties> mass;
+            PerBody<BodyMotion> motion;
+            for (int i = 0; i < 2; ++i) {
+                if (c.body[i] == world_body) continue;
+                const auto u = static_cast<std::size_t>(c.body[i]);
+                relative[i] = row.relative_position[i];
+                mass[i] = frame_.mass[u];
+                motion[i] = BodyMotion{frame_.bodies[u].velocity, frame_.bodies[u].angular_velocity, Vec3::Zero()};
+            }
+            const double d = delta_velocity_per_unit_impulse(row.basis.normal(), relative, mass)
+                                 .delta_velocity_per_unit_impulse;                                             // step 3
+            const double v_n = contact_velocity(row.basis, relative, motion, h_, false).contact_velocity.x();  // step 4
+            if (!(d > 0.0)) continue;  // no impulse can move it
+            // g = (-c v_n(before) - v_n) / d along n, push only.
+            const double impulse = (-bounce.restitution * bounce.separating_velocity - v_n) / d;
+            if (!(impulse > 0.0)) continue;
+            apply_velocity_change(frame_.bodies, c.body,
+                                  velocity_change(row.basis.normal() * impulse, relative, mass));  // step 7
+            bounced_.push_back(c.contact);
+        }
+    }
+
+    // For LastTouch (world/non_finite_check.hpp), stamped once at the end: each solved body's contacts in the last
+    // sweep's order, then the bounces.
+    void stamp_visits() const {
+        if (!frame_.touch) return;
+        for (const int b : solved_)
+            for (int k = first_contact_[static_cast<std::size_t>(b)];
+                 k < first_contact_[static_cast<std::size_t>(b) + 1]; ++k)
+                frame_.touch->touched(
+                    contacts_[static_cast<std::size_t>(body_contacts_[static_cast<std::size_t>(k)].contact)].contact);
+        for (const int c : bounced_) frame_.touch->touched(c);
+    }
+
+    const Basis& basis_of(const AvbdContact& c) const {
+        return frame_.contacts[static_cast<std::size_t>(c.contact)].basis;
+    }
+
+    FrameContext& frame_;
+    const ResolverSettings& settings_;
+    const AvbdSettings& avbd_;
+    double h_;
+    // Every buffer in the frame's scratch (FrameContext::scratch).
+    std::pmr::vector<AvbdContact> contacts_;
+    std::pmr::vector<ContactKey> keys_;            // beside each contact
+    std::pmr::vector<Bounce> bounce_;              // beside each contact
+    std::pmr::vector<Displacement> target_;        // per body: y - x-
+    std::pmr::vector<Displacement> displacement_;  // per body: x - x-, the iterations' unknown
+    std::pmr::vector<Velocities> velocity_;        // per body
+    std::pmr::vector<BodyMass> mass_;              // per body
+    std::pmr::vector<int> solved_;                 // the bodies the sweeps visit, in index order
+    std::pmr::vector<int> first_contact_;          // per body, into body_contacts_, and one past the last
+    std::pmr::vector<BodyContact> body_contacts_;
+    std::pmr::vector<int> bounced_;  // the contacts restitution visited
+    int visits_ = 0;
+};
+
+}  // namespace
+
+PhaseOutcome avbd_step(FrameContext& frame) {
+    Avbd step(frame);
+    step.run();
+    if (frame.memory) {
+        if (frame.settings.warm_start)
+            step.remember(*frame.memory);
+        else
+            frame.memory->clear();
+    }
+    // Every block solve counts as an iteration; the schedule is fixed, so it runs to its end unless the stop flag
+    // cuts it short (frame.cut_short).
+    const PhaseOutcome outcome{step.visit_limit(), step.visits(), StopReason::sweeps_complete};
+    frame.recorder.end_phase(Phase::velocity, outcome);
+    return outcome;
+}
+
+}  // namespace impulse

@@ -40,6 +40,11 @@ void apply_fields(Scene& scene, const json& object, std::string_view path) {
         if (soft.contains("damping_ratio")) s.soft_step.damping_ratio = soft["damping_ratio"].get<double>();
         if (soft.contains("max_push_velocity")) s.soft_step.max_push_velocity = soft["max_push_velocity"].get<double>();
     }
+    if (has("recycling")) {
+        const json& recycling = object["recycling"];
+        if (recycling.contains("distance")) s.recycling.distance = recycling["distance"].get<double>();
+        if (recycling.contains("angle")) s.recycling.angle = recycling["angle"].get<double>();
+    }
     if (has("avbd")) {
         const json& avbd = object["avbd"];
         const auto number = [&avbd](const char* key, double& value) {
@@ -152,6 +157,8 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
     if (s.baumgarte) out["baumgarte"] = true;
     if (s.sliding_friction != SlidingFriction::reference)
         out["sliding_friction"] = name_of(sliding_friction_names, s.sliding_friction);
+    if (s.recycling != RecyclingSettings{})
+        out["recycling"] = {{"distance", s.recycling.distance}, {"angle", s.recycling.angle}};
     if (s.velocity_method == VelocityMethod::avbd || s.avbd != AvbdSettings{})
         out["avbd"] = {{"iterations", s.avbd.iterations},
                        {"alpha", s.avbd.alpha},

@@ -168,6 +168,9 @@ void draw_settings(model::Session& session, UiState& state, model::ActionHost& h
         if (key.starts_with("position_bias.") && !s.baumgarte && !position_biased) continue;
         method_setting(session, state, host, key, s);
     }
+    // Contact recycling is the world's detection, not a method's: any method may use it (its angle once it is on).
+    number_field(session, state, host, "recycle distance (m)", "recycling.distance", s.recycling.distance);
+    if (s.recycling.on()) number_field(session, state, host, "recycle angle (°)", "recycling.angle", s.recycling.angle);
     number_field(session, state, host, "restitution cut-off", "restitution_cutoff", s.restitution_cutoff);
     bool from_acceleration = s.velocity_from_acceleration;
     if (ImGui::Checkbox("velocity from acceleration", &from_acceleration))

@@ -4,6 +4,7 @@
 #include "math/types.hpp"
 
 #include <array>
+#include <optional>
 
 namespace impulse {
 
@@ -42,8 +43,17 @@ struct Contact {
     double restitution = 0.0;     // c in v_s' = -c v_s
     double friction = 0.0;        // mu; exactly 0 selects the frictionless impulse (14.3)
     ContactOrigin origin{};       // which test and which features made it
+    // A recycled contact (memory/contact_recycling.hpp) keeps each body's own anchor, which the bodies' moves since
+    // detection have carried apart: `point` is body 0's, this body 1's. Empty (every detected contact): both bodies
+    // are touched at `point`.
+    std::optional<Vec3> body1_point{};
 
     bool operator==(const Contact&) const = default;
 };
+
+// Where body `slot` (0 or 1, as the contact gives them) is touched: q, or body 1's own anchor on a recycled contact.
+inline const Vec3& touch_point(const Contact& contact, int slot) {
+    return slot == 1 && contact.body1_point ? *contact.body1_point : contact.point;
+}
 
 }  // namespace impulse

@@ -63,7 +63,8 @@ void prepare(PreparedContact& c, int index, const Contact& contact, std::span<co
         const RigidBody& body = bodies[static_cast<std::size_t>(o.bodies[i])];
         body_mass[i] = &mass[static_cast<std::size_t>(o.bodies[i])];
         acceleration[i] = &body.last_frame_acceleration;
-        c.relative_position[i] = contact.point - body.position;  // q - p  (1.8)
+        // q - p  (1.8), q the body's own point (a recycled contact keeps one per body; the swap exchanged them)
+        c.relative_position[i] = touch_point(contact, o.swapped ? 1 - i : i) - body.position;
         const BodyContactVelocity v =
             body_contact_velocity(c.basis.contact_to_world, c.relative_position[i],
                                   {body.velocity, body.angular_velocity, body.last_frame_acceleration},

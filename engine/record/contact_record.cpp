@@ -21,7 +21,13 @@ ContactPreparation contact_preparation(int index, const Contact& contact, std::s
     const PerBody<BodyMotion> motion = contact_motion(o.bodies, bodies);
 
     const Basis contact_basis = basis(o.normal);
-    const PerBody<Vec3> q_rel = relative_position(contact.point, {centre(0), centre(1)});
+    // Each body's own point (they differ only on a recycled contact; the swap exchanged them).
+    const auto q_rel_of = [&](int i) -> std::optional<Vec3> {
+        const std::optional<Vec3> p = centre(i);
+        if (!p) return std::nullopt;
+        return relative_position(touch_point(contact, o.swapped ? 1 - i : i), {p, std::nullopt})[0];
+    };
+    const PerBody<Vec3> q_rel{q_rel_of(0), q_rel_of(1)};
     const UnitImpulseChain chain = delta_velocity_per_unit_impulse(o.normal, q_rel, body_mass);
     const ContactVelocityTerms velocity =
         contact_velocity(contact_basis, q_rel, motion, settings.duration, settings.tangential_acceleration_velocity);

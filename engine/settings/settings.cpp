@@ -14,7 +14,8 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 }
 
 namespace {
-constexpr std::array<std::string_view, 7> names{"book", "chapter", "sweep", "pgs", "pgs_split", "soft_step", "avbd"};
+constexpr std::array<std::string_view, 8> names{
+    "book", "chapter", "sweep", "pgs", "pgs_split", "soft_step", "soft_step_recycled", "avbd"};
 }
 
 std::span<const std::string_view> preset_names() {
@@ -52,10 +53,12 @@ std::optional<ResolverSettings> preset(std::string_view name) {
         s.position_bias.factor = name == "pgs" ? 0.2 : 0.8;
         return s;
     }
-    if (name == "soft_step") {
+    if (name == "soft_step" || name == "soft_step_recycled") {
         s.velocity_method = VelocityMethod::soft_step;
         s.position_method = PositionMethod::none;  // the soft contact carries its own push (see SoftStepSettings)
         s.sweeps = 1;
+        // Box3D's B3_CONTACT_RECYCLE_DISTANCE, 10 linear slops of 5 mm; its angle, 10 degrees, is the default.
+        if (name == "soft_step_recycled") s.recycling.distance = 0.05;
         return s;
     }
     if (name == "avbd") {

@@ -68,6 +68,19 @@ struct SoftStepSettings {
     bool operator==(const SoftStepSettings&) const = default;
 };
 
+// Contact recycling (Box3D, Catto 2026: physics_world.c's collide task; memory/contact_recycling.hpp): a pair's
+// contacts, as detected, are kept from frame to frame (normal, features, each body's own anchor) while the pair's
+// relative pose has moved less than `distance` and neither body has turned more than `angle` since they were
+// detected; each kept contact's penetration is found again from its anchors. distance 0 (every preset but
+// soft_step_recycled): every frame detects afresh.
+struct RecyclingSettings {
+    double distance = 0.0;  // m: the relative move (with the turn's arc at the shapes' reach) a kept pair may make
+    double angle = 10.0;    // degrees: the most either body may turn (Box3D: cos^2(angle / 2) > 0.99240388)
+
+    bool on() const { return distance > 0.0; }
+    bool operator==(const RecyclingSettings&) const = default;
+};
+
 struct RelaxationSettings {
     double fraction = 0.5;  // share of a contact's current penetration removed when it is visited
     int passes = 4;         // each pass visits every contact above the epsilon once, worst first
@@ -99,6 +112,7 @@ struct ResolverSettings {
     PositionBiasSettings position_bias{};
     SoftStepSettings soft_step{};
     AvbdSettings avbd{};
+    RecyclingSettings recycling{};  // off unless distance > 0: contacts detected afresh every frame
     // The reference engine's chapter-15 refinements of steps 4 and 5 (velocity_refinements() below gives them to
     // step 5). Contacts closing slower than restitution_cutoff (m/s) bounce with restitution 0, so resting
     // contacts do not jitter; 0 switches the cut-off off. Reference engine: 0.25.
@@ -133,6 +147,8 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 //            10 iterations).
 //   pgs_split   pgs with split impulse instead of Baumgarte (Bullet's split-impulse mode).
 //   soft_step   Box2D v3: 4 sub-steps of soft contacts, one relax sweep each, restitution after.
+//   soft_step_recycled  soft_step with Box3D's contact recycling: a pair's contacts kept while it moves less than
+//            5 cm (Box3D's 10 linear slops) and turns less than 10 degrees.
 //   avbd        augmented vertex block descent: 10 iterations of block solves and dual updates (AvbdSettings).
 std::span<const std::string_view> preset_names();
 // "book", "chapter", ... as one line for error messages.

@@ -41,9 +41,12 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
     return detection;
 }
 
-void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Detection& detection, StageTimes* times) {
+void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Detection& detection, StageTimes* times,
+                     ContactRecycling* recycling) {
     std::vector<Contact>& out = detection.contacts;
     out.clear();
+    detection.pairs_recycled = 0;
+    if (recycling) recycling->begin_frame(scene.settings.recycling, bodies, scene.shapes);
     const auto start = Clock::now();
 
     std::vector<Placement> placements;
@@ -60,9 +63,12 @@ void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Dete
         const Material& ground = scene.materials.at(scene.ground->material);
         for (std::size_t i = 0; i < bodies.size(); ++i) {
             if (!scene.shapes[i] || is_immovable(bodies[i])) continue;
+            const BodyPair pair{static_cast<int>(i), world_body};
+            if (recycling && recycling->recycle(pair, out)) continue;
             const std::size_t first = out.size();
             collide_with_ground(*scene.shapes[i], placements[i], static_cast<int>(i), scene.ground->plane, out);
             stamp_material(out, first, *materials[i], ground);
+            if (recycling) recycling->keep(pair, std::span<const Contact>(out).subspan(first));
         }
     }
 
@@ -81,11 +87,18 @@ void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Dete
     for (const auto& [i, j] : pairs) {
         if (out.size() > max_contacts_per_frame) break;  // the frame will not be resolved: stop adding to it
         const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
+        if (recycling && recycling->recycle({i, j}, out)) continue;
         const std::size_t first = out.size();
         collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out);
         stamp_material(out, first, *materials[ui], *materials[uj]);
+        if (recycling) recycling->keep({i, j}, std::span<const Contact>(out).subspan(first));
+    }
+    if (recycling) {
+        recycling->end_frame(out);
+        detection.pairs_recycled = recycling->recycled_pairs();
     }
     detection.over_budget = out.size() > max_contacts_per_frame;
+    if (recycling && detection.over_budget) recycling->clear();  // the frame will not be resolved
     if (times) {
         times->broad_phase += broad;
         times->narrow_phase += seconds_since(start) - broad;
@@ -108,6 +121,7 @@ World::World(Scene scene) : scene_(std::move(scene)), bodies_(scene_.bodies) {
 void World::reset() {
     bodies_ = scene_.bodies;
     memory_.clear();
+    recycling_.clear();
     frame_ = 0;
 }
 
@@ -131,9 +145,10 @@ StepReport World::step(Recorder& recorder) {
             integrate(body, scene_.world.gravity, dt, damping, scene_.settings.orientation_update);
     report.times.integrate = seconds_since(start);
 
-    detect_contacts(scene_, bodies_, detection_, &report.times);
+    detect_contacts(scene_, bodies_, detection_, &report.times, scene_.settings.recycling.on() ? &recycling_ : nullptr);
     const Detection& detection = detection_;
     report.pairs_tested = detection.pairs_tested;
+    report.pairs_recycled = detection.pairs_recycled;
     report.contacts = static_cast<int>(detection.contacts.size());
     for (const Contact& c : detection.contacts)
         report.deepest_penetration = std::max(report.deepest_penetration, c.penetration);

@@ -11,6 +11,7 @@
 // run).
 
 #include "memory/contact_memory.hpp"
+#include "memory/contact_recycling.hpp"
 #include "memory/frame_arena.hpp"
 #include "record/recorder.hpp"
 #include "resolver/resolver.hpp"
@@ -33,6 +34,7 @@ inline constexpr std::size_t max_contacts_per_frame = 250'000;
 struct Detection {
     std::vector<Contact> contacts;  // ground contacts in body order, then pairs in (i, j) order
     int pairs_tested = 0;           // pairs the broad phase handed to the pair tests
+    int pairs_recycled = 0;         // pairs whose kept contacts were used instead of a test (contact recycling)
     bool over_budget = false;       // the pair tests stopped past max_contacts_per_frame contacts
 };
 
@@ -40,14 +42,17 @@ struct Detection {
 // shape take part in no test, and two immovable bodies are never tested against each other. The world's
 // step calls it; the bench's accuracy metrics and `resolve` (a scene without written contacts) call it alone.
 Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times = nullptr);
-// The same into `detection`, whose list keeps its room (a world detects every frame).
+// The same into `detection`, whose list keeps its room (a world detects every frame). With `recycling` (a world's,
+// when its settings switch recycling on), a pair kept from earlier frames that has moved little since is not
+// tested: its kept contacts are used, brought up to date (memory/contact_recycling.hpp).
 void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Detection& detection,
-                     StageTimes* times = nullptr);
+                     StageTimes* times = nullptr, ContactRecycling* recycling = nullptr);
 
 // What one step did.
 struct StepReport {
     int frame = 0;  // the frame stepped, from 0
     int pairs_tested = 0;
+    int pairs_recycled = 0;  // of them and of the kept pairs, those whose kept contacts were used (recycling)
     int contacts = 0;
     double deepest_penetration = 0.0;  // m, before resolution (0 without contacts)
     double kinetic_energy = 0.0;       // J, after the step
@@ -75,7 +80,7 @@ public:
     StepReport step(Recorder& recorder);
     StepReport step();  // with nobody listening
 
-    // Back to the scene's start: its bodies, an empty memory, frame 0.
+    // Back to the scene's start: its bodies, an empty memory (impulses and recycled contacts), frame 0.
     void reset();
 
     // A flag that, once set (from a signal handler, say), cuts the step in progress short: its report says
@@ -84,8 +89,9 @@ public:
 
     const Scene& scene() const { return scene_; }  // as created: shapes, materials, settings, bodies at the start
     const ResolverSettings& settings() const { return scene_.settings; }
-    const std::vector<RigidBody>& bodies() const { return bodies_; }  // now: after frame() frames
-    const ContactMemory& contact_memory() const { return memory_; }   // last step's impulses, by contact key
+    const std::vector<RigidBody>& bodies() const { return bodies_; }          // now: after frame() frames
+    const ContactMemory& contact_memory() const { return memory_; }           // last step's impulses, by contact key
+    const ContactRecycling& contact_recycling() const { return recycling_; }  // the pairs' kept contacts
     int frame() const { return frame_; }  // frames stepped so far: the number of the next one
     double time() const { return frame_ * scene_.settings.duration; }  // s since the start
 
@@ -93,6 +99,7 @@ private:
     Scene scene_;
     std::vector<RigidBody> bodies_;
     ContactMemory memory_;
+    ContactRecycling recycling_;  // used when settings.recycling is on
     int frame_ = 0;
     std::vector<PrincipalInertia> principal_;  // per body, for the step report's kinetic energy
     FrameArena arena_;                         // the resolution's buffers, kept from frame to frame

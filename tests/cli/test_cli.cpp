@@ -121,7 +121,8 @@ TEST_CASE("the help says every value in words, never in CLI11's type names") {
     CHECK(all.out.find("--frames N                  Frames to simulate (default: the scene's settings.frames, 600); "
                        "a whole number from 1 to 10000000") != std::string::npos);
     CHECK(all.out.find("--preset PRESET") != std::string::npos);
-    CHECK(all.out.find("one of book, chapter, sweep, pgs, pgs_split, soft_step, avbd") != std::string::npos);
+    CHECK(all.out.find("one of book, chapter, sweep, pgs, pgs_split, soft_step, soft_step_recycled, avbd") !=
+          std::string::npos);
     for (const std::string command : {"resolve", "run", "inspect", "lesson", "validate", "worksheet", "diff", "bench"})
         CHECK_MESSAGE(all.out.find("\nimpulse-lab " + command) != std::string::npos, command);
 }
@@ -136,11 +137,11 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
     const std::string trace = dir.file("t.json").string();
     const std::vector<BadFlag> table{
         {{"resolve", ruler, "--preset", "fast"},
-         "impulse-lab: --preset: must be one of book, chapter, sweep, pgs, pgs_split, soft_step, avbd, got \"fast\"; "
-         "see impulse-lab resolve --help"},
+         "impulse-lab: --preset: must be one of book, chapter, sweep, pgs, pgs_split, soft_step, soft_step_recycled, "
+         "avbd, got \"fast\"; see impulse-lab resolve --help"},
         {{"resolve", ruler, "--preset", "bok"},
          "impulse-lab: --preset: must be one of book, chapter, sweep, pgs, "
-         "pgs_split, soft_step, avbd, got \"bok\" (did you mean book?)"},
+         "pgs_split, soft_step, soft_step_recycled, avbd, got \"bok\" (did you mean book?)"},
         {{"resolve", ruler, "--set", "position_method=teleport"},
          "impulse-lab: --set position_method: must be one of \"linear_projection\", \"nonlinear_projection\", "
          "\"velocity_based\", \"relaxation\", \"split_impulse\", \"none\"; got \"teleport\""},

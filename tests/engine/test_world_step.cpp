@@ -28,13 +28,15 @@ Scene scene_with(const std::string& name, const std::string& preset) {
 // One frame written out by hand, as every caller wrote it before the world owned its step: integrate (unless
 // the velocity method owns the whole step and integrates in its sub-steps), detect, resolve with the memory the
 // caller keeps.
+// With contact recycling on (soft_step_recycled) the caller keeps the pairs' contacts too.
 Detection step_by_hand(const Scene& scene, std::vector<RigidBody>& bodies, ContactMemory* memory, Recorder& recorder,
-                       int frame) {
+                       int frame, ContactRecycling* recycling = nullptr) {
     const Damping damping{scene.world.linear_damping, scene.world.angular_damping};
     if (method_row(scene.settings.velocity_method).scope != MethodScope::whole_step)
         for (RigidBody& body : bodies)
             integrate(body, scene.world.gravity, scene.settings.duration, damping, scene.settings.orientation_update);
-    Detection detection = detect_contacts(scene, bodies);
+    Detection detection;
+    detect_contacts(scene, bodies, detection, nullptr, scene.settings.recycling.on() ? recycling : nullptr);
     resolve_contacts(bodies, detection.contacts, scene.settings, recorder,
                      {.frame = frame, .memory = memory, .forces = Forces{scene.world.gravity, damping}});
     return detection;
@@ -53,9 +55,10 @@ TEST_CASE("a world's step is integrate, detect and resolve with one contact memo
         TraceRecorder world_recorder(by_world), hand_recorder(by_hand);
         std::vector<RigidBody> bodies = scene.bodies;
         ContactMemory memory;
+        ContactRecycling recycling;
         for (int frame = 0; frame < 20; ++frame) {
             const StepReport report = world.step(world_recorder);
-            const Detection detection = step_by_hand(scene, bodies, &memory, hand_recorder, frame);
+            const Detection detection = step_by_hand(scene, bodies, &memory, hand_recorder, frame, &recycling);
             CHECK(report.frame == frame);
             CHECK(report.contacts == static_cast<int>(detection.contacts.size()));
             double deepest = 0.0, energy = 0.0;

@@ -32,7 +32,7 @@ set(CPACK_DEBIAN_RUNTIME_PACKAGE_DEPENDS "libegl1, libgl1-mesa-dri")
 set(CPACK_DEBIAN_RUNTIME_DESCRIPTION
     "impulse-lab resolves contacts the way chapter 14 of Millington's Game Physics Engine Development does, and
 other ways (PGS, split impulse, soft step), and shows every intermediate value of every contact beside its
-formula and equation. With a course of thirteen lessons, shipped scenes and cases, and coursework tools.")
+formula and equation. With a course of fourteen lessons, shipped scenes and cases, and coursework tools.")
 
 # The libraries are static: a consumer compiles against the headers of Eigen and nlohmann-json.
 set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME impulse-lab-dev)

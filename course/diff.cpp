@@ -212,7 +212,7 @@ std::vector<std::size_t> derivation_position(const formats::json& reference, con
             key += (key.empty() ? "" : ".") + *k;
         } else {
             indices.push_back(std::get<std::size_t>(path[i]));
-            if (key == "updates" || key.ends_with(".features")) key += "[]";
+            if (key == "updates" || key == "gathered" || key.ends_with(".features")) key += "[]";
         }
     }
     const StepKey* step_key = find_step_key(kind, key);

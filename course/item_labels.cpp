@@ -33,6 +33,14 @@ std::string item_label(const Trace& trace, const Mask& mask, int f, Stage stage,
                (secret ? "" : " (" + explain::number(it.penetration) + " m)");
     }
     const VelocityIteration& it = frame.velocity.iterations[i];
+    // AVBD: a sweep over the bodies, each visit a body with the contacts it gathered, then the contacts' dual update.
+    if (const auto& v = it.body_visit) {
+        const std::size_t n = v->gathered.size();
+        return explain::sweep_text(*it.sweep, trace.scene.settings) + " → body " + std::to_string(v->body) + " (" +
+               std::to_string(n) + (n == 1 ? " contact)" : " contacts)");
+    }
+    if (it.sweep && it.sweep->stage == SolverStage::dual)
+        return explain::sweep_text(*it.sweep, trace.scene.settings) + " → contact " + std::to_string(it.contact);
     const bool secret = mask.hides_value(at, it.contact, "desired_delta_velocity", it.desired_delta_velocity);
     const std::string value = secret ? "" : " (Δv " + explain::number(it.desired_delta_velocity) + " m/s)";
     if (it.sweep)

@@ -100,13 +100,14 @@ Described describe_outside(const OutsideKey& key) {
 }
 
 std::string step_key_of(const std::vector<PathToken>& path, std::size_t from) {
-    // Nested keys joined by '.', "[]" after updates and features; other indices (a body, a component) dropped.
+    // Nested keys joined by '.', "[]" after updates, features and AVBD's gathered contacts; other indices (a body, a
+    // component) dropped.
     std::string key;
     for (std::size_t i = from; i < path.size(); ++i) {
         if (const auto* k = std::get_if<std::string>(&path[i])) {
             if (!key.empty()) key += '.';
             key += *k;
-        } else if (key == "updates" || key.ends_with(".features")) {
+        } else if (key == "updates" || key == "gathered" || key.ends_with(".features")) {
             key += "[]";
         }
     }

@@ -3,7 +3,6 @@
 
 #include "formats/input_error.hpp"
 #include "formats/physical_values.hpp"
-#include "methods/method_table.hpp"
 #include "record/word_table.hpp"
 
 #include <algorithm>
@@ -29,16 +28,6 @@ void check_update_body(const json& records, const json& update, const std::strin
 
 std::string count_text(std::size_t n, const char* one, const char* many) {
     return std::to_string(n) + " " + (n == 1 ? one : many);
-}
-
-// Whether a phase lists the iterations it used: every method's does, but one whose table row says it records none
-// yet (AVBD: its block solves are counted, not recorded) lists none.
-bool lists_its_iterations(const json& phase) {
-    const auto method = phase.find("method");
-    if (method == phase.end() || !method->is_string()) return true;
-    for (const auto& row : velocity_methods)
-        if (row.name == method->get<std::string>()) return row.records_iterations;
-    return true;
 }
 
 }  // namespace
@@ -146,8 +135,7 @@ void check_counts(const json& document) {
             const json& phase = phases[p];
             const json& iterations = phase["iterations"];
             const auto used = phase["iterations_used"].get<long long>();
-            if (used != static_cast<long long>(iterations.size()) &&
-                (lists_its_iterations(phase) || !iterations.empty()))
+            if (used != static_cast<long long>(iterations.size()))
                 throw InputError(json_path_child(phase_path, "iterations_used"),
                                  "is " + std::to_string(used) + ", but the phase lists " +
                                      count_text(iterations.size(), "iteration", "iterations"));

@@ -22,6 +22,10 @@ std::string_view kind_name(words::Kind kind) {
             return "vec3";
         case words::Kind::mat3:
             return "mat3";
+        case words::Kind::vec6:
+            return "vec6";
+        case words::Kind::mat6:
+            return "mat6";
         case words::Kind::per_body_number:
             return "per body: number";
         case words::Kind::per_body_vec3:

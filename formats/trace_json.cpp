@@ -1,5 +1,6 @@
 #include "formats/trace_json.hpp"
 
+#include "formats/trace_avbd_json.hpp"
 #include "formats/trace_checks.hpp"
 #include "formats/trace_format1.hpp"
 
@@ -337,10 +338,11 @@ FrictionSolve read_friction_solve(const json& j) {
 }
 
 json velocity_iteration_json(const VelocityIteration& it) {
-    json out = {{velocity_key("iteration"), it.iteration},
-                {velocity_key("contact"), it.contact},
-                {velocity_key("desired_delta_velocity"), it.desired_delta_velocity},
-                {velocity_key("epsilon"), it.epsilon}};
+    json out = {{velocity_key("iteration"), it.iteration}, {velocity_key("contact"), it.contact}};
+    if (!is_avbd_iteration(it)) {  // a body visit or a dual update aims at no desired delta v
+        out[velocity_key("desired_delta_velocity")] = it.desired_delta_velocity;
+        out[velocity_key("epsilon")] = it.epsilon;
+    }
     if (const auto& w = it.sweep)
         out[velocity_key("sweep")] = {{velocity_key("sweep.substep"), w->substep},
                                       {velocity_key("sweep.pass"), w->pass},
@@ -363,6 +365,7 @@ json velocity_iteration_json(const VelocityIteration& it) {
         out[velocity_key("velocity_change")] = per_body_vec3(r->velocity_change_terms.velocity_change);
         out[velocity_key("rotation_change")] = per_body_vec3(r->velocity_change_terms.rotation_change);
     }
+    write_avbd_iteration(it, out);
     json updates = json::array();
     for (const VelocityUpdate& u : it.updates)
         updates.push_back({{velocity_key("updates[].contact"), u.contact},
@@ -381,8 +384,10 @@ VelocityIteration read_velocity_iteration(const json& j) {
     VelocityIteration it;
     it.iteration = j[velocity_key("iteration")].get<int>();
     it.contact = j[velocity_key("contact")].get<int>();
-    it.desired_delta_velocity = j[velocity_key("desired_delta_velocity")].get<double>();
-    it.epsilon = j[velocity_key("epsilon")].get<double>();
+    // AVBD's body visits and dual updates have neither (0 in the record, as the recorder makes them).
+    const bool aims = j.contains(velocity_key("desired_delta_velocity"));
+    it.desired_delta_velocity = aims ? j[velocity_key("desired_delta_velocity")].get<double>() : 0.0;
+    it.epsilon = aims ? j[velocity_key("epsilon")].get<double>() : 0.0;
     if (j.contains(velocity_key("sweep"))) {
         const json& w = j[velocity_key("sweep")];
         it.sweep = SweepPlace{w[velocity_key("sweep.substep")].get<int>(), w[velocity_key("sweep.pass")].get<int>(),
@@ -409,6 +414,7 @@ VelocityIteration read_velocity_iteration(const json& j) {
                                    read_per_body_vec3(j[velocity_key("rotation_change")])};
         it.resolution = r;
     }
+    read_avbd_iteration(j, it);
     for (const json& u : j[velocity_key("updates")])
         it.updates.push_back(
             {u[velocity_key("updates[].contact")].get<int>(), u[velocity_key("updates[].body")].get<int>(),

@@ -1,5 +1,5 @@
 #pragma once
-// The course's front page, as the site opens on it: the thirteen lessons with how far the student got in each, the
+// The course's front page, as the site opens on it: the fourteen lessons with how far the student got in each, the
 // shipped scenes and cases to open in the inspector, the student's own files, and their progress to take away or
 // bring back. What a button does is the platform's (the page's file picker, a download): it comes as actions.
 

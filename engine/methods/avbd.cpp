@@ -25,6 +25,8 @@
 //   8. lambda (world coordinates) and k remembered in the contact memory for the next frame.
 // A body that cannot move (inverse mass and inverse inertia 0) moves by its velocity and is not solved; a body
 // with no contact lands on its inertial target.
+// When the recorder keeps the frame, each body visit, dual update and bounce is reported as it happens (one
+// `if (frame_.keeping)` in each; record/avbd_records.hpp): the trace steps through a sweep body by body.
 
 #include "derivation/avbd/block_solve.hpp"
 #include "derivation/avbd/body_block.hpp"
@@ -37,6 +39,7 @@
 #include "derivation/velocity_change.hpp"
 #include "methods/method.hpp"
 #include "methods/solver_common.hpp"
+#include "record/avbd_records.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -120,11 +123,14 @@ public:
             });
     }
 
-    int visits() const { return visits_; }
+    // Every block solve, dual update and bounce is an iteration (each is one of the trace's iterations).
+    int visits() const { return visits_ + dual_updates_ + static_cast<int>(bounced_.size()); }
     int visit_limit() const {
         // Saturated: a count of sweeps set to stop only by the stop flag would overflow an int.
-        const long long limit = static_cast<long long>(solved_.size()) *
-                                (static_cast<long long>(avbd_.iterations) + (avbd_.post_stabilize ? 1 : 0));
+        const long long sweeps = static_cast<long long>(avbd_.iterations) + (avbd_.post_stabilize ? 1 : 0);
+        const long long contacts = static_cast<long long>(contacts_.size());
+        const long long limit =
+            static_cast<long long>(solved_.size()) * sweeps + contacts * std::max(avbd_.iterations, 0) + contacts;
         return static_cast<int>(std::min<long long>(limit, std::numeric_limits<int>::max()));
     }
 
@@ -236,16 +242,17 @@ private:
         const bool iteration = it < avbd_.iterations;  // else the post-stabilisation sweep
         const double alpha = !avbd_.post_stabilize ? avbd_.alpha : iteration ? 1.0 : 0.0;
         if (frame_.stop_requested()) return false;
+        const SweepPlace place{0, it, iteration ? SolverStage::solve : SolverStage::stabilize};
         for (const int b : solved_) {
             if (visits_ % stop_check_visits == 0 && visits_ > 0 && frame_.stop_requested()) return false;
-            visit(static_cast<std::size_t>(b), alpha);
+            visit(static_cast<std::size_t>(b), alpha, place);
         }
-        if (iteration) update_duals(alpha);
+        if (iteration) update_duals(alpha, it);
         return true;
     }
 
     // The primal update of one body (Eqs. 4-6, 13, 17): its block against its contacts as they are now, solved.
-    void visit(std::size_t b, double alpha) {
+    void visit(std::size_t b, double alpha, const SweepPlace& place) {
         Displacement& x = displacement_[b];
         BodyBlock block = inertial_block(mass_[b], h_, target_[b], x);
         for (int k = first_contact_[b]; k < first_contact_[b + 1]; ++k) {
@@ -257,18 +264,50 @@ private:
         }
         if (!mass_[b].translates || !mass_[b].turns_freely) hold_fixed_directions(mass_[b], block);
         const BlockSolution solution = block_solve(block);  // (Eq. 4)
+        if (frame_.keeping) report_visit(b, alpha, block, solution.position_change, place);
         x.linear += solution.position_change.linear;
         x.angular += solution.position_change.angular;
         ++visits_;
     }
 
     // The dual update of every contact (Eqs. 11, 16), at the bodies' new positions.
-    void update_duals(double alpha) {
+    void update_duals(double alpha, int it) {
         for (AvbdContact& c : contacts_) {
             const ConstraintValue value = constraint_of(c, alpha);
             const ContactForce force = contact_force(c.dual.lambda, c.dual.stiffness, value.constraint, c.friction);
-            c.dual = dual_update(force, c.dual.stiffness, value.constraint, avbd_);
+            const DualVariables updated = dual_update(force, c.dual.stiffness, value.constraint, avbd_);
+            if (frame_.keeping)
+                frame_.recorder.dual_visit({0, it, SolverStage::dual}, {rows_of(c, 0, value, force), updated});
+            c.dual = updated;
+            ++dual_updates_;
         }
+    }
+
+    // A contact's rows as a visit read them, for the recorder.
+    static AvbdContactRows rows_of(const AvbdContact& c, int slot, const ConstraintValue& value,
+                                   const ContactForce& force) {
+        return {c.contact, slot, value.constraint, c.dual.stiffness, c.dual.lambda, force.force, c.friction};
+    }
+
+    // A body visit as the recorder takes it, before the body moves: its contacts read again as its block read them
+    // (the same functions on the same displacements), its block and its move.
+    void report_visit(std::size_t b, double alpha, const BodyBlock& block, const Displacement& change,
+                      const SweepPlace& place) const {
+        BodyVisitRecord r;
+        r.body = static_cast<int>(b);
+        for (int k = first_contact_[b]; k < first_contact_[b + 1]; ++k) {
+            const BodyContact& bc = body_contacts_[static_cast<std::size_t>(k)];
+            const AvbdContact& c = contacts_[static_cast<std::size_t>(bc.contact)];
+            const ConstraintValue value = constraint_of(c, alpha);
+            r.gathered.push_back(rows_of(c, bc.slot, value,
+                                         contact_force(c.dual.lambda, c.dual.stiffness, value.constraint, c.friction)));
+        }
+        r.block_matrix = block.block_matrix;
+        r.block_force = block.block_force;
+        r.position_change = change;
+        const Displacement& x = displacement_[b];
+        r.displacement = {x.linear + change.linear, x.angular + change.angular};
+        frame_.recorder.body_visit(place, r);
     }
 
     // BDF1: v = delta p / h, w = delta theta / h.
@@ -316,16 +355,41 @@ private:
                 motion[i] = BodyMotion{frame_.bodies[u].velocity, frame_.bodies[u].angular_velocity, Vec3::Zero()};
             }
             const double d = delta_velocity_per_unit_impulse(row.basis.normal(), relative, mass)
-                                 .delta_velocity_per_unit_impulse;                                             // step 3
-            const double v_n = contact_velocity(row.basis, relative, motion, h_, false).contact_velocity.x();  // step 4
+                                 .delta_velocity_per_unit_impulse;                                            // step 3
+            const Vec3 velocity = contact_velocity(row.basis, relative, motion, h_, false).contact_velocity;  // step 4
+            const double v_n = velocity.x();
             if (!(d > 0.0)) continue;  // no impulse can move it
             // g = (-c v_n(before) - v_n) / d along n, push only.
             const double impulse = (-bounce.restitution * bounce.separating_velocity - v_n) / d;
             if (!(impulse > 0.0)) continue;
+            if (frame_.keeping) report_bounce(c.contact, bounce, velocity, impulse);
             apply_velocity_change(frame_.bodies, c.body,
                                   velocity_change(row.basis.normal() * impulse, relative, mass));  // step 7
             bounced_.push_back(c.contact);
         }
+    }
+
+    // A bounce as the recorder takes it: an impulse along the normal, as soft step's restitution visit.
+    void report_bounce(int contact, const Bounce& bounce, const Vec3& velocity, double impulse) const {
+        const double desired = -bounce.restitution * bounce.separating_velocity - velocity.x();
+        frame_.recorder.velocity_visit(
+            {.contact = contact,
+             .sweep = SweepPlace{0, 0, SolverStage::restitution},
+             .epsilon = 0.0,
+             .updates = DesiredFollows::nothing,
+             .resolution = nullptr,
+             .contact_velocity = velocity,
+             .desired_terms = {.separating_velocity = velocity.x(),
+                               .restitution = bounce.restitution,
+                               .restitution_cutoff = settings_.restitution_cutoff,
+                               .restitution_cutoff_applied = false,
+                               .restitution_used = bounce.restitution,
+                               .velocity_from_acceleration_applied = false,
+                               .velocity_from_acceleration = 0.0,
+                               .position_bias = std::nullopt,
+                               .desired_delta_velocity = desired},
+             .accumulated = {Vec3::Zero(), Vec3(impulse, 0.0, 0.0), Vec3(impulse, 0.0, 0.0), ImpulseClamp::none},
+             .friction_rows = false});
     }
 
     // For LastTouch (world/non_finite_check.hpp), stamped once at the end: each solved body's contacts in the last
@@ -360,7 +424,8 @@ private:
     std::pmr::vector<int> first_contact_;          // per body, into body_contacts_, and one past the last
     std::pmr::vector<BodyContact> body_contacts_;
     std::pmr::vector<int> bounced_;  // the contacts restitution visited
-    int visits_ = 0;
+    int visits_ = 0;                 // block solves
+    int dual_updates_ = 0;           // contacts' dual updates
 };
 
 }  // namespace
@@ -374,8 +439,8 @@ PhaseOutcome avbd_step(FrameContext& frame) {
         else
             frame.memory->clear();
     }
-    // Every block solve counts as an iteration; the schedule is fixed, so it runs to its end unless the stop flag
-    // cuts it short (frame.cut_short).
+    // Every block solve, dual update and bounce counts as an iteration; the schedule is fixed, so it runs to its end
+    // unless the stop flag cuts it short (frame.cut_short).
     const PhaseOutcome outcome{step.visit_limit(), step.visits(), StopReason::sweeps_complete};
     frame.recorder.end_phase(Phase::velocity, outcome);
     return outcome;

@@ -37,9 +37,6 @@ struct MethodRow {
     void (*set_iterations)(ResolverSettings& settings, int n) = nullptr;
     // Position methods that work in passes: what one pass is called ("relaxation pass", "push sweep").
     std::string_view pass_name = {};
-    // False for a method whose iterations are counted but not yet recorded (AVBD: issue 30's phase 2 records its
-    // block solves): its phase in a trace lists none beside its iterations_used.
-    bool records_iterations = true;
 };
 
 namespace method_reads {
@@ -89,17 +86,10 @@ inline constexpr std::array<MethodRow<VelocityMethod>, 5> velocity_methods{{
          s.soft_step.substeps = n;
          s.sweeps = 1;
      }},
-    {VelocityMethod::avbd,
-     "avbd",
-     MethodScope::whole_step,
-     avbd_step,
-     method_reads::avbd,
+    {VelocityMethod::avbd, "avbd", MethodScope::whole_step, avbd_step, method_reads::avbd,
      "augmented vertex block descent: each body's 6x6 block against its contacts' augmented-Lagrangian forces; it "
      "integrates the bodies itself",
-     "avbd.iterations",
-     [](ResolverSettings& s, int n) { s.avbd.iterations = n; },
-     {},
-     false},
+     "avbd.iterations", [](ResolverSettings& s, int n) { s.avbd.iterations = n; }},
 }};
 
 inline constexpr std::array<MethodRow<PositionMethod>, 6> position_methods{{

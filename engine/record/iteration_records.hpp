@@ -5,6 +5,7 @@
 #include "derivation/desired_delta_velocity.hpp"
 #include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
+#include "record/avbd_records.hpp"
 #include "record/position_resolution.hpp"
 
 #include <optional>
@@ -89,8 +90,10 @@ enum class SolverStage {
     warm_start,   // last frame's total applied again at the start
     solve,        // a sweep with the position bias
     relax,        // soft step: a sweep without the bias, removing the velocity the bias added
-    restitution,  // soft step: the bounce, applied once after the sub-steps
+    restitution,  // soft step, AVBD: the bounce, applied once after the sub-steps (the iterations)
     push,         // split impulse: a sweep on the pseudo-velocities that only move positions
+    stabilize,    // AVBD: the sweep after the velocities were taken, moving the bodies out of what penetration is left
+    dual,         // AVBD: every contact's dual update after a sweep over the bodies
 };
 
 struct SweepPlace {
@@ -111,6 +114,10 @@ struct VelocityIteration {
     std::optional<AccumulatedImpulse> accumulated;  // projected Gauss-Seidel and soft step
     std::optional<VelocityResolution> resolution;   // absent when filtered out
     std::vector<VelocityUpdate> updates;
+    // AVBD (record/avbd_records.hpp): a body visit, whose `contact` is the first it gathered, or a contact's dual
+    // update. Neither has a desired delta v or an epsilon (both 0, and not written).
+    std::optional<BodyVisitRecord> body_visit;
+    std::optional<DualUpdateRecord> dual_update;
 
     bool operator==(const VelocityIteration&) const = default;
 };

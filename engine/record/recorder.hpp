@@ -35,6 +35,9 @@ public:
     virtual void contacts_prepared(const PreparedFrame& /*frame*/) {}
     virtual void position_visit(const PositionVisit& /*visit*/) {}
     virtual void velocity_visit(const VelocityVisit& /*visit*/) {}
+    // AVBD's visits (record/avbd_records.hpp): a body's primal update, a contact's dual update.
+    virtual void body_visit(const SweepPlace& /*place*/, const BodyVisitRecord& /*visit*/) {}
+    virtual void dual_visit(const SweepPlace& /*place*/, const DualUpdateRecord& /*update*/) {}
     virtual void end_phase(Phase /*phase*/, const PhaseOutcome& /*outcome*/) {}
     virtual void end_frame(std::span<const RigidBody> /*bodies*/) {}
 };

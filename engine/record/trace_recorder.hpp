@@ -30,6 +30,8 @@ public:
     void contacts_prepared(const PreparedFrame& frame) override;
     void position_visit(const PositionVisit& visit) override;
     void velocity_visit(const VelocityVisit& visit) override;
+    void body_visit(const SweepPlace& place, const BodyVisitRecord& visit) override;
+    void dual_visit(const SweepPlace& place, const DualUpdateRecord& update) override;
     void end_phase(Phase phase, const PhaseOutcome& outcome) override;
     void end_frame(std::span<const RigidBody> bodies) override;
 

@@ -70,7 +70,9 @@ VelocityIteration VisitRecords::velocity_iteration(const VelocityVisit& visit) {
                          .sweep = visit.sweep,
                          .accumulated = std::nullopt,
                          .resolution = accumulating ? row_resolution(visit) : *visit.resolution,
-                         .updates = {}};
+                         .updates = {},
+                         .body_visit = std::nullopt,
+                         .dual_update = std::nullopt};
     it.desired_delta_velocity = it.resolution->desired_terms.desired_delta_velocity;
     if (accumulating) it.accumulated = visit.accumulated;
     if (visit.updates != DesiredFollows::nothing)

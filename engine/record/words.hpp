@@ -28,6 +28,12 @@ inline constexpr std::string_view penetration_inertia = "penetration_inertia";  
 inline constexpr std::string_view move_split = "move_split";                    // step 8
 inline constexpr std::string_view position_change = "position_change";          // step 8
 inline constexpr std::string_view updates = "updates";                          // the other contacts' bookkeeping
+// AVBD's (record/avbd_records.hpp): a contact's rows, a body's block and move, a contact's dual update.
+inline constexpr std::string_view constraint = "constraint";
+inline constexpr std::string_view force = "force";
+inline constexpr std::string_view block_matrix = "block_matrix";
+inline constexpr std::string_view block_force = "block_force";
+inline constexpr std::string_view dual_update = "dual_update";
 // Where a given value comes from (not steps a table shows).
 inline constexpr std::string_view contact = "contact";    // collision detection or the case file
 inline constexpr std::string_view body = "body";          // a body's state or mass
@@ -50,6 +56,8 @@ enum class Kind {
     vec2,
     vec3,
     mat3,
+    vec6,  // AVBD's six coordinates of a body: (linear; angular)
+    mat6,
     per_body_number,  // [body0, body1], null for the world or where it does not apply
     per_body_vec3,
     per_body_bool,

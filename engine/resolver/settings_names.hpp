@@ -66,12 +66,14 @@ inline constexpr NameTable<ImpulseClamp, 4> impulse_clamp_names{{
     {ImpulseClamp::friction, "friction"},
     {ImpulseClamp::both, "both"},
 }};
-inline constexpr NameTable<SolverStage, 5> solver_stage_names{{
+inline constexpr NameTable<SolverStage, 7> solver_stage_names{{
     {SolverStage::warm_start, "warm_start"},
     {SolverStage::solve, "solve"},
     {SolverStage::relax, "relax"},
     {SolverStage::restitution, "restitution"},
     {SolverStage::push, "push"},
+    {SolverStage::stabilize, "stabilize"},
+    {SolverStage::dual, "dual"},
 }};
 
 inline constexpr NameTable<CollisionTest, 6> collision_test_names{{

@@ -76,21 +76,27 @@ std::vector<std::string_view> consumers(std::string_view quantity) {
 }
 
 const Annotation* quantity_of_path(std::string_view path, ItemKind item) {
-    // The path's keys without indices: "updates[0].after[0]" -> "updates.after".
-    std::string keys;
+    // The path's keys without indices ("updates[0].after[0]" -> "updates.after"), and with a list's element as the
+    // word list names it ("gathered[2].force[0]" -> "gathered[].force").
+    std::string keys, listed;
     for (std::size_t i = 0; i < path.size(); ++i) {
         if (path[i] == '[') {
             i = path.find(']', i);
             if (i == std::string_view::npos) break;
+            if (i + 1 < path.size() && path[i + 1] == '.') listed += "[]";
             continue;
         }
         keys += path[i];
+        listed += path[i];
     }
     const char kind = item == ItemKind::contact ? 'C' : item == ItemKind::position_iteration ? 'P' : 'V';
     // An update is shown as one row per contact it changed: the whole record is that row's quantity.
     if (keys == "updates" || keys.starts_with("updates."))
         return kind == 'C' ? nullptr : find_annotation(kind == 'P' ? "penetration_update" : "velocity_update");
-    // Every key inside an item is a word of its own, nested ones by their whole path ("rewind.time").
+    // Every key inside an item is a word of its own, nested ones by their whole path ("rewind.time"); an element
+    // of a list a table shows row by row (AVBD's gathered contacts) by its list's path.
+    const words::Word* element = listed != keys ? words::find(listed, kind) : nullptr;
+    if (element && element->role != words::Role::context) return element;
     return words::find(keys, kind);
 }
 

@@ -1,6 +1,7 @@
 #include "explain/derivation_table.hpp"
 
 #include "explain/annotations.hpp"
+#include "explain/avbd_tables.hpp"
 #include "explain/format.hpp"
 #include "record/words.hpp"
 #include "resolver/settings_names.hpp"
@@ -357,10 +358,11 @@ std::string sweep_text(const SweepPlace& sweep, const ResolverSettings& settings
     std::string text;
     // A method that owns the whole step works in sub-steps (restitution comes once, after them).
     if (method_row(settings.velocity_method).scope == MethodScope::whole_step &&
-        sweep.stage != SolverStage::restitution)
+        settings.velocity_method != VelocityMethod::avbd && sweep.stage != SolverStage::restitution)
         text = "sub-step " + std::to_string(sweep.substep) + " · ";
     text += std::string(name_of(solver_stage_names, sweep.stage));
-    if (sweep.stage == SolverStage::solve || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::push)
+    if (sweep.stage == SolverStage::solve || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::push ||
+        sweep.stage == SolverStage::stabilize || sweep.stage == SolverStage::dual)
         text += " sweep " + std::to_string(sweep.pass);
     return text;
 }
@@ -377,11 +379,18 @@ std::string sweep_meaning(SolverStage stage) {
             return "the bounce, once after the sub-steps: target −c times the closing speed before solving";
         case SolverStage::push:
             return "a sweep on pseudo-velocities that only move positions";
+        case SolverStage::stabilize:
+            return "AVBD's last sweep, after the velocities were taken: moves the bodies out of what penetration is "
+                   "left "
+                   "(α = 0) without giving them speed";
+        case SolverStage::dual:
+            return "AVBD's dual update after the sweep: each contact's λ becomes its force, k grows while violated";
     }
     return "";
 }
 
 std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, const Mat3* basis) {
+    if (is_avbd_visit(it)) return avbd_iteration_tables(it);
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
         Table velocity(std::string(words::step::contact_velocity), "contact_velocity — as the resolver has it now",
@@ -478,6 +487,7 @@ std::vector<std::string_view> position_iteration_steps(const PositionIteration& 
 }
 
 std::vector<std::string_view> velocity_iteration_steps(const VelocityIteration& it) {
+    if (is_avbd_visit(it)) return avbd_iteration_steps(it);
     std::vector<std::string_view> steps;
     if (it.resolution) {
         steps.insert(steps.end(), {words::step::contact_velocity, words::step::desired_delta_velocity});

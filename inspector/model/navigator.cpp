@@ -2,6 +2,7 @@
 
 #include "record/words.hpp"
 
+#include "explain/avbd_tables.hpp"
 #include "explain/format.hpp"
 #include "formats/input_error.hpp"
 #include "methods/method_table.hpp"
@@ -226,8 +227,11 @@ std::vector<StepTable> step_tables(const Trace& trace, const Cursor& c) {
         for (StepTable& t : explain::position_iteration_tables(it, basis)) tables.push_back(std::move(t));
     } else {
         const VelocityIteration& it = frame.velocity.iterations[item];
-        tables.push_back(choice_table("desired_delta_velocity", it.iteration, it.contact, it.desired_delta_velocity,
-                                      it.epsilon, "m/s", "", it.sweep, trace.scene.settings));
+        if (explain::is_avbd_visit(it))
+            tables.push_back(explain::avbd_choice_table(it, trace.scene.settings));
+        else
+            tables.push_back(choice_table("desired_delta_velocity", it.iteration, it.contact, it.desired_delta_velocity,
+                                          it.epsilon, "m/s", "", it.sweep, trace.scene.settings));
         for (StepTable& t : explain::velocity_iteration_tables(it, basis)) tables.push_back(std::move(t));
     }
     return tables;
@@ -372,7 +376,12 @@ std::string describe(const Trace& trace, const Cursor& c) {
         text += "preparation";
     else
         text += std::string(stage_name(c.stage)) + " phase · iteration " + std::to_string(c.item);
-    text += " · contact " + std::to_string(contact_at(trace, c));
+    const VelocityIteration* it =
+        c.stage == Stage::velocity ? &frame.velocity.iterations[static_cast<std::size_t>(c.item)] : nullptr;
+    if (it && it->body_visit)  // AVBD's body visit: about a body and the contacts it gathered
+        text += " · body " + std::to_string(it->body_visit->body);
+    else
+        text += " · contact " + std::to_string(contact_at(trace, c));
     const std::string step = step_name(trace, c);
     if (!step.empty()) text += " · " + step;
     return text;

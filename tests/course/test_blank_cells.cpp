@@ -10,6 +10,7 @@
 // Only one thing is read from the reference trace: which earlier iteration last changed a contact (the
 // bookkeeping a student follows through the sheet's update tables), never a value.
 
+#include "derivation/avbd/contact_force.hpp"
 #include "course/diff.hpp"
 #include "course/json_path.hpp"
 #include "course/worksheet.hpp"
@@ -462,7 +463,36 @@ private:
     }
 
     // --- a velocity iteration: the choice, then steps 4-7 -------------------------------------------------
+    // AVBD's force (Eq. 11) from the lambda, k and C* a visit read, and its dual update's new lambda (its force).
+    Vec3 avbd_force(const std::string& rows, const std::string& friction) const {
+        const formats::json& k_json = k(at(rows, "stiffness"));
+        const Stiffness stiffness{k_json[0].get<double>(), k_json[1].get<double>()};
+        return contact_force(vec(k(at(rows, "lambda"))), stiffness, vec(k(at(rows, "constraint"))), number(friction))
+            .force;
+    }
+
+    // Whether AVBD's step `step` of iteration `v` was worked out here.
+    bool avbd_step(const std::string& v, const std::string& step) {
+        if (step == "force" && has(at(at(at(v, "gathered"), 0), "contact"))) {
+            for (std::size_t i = 0; has(at(at(at(v, "gathered"), i), "contact")); ++i) {
+                const std::string rows = at(at(v, "gathered"), i);
+                put(at(rows, "force"), json_of(avbd_force(rows, at(rows, "friction"))));
+            }
+            return true;
+        }
+        if (step == "force" && has(at(v, "lambda"))) {
+            put(at(v, "force"), json_of(avbd_force(v, at(v, "friction"))));
+            return true;
+        }
+        if (step == "dual_update") {
+            put(at(at(v, "dual_update"), "lambda"), k(at(v, "force")));  // lambda <- F (Eq. 11)
+            return true;
+        }
+        return false;
+    }
+
     void velocity_step(const std::string& v, const std::string& phase, std::size_t iteration, const std::string& step) {
+        if (avbd_step(v, step)) return;
         const formats::json& chosen = k(at(v, "contact"));
         const std::string c = contact_path(chosen);
         const formats::json& bodies = k(at(c, "bodies"));

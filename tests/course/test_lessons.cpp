@@ -58,10 +58,10 @@ bool mentions(const std::string& text, const std::string& word) {
 
 // One test for the whole course, so each lesson's scene runs once (the brick wall's is not small).
 TEST_CASE(
-    "the course has thirteen lessons that run with the engine, name what each step shows, and take the engine's "
+    "the course has fourteen lessons that run with the engine, name what each step shows, and take the engine's "
     "answers") {
     const std::vector<std::filesystem::path> files = course::lesson_files(course);
-    REQUIRE(files.size() == 13);
+    REQUIRE(files.size() == 14);
     for (std::size_t n = 0; n < files.size(); ++n) {
         const std::string name = files[n].filename().string();
         INFO(name);
@@ -369,6 +369,31 @@ TEST_CASE("a lesson's worksheet holds the cells of the lesson's steps that compu
     const CliResult flags = run_cli({"worksheet", file.string(), "--set", "preset=chapter", "--out", sheet.string()});
     CHECK(flags.code == 2);
     CHECK(flags.err.starts_with("impulse-lab: worksheet: a lesson runs with its own settings"));
+}
+
+}  // namespace impulse::test
+
+#include "course/item_labels.hpp"
+
+namespace impulse::test {
+
+TEST_CASE("lesson 14's velocity phase reads as sweeps over the bodies, each followed by the contacts' dual updates") {
+    const course::PreparedLesson lesson =
+        course::prepare_lesson(course::read_lesson(course / "14-avbd-beside-the-book.md"));
+    const Trace& trace = lesson.session.trace();
+    const course::Mask none;
+    // Frame 1 (the trace's first): body 0 gathers 8 contacts, body 1 (the heavy box) 4; then contacts 0..7.
+    CHECK(course::item_label(trace, none, 0, model::Stage::velocity, 0) == "solve sweep 0 → body 0 (8 contacts)");
+    CHECK(course::item_label(trace, none, 0, model::Stage::velocity, 1) == "solve sweep 0 → body 1 (4 contacts)");
+    CHECK(course::item_label(trace, none, 0, model::Stage::velocity, 2) == "dual sweep 0 → contact 0");
+    CHECK(course::item_label(trace, none, 0, model::Stage::velocity, 9) == "dual sweep 0 → contact 7");
+    CHECK(course::item_label(trace, none, 0, model::Stage::velocity, 10) == "solve sweep 1 → body 0 (8 contacts)");
+    // After the tenth dual sweep, the post-stabilisation sweep over the bodies ends the phase.
+    const int last = model::item_count(trace.frames[0], model::Stage::velocity) - 1;
+    CHECK(course::item_label(trace, none, 0, model::Stage::velocity, last) ==
+          "stabilize sweep 10 → body 1 (4 contacts)");
+    // 2 bodies x 11 sweeps + 8 contacts x 10 dual sweeps; the limit leaves room for a bounce per contact (none here).
+    CHECK(course::stage_label(trace.frames[0], model::Stage::velocity) == "Velocity phase: 102 of 110 iterations");
 }
 
 }  // namespace impulse::test

@@ -168,7 +168,7 @@ TEST_CASE("a trace whose counts contradict its records is refused") {
     formats::json t = ruler_trace();
     t["frames"][0]["phases"][1]["iterations_used"] = 7;
     CHECK(refusal(t) == "frames[0].phases[1].iterations_used: is 7, but the phase lists 1 iteration");
-    // Only a method whose table row records no iterations yet (AVBD) may list none beside what it used.
+    // No method lists fewer iterations than it used (AVBD's body visits and dual updates are listed too).
     t = ruler_trace();
     t["frames"][0]["phases"][1]["iterations"] = formats::json::array();
     CHECK(refusal(t) == "frames[0].phases[1].iterations_used: is 1, but the phase lists 0 iterations");

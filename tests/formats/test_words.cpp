@@ -44,6 +44,8 @@ words::Kind schema_kind(const formats::json& property) {
         if (name == "vec3") return words::Kind::vec3;
         if (name == "vec2") return words::Kind::vec2;
         if (name == "mat3") return words::Kind::mat3;
+        if (name == "vec6") return words::Kind::vec6;
+        if (name == "mat6") return words::Kind::mat6;
         if (name.starts_with("per_body_vec3")) return words::Kind::per_body_vec3;
         if (name.starts_with("per_body_number")) return words::Kind::per_body_number;
         if (name == "per_body_bool") return words::Kind::per_body_bool;
@@ -120,6 +122,11 @@ bool value_is(const formats::json& v, words::Kind kind) {
         case words::Kind::mat3:
             return v.is_array() && v.size() == 3 &&
                    std::all_of(v.begin(), v.end(), [&](const formats::json& r) { return vec(r, 3); });
+        case words::Kind::vec6:
+            return vec(v, 6);
+        case words::Kind::mat6:
+            return v.is_array() && v.size() == 6 &&
+                   std::all_of(v.begin(), v.end(), [&](const formats::json& r) { return vec(r, 6); });
         case words::Kind::per_body_number:
             return per_body([](const formats::json& e) { return e.is_number(); });
         case words::Kind::per_body_vec3:

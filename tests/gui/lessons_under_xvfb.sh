@@ -19,5 +19,5 @@ for file in "$lessons"/[0-9][0-9]-*.md; do
   if [ -s "$work/stderr" ]; then echo "lesson $number:"; cat "$work/stderr"; exit 1; fi
   count=$((count + 1))
 done
-test "$count" -eq 13 || { echo "expected 13 lessons, ran $count"; exit 1; }
+test "$count" -eq 14 || { echo "expected 14 lessons, ran $count"; exit 1; }
 echo "all $count lessons opened in the window"

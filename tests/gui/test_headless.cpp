@@ -216,7 +216,7 @@ TEST_CASE("every lesson runs headless: annotated text, its trace and one screens
     TempDir dir;
     ::setenv("XDG_CONFIG_HOME", dir.file("cfg").c_str(), 1);
     const std::vector<std::filesystem::path> files = course::lesson_files(IMPULSE_SOURCE_DIR "/lessons");
-    REQUIRE(files.size() == 13);
+    REQUIRE(files.size() == 14);
     for (const std::filesystem::path& file : files) {
         const course::Lesson lesson = course::read_lesson(file);
         const std::string number = std::to_string(lesson.number);

@@ -587,3 +587,50 @@ TEST_CASE("a goto's step takes every quantity of the word list by its full name 
               .problem()
               .ends_with("did you mean \"angular_change\"?"));
 }
+
+TEST_CASE("an AVBD iteration is a sweep over the bodies: each body visit's tables, then each contact's dual update") {
+    OpenOptions options;
+    options.frames = 2;
+    options.settings = {"preset=avbd"};
+    const Trace trace = opened("mass_ratio_100", options);
+    const FrameRecord& frame = trace.frames.back();
+    const int f = static_cast<int>(trace.frames.size()) - 1;
+    // Iteration 0: the light box (body 0) with its eight contacts; 1: the heavy box; 2..9: the dual updates.
+    const Cursor body{f, Stage::velocity, 0, 0};
+    CHECK(table_steps(trace, body) ==
+          std::vector<std::string>{"choice", "constraint", "force", "block_matrix", "block_force", "position_change"});
+    const std::vector<explain::StepTable> tables = step_tables(trace, body);
+    CHECK(tables[0].title == "choice — solve sweep 0 visits body 0");
+    CHECK(tables[1].rows.size() == 8);      // one C* per gathered contact
+    CHECK(tables[2].rows.size() == 3 * 8);  // lambda, k and F of each
+    CHECK(tables[2].rows[2].key == "gathered[].force");
+    CHECK(tables[2].rows[2].quantity == "gathered[0].force");
+    CHECK(contains(tables[2].rows[2].meaning, "contact 0"));
+    CHECK(tables[2].rows[2].formula == "F_n = max(λ_n − k_n C*_n, 0); |F_t| ≤ μ F_n");
+    // The 6x6 block spans six lines, the move is in metres.
+    CHECK(std::count(tables[3].rows[0].value.begin(), tables[3].rows[0].value.end(), '\n') == 5);
+    CHECK(tables[5].rows[0].key == "position_change.linear_change");
+    CHECK(tables[5].rows[0].equation == "(4)");
+    CHECK(describe(trace, {f, Stage::velocity, 0, 5}) ==
+          "frame " + std::to_string(frame.frame) + " · velocity phase · iteration 0 · body 0 · position_change");
+
+    const Cursor dual{f, Stage::velocity, 2, 0};
+    CHECK(table_steps(trace, dual) == std::vector<std::string>{"choice", "constraint", "force", "dual_update"});
+    CHECK(step_tables(trace, dual)[0].title == "choice — dual sweep 0 updates contact 0");
+    // The dual sweep's places in order: after the last contact's dual update, the next sweep's first body visit.
+    Cursor at{f, Stage::velocity, 9, 3};
+    at = *next_step(trace, at);
+    CHECK(at == Cursor{f, Stage::velocity, 10, 0});
+    CHECK(frame.velocity.iterations[10].body_visit->body == 0);
+    // A goto names AVBD's steps and words.
+    CHECK(step_at(trace, resolve_goto(trace, parse_goto("phase=velocity,iteration=0,step=block_force", "--goto"),
+                                      "--goto")) == "block_force");
+    CHECK(step_at(trace, resolve_goto(trace, parse_goto("phase=velocity,iteration=2,step=lambda", "--goto"),
+                                      "--goto")) == "force");
+    // Walking it forward and back visits every table once.
+    const std::vector<Cursor> forward = walked_forward(trace);
+    CHECK(forward == every_place(trace));
+    std::vector<Cursor> back = walked_back(trace);
+    std::reverse(back.begin(), back.end());
+    CHECK(back == forward);
+}

@@ -123,7 +123,7 @@ try {
   await until((s) => s.screen === 'lesson' && s.lesson.step >= 1 && s.frames > 2, 'lesson 1 opens from its link');
   console.log(`browser: lesson 1 interactive ${Date.now() - started} ms after the page was asked for`);
   await page.evaluate(() => { location.hash = ''; });
-  await until((s) => s.screen === 'start' && s.lessons.length === 13, 'the start page lists the thirteen lessons');
+  await until((s) => s.screen === 'start' && s.lessons.length === 14, 'the start page lists the fourteen lessons');
   await page.evaluate(() => { location.hash = '#lesson=1'; });
   await until((s) => s.screen === 'lesson' && s.lesson.number === 1, 'lesson 1 opens again');
 

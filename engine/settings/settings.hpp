@@ -148,7 +148,7 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 //   pgs_split   pgs with split impulse instead of Baumgarte (Bullet's split-impulse mode).
 //   soft_step   Box2D v3: 4 sub-steps of soft contacts, one relax sweep each, restitution after.
 //   soft_step_recycled  soft_step with Box3D's contact recycling: a pair's contacts kept while it moves less than
-//            5 cm (Box3D's 10 linear slops) and turns less than 10 degrees.
+//            5 cm (Box3D's 10 linear slops) and turns less than 10 degrees; contacts of 36 Hz, damping ratio 12.
 //   avbd        augmented vertex block descent: 10 iterations of block solves and dual updates (AvbdSettings).
 std::span<const std::string_view> preset_names();
 // "book", "chapter", ... as one line for error messages.

@@ -46,7 +46,8 @@ struct ContactForce {
     // lambda - k C*  (Eq. 11's right-hand side, with this project's sign)
     f.unclamped = {lambda.x() - stiffness.normal * constraint.x(), lambda.y() - stiffness.tangential * constraint.y(),
                    lambda.z() - stiffness.tangential * constraint.z()};
-    const double normal = std::max(f.unclamped.x(), 0.0);  // push only (Sec. 3.2)
+    // Push only (Sec. 3.2); +0 for -0 too, on every platform (as in dual_update.cpp's warm start).
+    const double normal = f.unclamped.x() > 0.0 ? f.unclamped.x() : 0.0;
     f.pushing = normal > 0.0;
     f.force = {normal, 0.0, 0.0};
     f.block_stiffness.normal = stiffness.normal;  // even when clamped to 0: see the header

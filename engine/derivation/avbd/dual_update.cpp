@@ -27,7 +27,9 @@ DualVariables warm_start(const std::optional<RememberedDual>& remembered, double
     if (!remembered) return d;
     const double keep = settings.post_stabilize ? 1.0 : settings.alpha * settings.gamma;  // (Eq. 19)
     Vec3 lambda = keep * remembered->lambda;
-    lambda.x() = std::max(lambda.x(), 0.0);
+    // +0 for a remembered -0 too: std::max(-0.0, 0.0) is -0.0 by C++'s rule, and the WebAssembly build gave +0.0 there
+    // (the determinism test); this form gives +0.0 on both.
+    lambda.x() = lambda.x() > 0.0 ? lambda.x() : 0.0;
     const double bound = friction * lambda.x();
     const double size = std::sqrt(lambda.y() * lambda.y() + lambda.z() * lambda.z());
     if (size > bound) {

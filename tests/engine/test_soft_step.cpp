@@ -11,6 +11,7 @@
 #include "support/approx.hpp"
 #include "support/bodies.hpp"
 #include "support/shipped.hpp"
+#include "support/simulate.hpp"
 #include "world/world.hpp"
 
 #include <doctest/doctest.h>
@@ -24,25 +25,10 @@ using namespace impulse;
 namespace {
 
 Scene soft_scene(const std::string& name, const std::vector<std::string>& settings = {}) {
-    Scene scene = test::shipped(name);
-    formats::apply_setting(scene, "preset=soft_step", "--set");
-    for (const std::string& s : settings) formats::apply_setting(scene, s, "--set");
-    return scene;
+    return test::shipped_under(name, "soft_step", settings);
 }
 
-// Runs `frames` frames of `scene`, recording them when `trace` is given.
-std::vector<RigidBody> simulate(const Scene& scene, int frames, Trace* trace = nullptr) {
-    World world(scene);
-    Recorder nobody;
-    std::optional<TraceRecorder> recording;
-    if (trace) {
-        trace->scene = scene;
-        recording.emplace(*trace);
-    }
-    Recorder& recorder = trace ? static_cast<Recorder&>(*recording) : nobody;
-    for (int frame = 0; frame < frames; ++frame) world.step(recorder);
-    return world.bodies();
-}
+using test::simulate;
 
 }  // namespace
 

@@ -433,12 +433,7 @@ private:
 PhaseOutcome avbd_step(FrameContext& frame) {
     Avbd step(frame);
     step.run();
-    if (frame.memory) {
-        if (frame.settings.warm_start)
-            step.remember(*frame.memory);
-        else
-            frame.memory->clear();
-    }
+    remember_or_forget(frame, step);
     // Every block solve, dual update and bounce counts as an iteration; the schedule is fixed, so it runs to its end
     // unless the stop flag cuts it short (frame.cut_short).
     const PhaseOutcome outcome{step.visit_limit(), step.visits(), StopReason::sweeps_complete};

@@ -4,8 +4,9 @@
 
 #include "methods/soft_step.hpp"
 
-#include "methods/contact_rows.hpp"
 #include "body/integrate.hpp"
+#include "methods/contact_rows.hpp"
+#include "methods/solver_common.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -309,12 +310,7 @@ private:
 PhaseOutcome soft_step(FrameContext& frame) {
     SoftStep step(frame);
     step.run();
-    if (frame.memory) {
-        if (frame.settings.warm_start)
-            step.remember(*frame.memory);
-        else
-            frame.memory->clear();
-    }
+    remember_or_forget(frame, step);
     // Every visit of every stage is an iteration; the schedule is fixed, so it always runs to its end.
     const PhaseOutcome outcome{step.visits(), step.visits(), StopReason::sweeps_complete};
     frame.recorder.end_phase(Phase::velocity, outcome);

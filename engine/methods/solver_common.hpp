@@ -1,9 +1,10 @@
 #pragma once
-// What the book's velocity methods share (solver2d's solver.c): the book's impulse for one contact (steps 6 and 7
-// on its bookkeeping), with K and its factors kept per contact for the frame, and applying a velocity change to
-// the bodies.
+// What the methods share (solver2d's solver.c): the book's impulse for one contact (steps 6 and 7 on its
+// bookkeeping), with K and its factors kept per contact for the frame, applying a velocity change to the bodies, and
+// the contact memory's end of frame for the methods that own the whole step.
 
 #include "body/rigid_body.hpp"
+#include "methods/method.hpp"
 #include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
 #include "preparation/bookkeeping.hpp"
@@ -40,5 +41,17 @@ VelocityResolution resolve_velocity(const PreparedContact& contact, std::span<co
 // Adds step 7's velocity_change and rotation_change to the contact's bodies (the world never changes).
 void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int, 2>& changed,
                            const VelocityChange& change);
+
+// A whole-step method's last act (soft step, AVBD): what it accumulated kept in the contact memory for the next
+// frame when warm starting, or the memory emptied, so that warm starting switched on later starts from nothing
+// rather than from totals of frames ago.
+template <typename Step>
+void remember_or_forget(const FrameContext& frame, const Step& step) {
+    if (!frame.memory) return;
+    if (frame.settings.warm_start)
+        step.remember(*frame.memory);
+    else
+        frame.memory->clear();
+}
 
 }  // namespace impulse

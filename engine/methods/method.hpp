@@ -4,9 +4,9 @@
 // recorder and the contact memory), does its work, stamps every visit's contact (FrameContext::touched),
 // reports every visit to the recorder when it keeps the frame (record/visits.hpp), ends its phase
 // (recorder.end_phase) and says how the phase ended. Each method is one file in engine/methods/ defining one
-// of the functions below; engine/methods/method_table.hpp maps each settings value to its function, its scope
-// and the settings it reads. Nothing else names a method: adding one is its file, its enumerator in
-// settings/settings.hpp, one row of the table, and its section in docs/methods.md.
+// MethodFunction, declared beside its row of engine/methods/method_table.hpp, which maps each settings value to its
+// function, its scope and the settings it reads. Nothing else names a method: adding one is its file, its
+// enumerator in settings/settings.hpp, its declaration and row in the table, and its section in docs/methods.md.
 
 #include "body/integrate.hpp"
 #include "body/rigid_body.hpp"
@@ -64,20 +64,5 @@ struct FrameContext {
 inline constexpr int stop_check_visits = 256;
 
 using MethodFunction = PhaseOutcome (*)(FrameContext& frame);
-
-// The velocity methods (velocity phase, or the whole step).
-PhaseOutcome worst_first_velocities(FrameContext& frame);             // worst_first.cpp
-PhaseOutcome sequential_sweep_velocities(FrameContext& frame);        // sequential_sweep.cpp
-PhaseOutcome projected_gauss_seidel_velocities(FrameContext& frame);  // projected_gauss_seidel.cpp
-PhaseOutcome soft_step(FrameContext& frame);                          // soft_step.cpp
-PhaseOutcome avbd_step(FrameContext& frame);                          // avbd.cpp
-
-// The position methods.
-PhaseOutcome linear_projection_positions(FrameContext& frame);     // linear_projection.cpp
-PhaseOutcome nonlinear_projection_positions(FrameContext& frame);  // nonlinear_projection.cpp
-PhaseOutcome velocity_based_positions(FrameContext& frame);        // velocity_based.cpp
-PhaseOutcome relaxation_positions(FrameContext& frame);            // relaxation.cpp
-PhaseOutcome split_impulse_positions(FrameContext& frame);         // split_impulse.cpp
-PhaseOutcome no_positions(FrameContext& frame);                    // no_position_phase.cpp
 
 }  // namespace impulse

@@ -68,7 +68,16 @@ inline constexpr std::array<std::string_view, 4> split_impulse{"velocity_epsilon
                                                                "position_bias.slop"};
 }  // namespace method_reads
 
-inline constexpr std::array<MethodRow<VelocityMethod>, 5> velocity_methods{{
+// Each method's function (methods/method.hpp), in its own file of engine/methods/.
+PhaseOutcome worst_first_velocities(FrameContext& frame);             // worst_first.cpp
+PhaseOutcome sequential_sweep_velocities(FrameContext& frame);        // sequential_sweep.cpp
+PhaseOutcome projected_gauss_seidel_velocities(FrameContext& frame);  // projected_gauss_seidel.cpp
+PhaseOutcome soft_step(FrameContext& frame);                          // soft_step.cpp
+PhaseOutcome avbd_step(FrameContext& frame);                          // avbd.cpp
+
+// One row per enumerator, in the enumerators' order (checked in method_table.cpp).
+inline constexpr std::array<MethodRow<VelocityMethod>, static_cast<std::size_t>(VelocityMethod::count)>
+    velocity_methods{{
     {VelocityMethod::worst_first, "worst_first", MethodScope::velocity_phase, worst_first_velocities,
      method_reads::worst_first,
      "the book: resolve the contact with the largest desired delta v, update the others, repeat",
@@ -92,7 +101,15 @@ inline constexpr std::array<MethodRow<VelocityMethod>, 5> velocity_methods{{
      "avbd.iterations", [](ResolverSettings& s, int n) { s.avbd.iterations = n; }},
 }};
 
-inline constexpr std::array<MethodRow<PositionMethod>, 6> position_methods{{
+PhaseOutcome linear_projection_positions(FrameContext& frame);     // linear_projection.cpp
+PhaseOutcome nonlinear_projection_positions(FrameContext& frame);  // nonlinear_projection.cpp
+PhaseOutcome velocity_based_positions(FrameContext& frame);        // velocity_based.cpp
+PhaseOutcome relaxation_positions(FrameContext& frame);            // relaxation.cpp
+PhaseOutcome split_impulse_positions(FrameContext& frame);         // split_impulse.cpp
+PhaseOutcome no_positions(FrameContext& frame);                    // no_position_phase.cpp
+
+inline constexpr std::array<MethodRow<PositionMethod>, static_cast<std::size_t>(PositionMethod::count)>
+    position_methods{{
     {PositionMethod::linear_projection, "linear_projection", MethodScope::position_phase, linear_projection_positions,
      method_reads::linear_projection, "worst first: move the bodies apart along the normal, by inverse mass"},
     {PositionMethod::nonlinear_projection, "nonlinear_projection", MethodScope::position_phase,

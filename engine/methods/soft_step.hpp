@@ -79,7 +79,7 @@ Softness soft_contact(double hertz, double damping_ratio, double h);
 // The soft contact soft step uses for `settings`: hertz capped at a quarter of the sub-step rate.
 Softness soft_step_softness(const ResolverSettings& settings);
 
-// The method itself is soft_step(FrameContext&) (methods/method.hpp): it owns the whole step, moving every
+// The method itself is soft_step(FrameContext&) (methods/method_table.hpp): it owns the whole step, moving every
 // body over settings.duration under frame.forces (contacts or not) while it resolves the contacts.
 
 }  // namespace impulse

@@ -26,6 +26,7 @@ enum class PositionMethod {
                            // then discarded, so pushing apart adds no energy (Bullet's split impulse)
     none,                  // no position phase: nothing moves the bodies apart but their velocities (with
                            // `baumgarte`, step 5's position bias; soft step's soft contact)
+    count,                 // not a method: how many there are, each with its row in methods/method_table.hpp
 };
 
 enum class VelocityMethod {
@@ -37,6 +38,7 @@ enum class VelocityMethod {
                              // restitution; it integrates the bodies itself
     avbd,                    // augmented vertex block descent (Giles et al. 2025): each body's 6x6 block solved
                              // in turn against its contacts' augmented-Lagrangian forces; it integrates the bodies
+    count,                   // not a method: how many there are, each with its row in methods/method_table.hpp
 };
 
 // How worst-first finds its next contact. Both choose the same contacts in the same order and give identical

@@ -24,6 +24,7 @@ bool fixed_row(std::string_view key) {
                                                                "contact",
                                                                "sweep",
                                                                "epsilon",
+                                                               "slop",
                                                                "pass",
                                                                "restitution",
                                                                "friction",

@@ -233,8 +233,12 @@ AngularLimit read_angular_limit(const json& j) {
 json position_iteration_json(const PositionIteration& it) {
     json out = {{position_key("iteration"), it.iteration},
                 {position_key("contact"), it.contact},
-                {position_key("penetration"), it.penetration},
-                {position_key("epsilon"), it.epsilon}};
+                {position_key("penetration"), it.penetration}};
+    // The split impulse compares nothing with an epsilon: it records its slop instead, under its own word.
+    if (it.slop)
+        out[position_key("slop")] = *it.slop;
+    else
+        out[position_key("epsilon")] = it.epsilon;
     if (it.pass) out[position_key("pass")] = *it.pass;
     if (const auto& r = it.resolution) {
         out[position_key("method")] = name_of(position_method_names, r->method);
@@ -272,7 +276,9 @@ PositionIteration read_position_iteration(const json& j) {
     it.iteration = j[position_key("iteration")].get<int>();
     it.contact = j[position_key("contact")].get<int>();
     it.penetration = j[position_key("penetration")].get<double>();
-    it.epsilon = j[position_key("epsilon")].get<double>();
+    const bool pushed = j.contains(position_key("slop"));  // the split impulse's (the schema allows one of the two)
+    it.epsilon = pushed ? 0.0 : j[position_key("epsilon")].get<double>();
+    if (pushed) it.slop = j[position_key("slop")].get<double>();
     if (j.contains(position_key("pass"))) it.pass = j[position_key("pass")].get<int>();
     if (j.contains(position_key("method"))) {
         PositionResolution r;

@@ -35,7 +35,7 @@ void resolve_penetration(FrameContext& frame, Projection projection, PositionPha
     frame.touched(chosen);
     if (frame.keeping)
         frame.recorder.position_visit(
-            {.contact = chosen, .pass = pass, .epsilon = settings.position_epsilon, .resolution = &resolution});
+            {.contact = chosen, .pass = pass, .resolution = &resolution, .epsilon = settings.position_epsilon});
     const std::array<int, 2> moved = contact.bodies;
     const PositionChange& change = resolution.change;
     for (int i = 0; i < 2; ++i) {

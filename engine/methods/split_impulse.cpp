@@ -98,10 +98,10 @@ PhaseOutcome split_impulse_positions(FrameContext& frame) {
         for (std::size_t r = 0; r < kept.size(); ++r)
             frame.recorder.position_visit({.contact = rows[r].contact,
                                            .pass = pass,
-                                           .epsilon = settings.position_bias.slop,
                                            .resolution = nullptr,
                                            .push_impulse = kept[r].push,
-                                           .change = kept[r].moves});
+                                           .change = kept[r].moves,
+                                           .slop = settings.position_bias.slop});
         converged = largest <= settings.velocity_epsilon;
     }
     // Every sweep visits every row in order: the last sweep holds each contact's last visit, stamped once, here.

@@ -47,8 +47,9 @@ struct PositionIteration {
     int iteration;
     int contact;         // the contact chosen: the deepest above the epsilon
     double penetration;  // its penetration, compared with the epsilon
-    double epsilon;
-    std::optional<int> pass;  // relaxation only: which pass this iteration belongs to
+    double epsilon;      // the projections' (0 for the split impulse, which compares nothing: see slop)
+    std::optional<double> slop;  // the split impulse's: the penetration its pushes leave, not an epsilon
+    std::optional<int> pass;     // relaxation: which pass this iteration belongs to; the split impulse: which sweep
     // Absent when the recorder's contact filter leaves the chosen contact out.
     std::optional<PositionResolution> resolution;
     std::vector<PenetrationUpdate> updates;

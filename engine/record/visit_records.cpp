@@ -37,7 +37,8 @@ PositionIteration VisitRecords::position_iteration(const PositionVisit& visit) {
     PositionIteration it{iteration_++,
                          visit.contact,
                          c.penetration,
-                         visit.epsilon,
+                         visit.resolution ? visit.epsilon : 0.0,
+                         visit.resolution ? std::nullopt : std::optional(visit.slop),
                          visit.pass,
                          visit.resolution ? *visit.resolution : push_resolution(visit),
                          {}};

@@ -39,12 +39,14 @@ struct VelocityVisit {
 struct PositionVisit {
     int contact = 0;
     std::optional<int> pass;  // relaxation's pass, the split impulse's sweep
-    double epsilon = 0.0;     // what the penetration was judged against
-    // A projection's move: step 8 as the method computed it.
+    // A projection's move: step 8 as the method computed it, and what the penetration was judged against.
     const PositionResolution* resolution = nullptr;
-    // The split impulse's push (resolution null): the push impulse applied and the moves it made.
+    double epsilon = 0.0;
+    // The split impulse's push (resolution null): the push impulse applied, the moves it made, and the penetration
+    // its pushes leave (m), which its target subtracts: beta max(penetration - slop, 0) / h.
     double push_impulse = 0.0;
     PositionChange change{};
+    double slop = 0.0;
 };
 
 }  // namespace impulse

@@ -78,9 +78,13 @@ void write_position_phase(std::ostream& out, const Trace& trace, const FrameReco
     out << "\n== Position phase: " << name_of(position_method_names, position_method_in_effect(trace.scene.settings))
         << " ==\n";
     for (const PositionIteration& it : frame.position.iterations) {
-        out << "\nIteration " << it.iteration << (it.pass ? " (pass " + std::to_string(*it.pass) + ")" : "")
-            << " · contact " << it.contact << " is the deepest: penetration " << number(it.penetration) << " m > ε "
-            << number(it.epsilon) << " m\n";
+        out << "\nIteration " << it.iteration << (it.pass ? " (pass " + std::to_string(*it.pass) + ")" : "");
+        if (it.slop)  // the split impulse pushes every contact in turn, aiming short of the slop
+            out << " · contact " << it.contact << " is pushed: penetration " << number(it.penetration) << " m, slop "
+                << number(*it.slop) << " m\n";
+        else
+            out << " · contact " << it.contact << " is the deepest: penetration " << number(it.penetration)
+                << " m > ε " << number(it.epsilon) << " m\n";
         for (const StepTable& t : position_iteration_tables(it)) write_table(out, t);
     }
     out << "Position phase ends: " << stop_text(frame.position.outcome) << '\n';

@@ -71,6 +71,18 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
             std::move(rows)};
 }
 
+// The split impulse's slop, in the place of the choice table's epsilon: its pushes compare nothing, they aim short.
+Row slop_row(double slop) {
+    return {"slop",
+            explain::number(slop) + " m",
+            "setting position_bias.slop",
+            "",
+            "the pushes leave this much penetration: their target is β max(penetration − slop, 0) / h",
+            {},
+            "slop",
+            explain::exact(slop) + " m"};
+}
+
 // A position iteration's pass, as the choice table words it.
 std::string pass_text(const PositionIteration& it, const ResolverSettings& settings) {
     if (!it.pass) return "";
@@ -222,8 +234,10 @@ std::vector<StepTable> step_tables(const Trace& trace, const Cursor& c) {
     std::vector<StepTable> tables;
     if (c.stage == Stage::position) {
         const PositionIteration& it = frame.position.iterations[item];
-        tables.push_back(choice_table("penetration", it.iteration, it.contact, it.penetration, it.epsilon, "m",
-                                      pass_text(it, trace.scene.settings), std::nullopt, trace.scene.settings));
+        StepTable choice = choice_table("penetration", it.iteration, it.contact, it.penetration, it.epsilon, "m",
+                                        pass_text(it, trace.scene.settings), std::nullopt, trace.scene.settings);
+        if (it.slop) choice.rows.back() = slop_row(*it.slop);  // the split impulse compares nothing with an epsilon
+        tables.push_back(std::move(choice));
         for (StepTable& t : explain::position_iteration_tables(it, basis)) tables.push_back(std::move(t));
     } else {
         const VelocityIteration& it = frame.velocity.iterations[item];

@@ -138,7 +138,8 @@ std::vector<PhaseCurve> phase_curves(const FrameRecord& frame) {
     std::vector<PhaseCurve> curves;
     for (Stage stage : stages(frame)) {
         if (stage == Stage::position) {
-            PhaseCurve c{stage, {}, frame.position.iterations.front().epsilon};
+            const PositionIteration& first = frame.position.iterations.front();
+            PhaseCurve c{stage, {}, first.slop.value_or(first.epsilon)};
             for (const PositionIteration& it : frame.position.iterations) c.worst.push_back(it.penetration);
             curves.push_back(std::move(c));
         } else if (stage == Stage::velocity) {

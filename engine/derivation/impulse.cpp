@@ -11,31 +11,10 @@ Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_p
     return {desired_delta_velocity / delta_velocity_per_unit_impulse, 0.0, 0.0};  // g = v / d  (14.3)
 }
 
-Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
-                           const PerBody<MassProperties>& mass) {
-    std::array<Vec3, 2> q_rel{Vec3::Zero(), Vec3::Zero()};
-    ContactMass m{nullptr, nullptr};
-    for (int i = 0; i < 2; ++i)
-        if (relative_position[i]) q_rel[i] = *relative_position[i], m[i] = &*mass[i];
-    return delta_velocity_matrix(basis, q_rel, m);
-}
-
-FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
-                                                           const PerBody<MassProperties>& mass) {
-    return factored_delta_velocity_matrix(delta_velocity_matrix(basis, relative_position, mass));
-}
-
 FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Mat3& k) {
     // Gaussian elimination with complete pivoting (math/full_pivot_lu.hpp): K is singular only when neither
     // body can translate, and nearly so for long lever arms, where the largest pivot first keeps it accurate.
     return {k, FullPivotLu3(k)};
-}
-
-FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
-                             const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
-                             double desired_delta_velocity, double friction, SlidingFriction sliding) {
-    return friction_solve(factored_delta_velocity_matrix(basis, relative_position, mass), contact_velocity,
-                          desired_delta_velocity, friction, sliding);
 }
 
 FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& factored, const Vec3& contact_velocity,
@@ -71,18 +50,6 @@ FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& factored, const 
         s.sliding_normal_response = k(0, 0) + friction * (k(0, 1) * direction.x() + k(0, 2) * direction.y());
     }
     return s;
-}
-
-Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relative_position,
-                          const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
-                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
-                          SlidingFriction sliding) {
-    if (friction == 0.0)
-        return calculate_impulse(basis, nullptr, contact_velocity, desired_delta_velocity,
-                                 delta_velocity_per_unit_impulse, friction, sliding);
-    const FactoredDeltaVelocityMatrix k = factored_delta_velocity_matrix(basis, relative_position, mass);
-    return calculate_impulse(basis, &k, contact_velocity, desired_delta_velocity, delta_velocity_per_unit_impulse,
-                             friction, sliding);
 }
 
 Impulse calculate_impulse(const Basis& basis, const FactoredDeltaVelocityMatrix* k, const Vec3& contact_velocity,

@@ -89,8 +89,6 @@ IMPULSE_KERNEL Mat3 delta_velocity_matrix(const Basis& basis, const std::array<V
     }
     return product(transposed_product(basis.contact_to_world, world), basis.contact_to_world);
 }
-Mat3 delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
-                           const PerBody<MassProperties>& mass);
 
 // K with its LU factors: everything the friction solve needs of the contact's geometry and masses. Both depend
 // only on what preparation fixed, so a contact resolved again in the same frame can reuse them
@@ -101,25 +99,14 @@ struct FactoredDeltaVelocityMatrix {
 };
 
 FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Mat3& k);
-FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Basis& basis, const PerBody<Vec3>& relative_position,
-                                                           const PerBody<MassProperties>& mass);
 
 FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& k, const Vec3& contact_velocity,
-                             double desired_delta_velocity, double friction,
-                             SlidingFriction sliding = SlidingFriction::reference);
-FrictionSolve friction_solve(const Basis& basis, const PerBody<Vec3>& relative_position,
-                             const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
                              double desired_delta_velocity, double friction,
                              SlidingFriction sliding = SlidingFriction::reference);
 
 // The whole step: picks the model, returns the impulse in contact and world coordinates. `k` is the contact's
 // K with its factors, read only when the contact has friction (null will do for a frictionless one).
 Impulse calculate_impulse(const Basis& basis, const FactoredDeltaVelocityMatrix* k, const Vec3& contact_velocity,
-                          double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
-                          SlidingFriction sliding = SlidingFriction::reference);
-// The same, computing K and its factors.
-Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relative_position,
-                          const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
                           double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
                           SlidingFriction sliding = SlidingFriction::reference);
 

@@ -23,36 +23,14 @@
 //   sliding        otherwise: lambda_t = the point of the disc |lambda_t| <= mu lambda_n nearest lambda_t,free
 //                  in K_tt's metric (clamp "friction"), found as below
 //
-// Why this projection. Coulomb's law (maximal dissipation) says a sliding contact's friction has size
-// mu lambda_n and opposes the slip. The slip after the visit is v_t,after = v_t' + K_tt (lambda_t - lambda_t,old)
-// = K_tt (lambda_t - lambda_t,free). Minimising |lambda_t - lambda_t,free|_K over the disc gives, by its
-// optimality condition, K_tt (lambda_t - lambda_t,free) + nu lambda_t = 0 with nu >= 0, i.e.
-//   v_t,after = -nu lambda_t:  the friction lies on the circle exactly against the slip the visit leaves,
-// and lambda_t(nu) = (K_tt + nu 1)^-1 K_tt lambda_t,free with nu the root of |lambda_t(nu)| = mu lambda_n.
-// nu is found by Newton's method on phi(nu) = 1/|lambda_t(nu)| - 1/(mu lambda_n) (the trust-region
-// subproblem's secular equation, Moré and Sorensen 1983): phi is concave and increasing, so Newton from nu = 0
-// climbs to the root without overshooting, to rounding in 3 or 4 steps; the result is then put exactly on the
-// circle. The alternatives, and why not:
-//   - scaling lambda_t,free back onto the circle (what this engine did before, and Jolt and Box2D's 3-D ports
-//     do): its fixed point has lambda_t parallel to K_tt^-1 v_t, not to v_t. At a box corner K_tt is
-//     anisotropic and only cos(angle between them) of the friction opposes the slip: a box sliding along x on
-//     its four corners stopped 7.9 % too late and veered (docs/methods.md).
-//   - putting lambda_t = -mu lambda_n v_t' / |v_t'| (against the slip before the visit): the same fixed point
-//     for a steady slide, but when the cone shrinks under a contact that holds (lambda_n falls, v_t' is
-//     rounding noise) it points the whole friction along the noise; a resting box under soft step lost
-//     contacts that way.
-//   - Bullet's slip-aligned tangent (one row along the slip as prepared, each row clamped alone to
-//     +-mu lambda_n): opposes the slip as prepared, not as it turns within the frame, and a box clamp allows
-//     sqrt(2) mu lambda_n across it.
-// None of this depends on a basis: a turn of the tangents about the normal turns lambda_t, v_t and K_tt
-// together, so the same scene turned as a whole gives the turned motion. When K_tt is singular (a body that
-// turns about one axis only) lambda_t,free is scaled back onto the circle.
-//
-// Contact velocity (step 4 on the bodies' current motion, anchors and inverse inertia fixed at preparation):
-//   v = C^T [(v0 + w0 x r0) - (v1 + w1 x r1)] + offset
-// where offset is a method's constant term (projected Gauss-Seidel: step 4's tangential acceleration term).
-// Applying an increment g (world) is step 7: body 0 gets +g, body 1 gets -g,
-//   impulsive_torque = r x (+-g),  velocity_change = (+-g) m^-1,  rotation_change = I^-1 impulsive_torque.
+// Why this projection (docs/methods.md, "The accumulating methods", with the alternatives measured): the slip the
+// visit leaves is v_t,after = K_tt (lambda_t - lambda_t,free), and the optimality condition of the projection,
+// K_tt (lambda_t - lambda_t,free) + nu lambda_t = 0 with nu >= 0, makes it v_t,after = -nu lambda_t: the friction
+// lies on the circle exactly against the slip the visit leaves (Coulomb's maximal dissipation). With
+// lambda_t(nu) = (K_tt + nu 1)^-1 K_tt lambda_t,free, nu is the root of |lambda_t(nu)| = mu lambda_n, found by
+// Newton's method on 1/|lambda_t(nu)| - 1/(mu lambda_n) (Moré and Sorensen 1983's secular equation: concave and
+// increasing, so Newton from nu = 0 climbs to it without overshooting). No basis decides any of it; when K_tt is
+// singular (a body that turns about one axis only) lambda_t,free is scaled back onto the circle.
 
 #include "body/rigid_body.hpp"
 #include "derivation/contact_velocity.hpp"
@@ -79,8 +57,6 @@ struct Axes {
     double n = 0.0;
     double t1 = 0.0;
     double t2 = 0.0;
-
-    bool operator==(const Axes&) const = default;
 };
 
 inline Vec3 vector_of(const Axes& a) {
@@ -178,11 +154,6 @@ IMPULSE_ROW_FUNCTION Vec3 relative_velocity(const ContactRow& row, const SolverB
 IMPULSE_ROW_FUNCTION Axes row_velocity(const ContactRow& row, const SolverBody* bodies) {
     const Vec3 v = transposed_times(row.basis, relative_velocity(row, bodies));
     return {v.x(), v.y() + row.slip_offset[0], v.z() + row.slip_offset[1]};
-}
-
-// The normal velocity alone (the split impulse's push rows).
-IMPULSE_ROW_FUNCTION double row_normal_velocity(const ContactRow& row, const SolverBody* bodies) {
-    return transposed_times(row.basis, relative_velocity(row, bodies)).x();
 }
 
 // lambda_n after the normal row; `unclamped` receives the total before the push-only clamp.
@@ -285,10 +256,6 @@ IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& befo
                           velocity.t2 + row.normal_to_tangent[1] * change, row.friction * n, free_x, free_y, x, y);
     }
     return RowVisit{before, {unclamped_n, free_x, free_y}, {n, x, y}, unclamped_n < 0.0, sliding};
-}
-
-IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& velocity, const NormalTarget& target) {
-    return solve_rows(row, row.total_impulse, velocity, target);
 }
 
 // The normal row alone (soft step's restitution, the split impulse's pushes): tangential totals unchanged.

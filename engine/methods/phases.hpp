@@ -13,10 +13,6 @@
 
 namespace impulse {
 
-// Whether any non-inert contact is still above the epsilon (tells "resolved" from the other stop reasons);
-// one scan, once per phase.
-bool any_penetration_above(std::span<const PreparedContact> contacts, double epsilon);
-
 // What the position phase carries from one iteration to the next besides the contacts.
 struct PositionPhaseState {
     std::vector<double> rewound_time;  // per body: how far velocity-based resolution moved it back this frame (s)

@@ -1,17 +1,7 @@
 #include "methods/phases.hpp"
 #include "preparation/bookkeeping.hpp"
 
-#include <algorithm>
-
 namespace impulse {
-
-namespace {
-
-double penetration_of(const PreparedContact& c) {
-    return c.penetration;
-}
-
-}  // namespace
 
 WorstFirstSelector penetration_selector(const FrameContext& frame, Movable movable) {
     const std::span<const PreparedContact> contacts = frame.contacts;
@@ -20,11 +10,6 @@ WorstFirstSelector penetration_selector(const FrameContext& frame, Movable movab
         eligible[i] = !contacts[i].inert && (!movable || movable(contacts[i], frame.mass));
     return WorstFirstSelector(frame.settings.worst_first_search, contacts, frame.bodies.size(), penetration_of,
                               std::move(eligible));
-}
-
-bool any_penetration_above(std::span<const PreparedContact> contacts, double epsilon) {
-    return std::any_of(contacts.begin(), contacts.end(),
-                       [epsilon](const PreparedContact& c) { return !c.inert && c.penetration > epsilon; });
 }
 
 void resolve_penetration(FrameContext& frame, Projection projection, PositionPhaseState& state,
@@ -65,7 +50,7 @@ PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, M
         ++outcome.iterations_used;
     }
     outcome.stop = selector.worst(settings.position_epsilon)                          ? StopReason::iteration_limit
-                   : any_penetration_above(frame.contacts, settings.position_epsilon) ? StopReason::unmovable_left
+                   : any_above(frame.contacts, settings.position_epsilon, penetration_of) ? StopReason::unmovable_left
                                                                                       : StopReason::resolved;
     frame.recorder.end_phase(Phase::position, outcome);
     return outcome;

@@ -25,12 +25,9 @@
 // and velocity_iterations do not apply.
 //
 // Reported per visit (and per warm start, stage warm_start), when the recorder keeps the frame: the place
-// {0, pass, stage}, the totals {before, unclamped, after, clamp}, the contact velocity read from the bodies, and
-// step 5 as this method judges the visit: the prepared step 5 with separating_velocity = the current v_n and
-// desired_delta_velocity = target - v_n (the value compared with the epsilon). The recorder builds the impulse
-// (the increment applied, sliding when the cone clamped; no friction_solve, which is the book's 3x3 solve) and
-// step 7 from them, and the updates of the contacts sharing a body by the book's linearised formulas with desired
-// delta v in this method's terms, target - v_n (record/visit_records.hpp): this method keeps no bookkeeping.
+// {0, pass, stage}, the totals, the contact velocity read, and step 5 as this method judges the visit
+// (separating_velocity = the current v_n, desired_delta_velocity = target - v_n, the value the epsilon is compared
+// with); record/visit_records.hpp builds the impulse, step 7 and the other contacts' updates from them.
 
 #include "methods/contact_rows.hpp"
 #include "methods/method.hpp"

@@ -33,7 +33,7 @@ PhaseOutcome relaxation_positions(FrameContext& frame) {
     WorstFirstSelector selector = penetration_selector(frame, nullptr);
     bool cut_short = false;  // the iteration limit stopped a pass with a contact still waiting for its turn
     for (int pass = 0; pass < settings.relaxation.passes && !cut_short && !frame.cut_short; ++pass) {
-        if (!any_penetration_above(contacts, settings.position_epsilon)) break;
+        if (!any_above(contacts, settings.position_epsilon, penetration_of)) break;
         if (pass > 0) selector.restart();  // every contact gets a turn again
         while (const std::optional<int> chosen = selector.worst(settings.position_epsilon)) {
             if (outcome.iterations_used == outcome.iteration_limit) {
@@ -50,7 +50,7 @@ PhaseOutcome relaxation_positions(FrameContext& frame) {
     }
     // Relaxation leaves penetration by design; the stop reason says whether any is left above the epsilon,
     // and whether the iteration limit cut the passes short.
-    const bool remaining = any_penetration_above(contacts, settings.position_epsilon);
+    const bool remaining = any_above(contacts, settings.position_epsilon, penetration_of);
     outcome.stop = !remaining  ? StopReason::resolved
                    : cut_short ? StopReason::iteration_limit
                                : StopReason::passes_complete;

@@ -22,15 +22,6 @@
 
 namespace impulse {
 
-namespace {
-
-bool any_desired_delta_velocity_above(std::span<const PreparedContact> contacts, double epsilon) {
-    return std::any_of(contacts.begin(), contacts.end(),
-                       [epsilon](const PreparedContact& c) { return !c.inert && desired_of(c) > epsilon; });
-}
-
-}  // namespace
-
 PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
     std::span<PreparedContact> contacts = frame.contacts;
     const ResolverSettings& settings = frame.settings;
@@ -46,25 +37,17 @@ PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
         for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
             const PreparedContact& contact = contacts[static_cast<std::size_t>(i)];
             if (contact.inert || desired_of(contact) <= settings.velocity_epsilon) continue;
-            const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, settings);
-            frame.touched(i);
-            if (frame.keeping)
-                frame.recorder.velocity_visit({.contact = i,
-                                               .sweep = SweepPlace{0, pass, SolverStage::solve},
-                                               .epsilon = settings.velocity_epsilon,
-                                               .updates = DesiredFollows::step_5,
-                                               .resolution = &resolution});
+            const VelocityChange change = visit_contact(frame, k, i, SweepPlace{0, pass, SolverStage::solve});
             const std::array<int, 2> changed = contact.bodies;
-            apply_velocity_change(frame.bodies, changed, resolution.velocity_change_terms);
             by_body.sharing(changed, sharing);
-            update_contact_velocities(contacts, sharing, changed, resolution.velocity_change_terms, refinements);
+            update_contact_velocities(contacts, sharing, changed, change, refinements);
             ++outcome.iterations_used;
             resolved_any = true;
         }
         if (!resolved_any) break;
     }
-    outcome.stop = any_desired_delta_velocity_above(contacts, settings.velocity_epsilon) ? StopReason::sweeps_complete
-                                                                                         : StopReason::resolved;
+    outcome.stop = any_above(contacts, settings.velocity_epsilon, desired_of) ? StopReason::sweeps_complete
+                                                                              : StopReason::resolved;
     frame.recorder.end_phase(Phase::velocity, outcome);
     return outcome;
 }

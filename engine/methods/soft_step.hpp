@@ -43,22 +43,10 @@
 // Warm starting across frames is `settings.warm_start`; within a frame every sub-step's warm start applies the
 // current totals whatever the setting (as in Box2D v3, where the setting only scales last step's impulses).
 //
-// What is reported, when the recorder keeps the frame (the same loop either way, so recorded and unrecorded runs
-// compute the same bits; record/visit_records.hpp builds the records): every contact visit, with sweep =
-// {substep, pass, stage}, the accumulated impulse {before, unclamped, after, clamp}, and for its VelocityIteration:
-//   contact_velocity        the contact's velocity when visited (contact coordinates, fixed anchors);
-//   desired_delta_velocity  target - current along the normal: solve: position_bias - v_n; relax: -v_n (or
-//                           the speculative bias); restitution: -c v_n(before) - v_n; warm start (which has no
-//                           target): the normal velocity change the re-applied impulse makes, (K lambda)_n;
-//   position_bias           step 5's term here: the separating velocity the soft bias asks for, -bias (m/s;
-//                           solve and relax);
-//   restitution_cutoff_applied  c > 0, but the contact did not close faster than the cut-off when the frame
-//                           began, so it does not bounce (the test restitution makes once);
-//   impulse                 the increment applied, after - before (frictionless, static or sliding);
-//   velocity_change         step 7 of that increment: exactly what was added to the bodies.
-// For a warm start `before` is 0: the total counts what this sub-step has applied, and the warm start applies
-// all of lambda at once. The bodies' moves by sub-step integration are not recorded per visit: bodies_after
-// holds the frame's end. Every visit counts as an iteration of the velocity phase.
+// What is reported, when the recorder keeps the frame (docs/methods.md, "What is recorded"; the same loop either
+// way, so recorded and unrecorded runs compute the same bits): every visit, with sweep = {substep, pass, stage},
+// its totals, the velocity it read and desired delta v = target - v_n (a warm start, which has no target: the
+// normal velocity change it makes, (K lambda)_n, from before = 0). Every visit counts as an iteration.
 
 #include "methods/method.hpp"
 #include "settings/settings.hpp"

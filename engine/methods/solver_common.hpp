@@ -42,6 +42,11 @@ VelocityResolution resolve_velocity(const PreparedContact& contact, std::span<co
 void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int, 2>& changed,
                            const VelocityChange& change);
 
+// One visit of the book's velocity methods to contact `chosen`: its impulse (resolve_velocity), stamped, reported
+// when the recorder keeps the frame (at `sweep`, none for worst first) and applied to its bodies. The caller then
+// updates the bookkeeping of the contacts sharing a body (update_contact_velocities) with the step 7 returned.
+VelocityChange visit_contact(FrameContext& frame, FrictionMatrices& k, int chosen, std::optional<SweepPlace> sweep);
+
 // A whole-step method's last act (soft step, AVBD): what it accumulated kept in the contact memory for the next
 // frame when warm starting, or the memory emptied, so that warm starting switched on later starts from nothing
 // rather than from totals of frames ago.

@@ -23,15 +23,9 @@
 // pseudo w x h only at second order. Moving per visit lets the inspector rebuild every intermediate pose from
 // the trace and land exactly on bodies_after.
 //
-// Reported per visit, in the position phase's vocabulary: the push impulse applied this visit and the moves it
-// made; the recorder builds the record from them (record/visit_records.hpp): method split_impulse; penetration =
-// the book's bookkeeping penetration when visited (the recorder keeps it; the pushes never read it); push_impulse
-// (N s: a projection's amount is in metres); linear_inertia and angular_inertia = step 3's linear and angular
-// components (how readily each body's pseudo velocity gives way along n per unit push), penetration_inertia = d;
-// linear_move and angular_move = how far this visit moved each body's contact point along n by translation and by
-// rotation, (linear_change) . n and (angular_change x q_rel) . n, body 1's negative as in the book; no angular
-// limit; linear_change and angular_change = the moves applied; and the penetration updates of every contact
-// sharing a body.
+// Reported per visit: the push impulse applied this visit (N s: a projection's amount is in metres), the moves it
+// made and the slop; record/visit_records.hpp builds the record in the position phase's words (step 3's inertias,
+// how far the visit moved each body's contact point along n, the penetration updates of the contacts sharing a body).
 
 #include "methods/contact_rows.hpp"
 #include "methods/method.hpp"
@@ -72,7 +66,7 @@ PhaseOutcome split_impulse_positions(FrameContext& frame) {
         double largest = 0.0;
         for (std::size_t r = 0; r < rows.size(); ++r) {
             ContactRow& row = rows[r];
-            const RowVisit v = solve_normal_row(row, row_normal_velocity(row, pseudo.data()), NormalTarget{targets[r]});
+            const RowVisit v = solve_normal_row(row, row_velocity(row, pseudo.data()).n, NormalTarget{targets[r]});
             keep_total(row, v.after);
             const double push = v.after.n - v.before.n;
             largest = std::max(largest, std::abs(push) / row.normal_mass);

@@ -25,19 +25,10 @@ PhaseOutcome worst_first_velocities(FrameContext& frame) {
         if (outcome.iterations_used % stop_check_visits == 0 && frame.stop_requested()) break;
         const std::optional<int> chosen = selector.worst(settings.velocity_epsilon);
         if (!chosen) break;
-        const PreparedContact& contact = contacts[static_cast<std::size_t>(*chosen)];
-        const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, settings);
-        frame.touched(*chosen);
-        if (frame.keeping)
-            frame.recorder.velocity_visit({.contact = *chosen,
-                                           .sweep = std::nullopt,
-                                           .epsilon = settings.velocity_epsilon,
-                                           .updates = DesiredFollows::step_5,
-                                           .resolution = &resolution});
-        const std::array<int, 2> changed = contact.bodies;
-        apply_velocity_change(frame.bodies, changed, resolution.velocity_change_terms);
+        const VelocityChange change = visit_contact(frame, k, *chosen, std::nullopt);
+        const std::array<int, 2> changed = contacts[static_cast<std::size_t>(*chosen)].bodies;
         const std::span<const int> sharing = selector.sharing(changed);
-        update_contact_velocities(contacts, sharing, changed, resolution.velocity_change_terms, refinements);
+        update_contact_velocities(contacts, sharing, changed, change, refinements);
         selector.values_changed(sharing);
         ++outcome.iterations_used;
     }

@@ -31,9 +31,21 @@ private:
 };
 
 // The desired delta v a velocity method compares with its epsilon and resolves: the bookkeeping's (with the
-// Baumgarte term of step 5 when it is on).
+// Baumgarte term of step 5 when it is on); and the penetration a position method compares with its epsilon.
 inline double desired_of(const PreparedContact& c) {
     return c.desired_delta_velocity;
+}
+inline double penetration_of(const PreparedContact& c) {
+    return c.penetration;
+}
+
+// Whether any non-inert contact's `value` (desired_of, penetration_of) is still above `epsilon`: what tells
+// "resolved" from the other stop reasons, one scan once per phase.
+template <typename Value>
+bool any_above(std::span<const PreparedContact> contacts, double epsilon, Value value) {
+    for (const PreparedContact& c : contacts)
+        if (!c.inert && value(c) > epsilon) return true;
+    return false;
 }
 
 // Calls each(index, slot, m) for every contact `index` of `candidates` (ascending) whose body `slot` is the moved

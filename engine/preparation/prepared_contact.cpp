@@ -40,7 +40,7 @@ std::optional<double> step_5_position_bias(double penetration, const ResolverSet
 
 namespace {
 
-// prepare_contact's work, into `c` (a vector's element, built where it is kept).
+// One contact's preparation, into `c` (a vector's element, built where it is kept).
 void prepare(PreparedContact& c, int index, const Contact& contact, std::span<const RigidBody> bodies,
              std::span<const MassProperties> mass, const ResolverSettings& settings) {
     const OrientedContact o = oriented(contact);
@@ -82,13 +82,6 @@ void prepare(PreparedContact& c, int index, const Contact& contact, std::span<co
 }
 
 }  // namespace
-
-PreparedContact prepare_contact(int index, const Contact& contact, std::span<const RigidBody> bodies,
-                                std::span<const MassProperties> mass, const ResolverSettings& settings) {
-    PreparedContact c;
-    prepare(c, index, contact, bodies, mass, settings);
-    return c;
-}
 
 void prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
                       std::span<const MassProperties> mass, const ResolverSettings& settings,

@@ -27,7 +27,7 @@
 namespace impulse {
 
 struct PreparedContact {
-    // Left unset: every member is written by prepare_contact (a vector of them is not cleared byte by byte first).
+    // Left unset: every member is written by prepare_contacts (a vector of them is not cleared byte by byte first).
     PreparedContact() {}
 
     // The bookkeeping, updated by the linearised formulas whenever a body of this contact moves or changes speed
@@ -73,9 +73,6 @@ OrientedContact oriented(const Contact& contact);
 PerBody<BodyMotion> contact_motion(const std::array<int, 2>& bodies, std::span<const RigidBody> all_bodies);
 // Step 5's Baumgarte term, when the setting is on (preparation/position_bias.hpp).
 std::optional<double> step_5_position_bias(double penetration, const ResolverSettings& settings);
-
-PreparedContact prepare_contact(int index, const Contact& contact, std::span<const RigidBody> bodies,
-                                std::span<const MassProperties> mass, const ResolverSettings& settings);
 
 // Every contact, in order, into `prepared` (emptied first).
 void prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,

@@ -3,19 +3,9 @@
 #include "methods/method_table.hpp"
 #include "preparation/prepared_contact.hpp"
 
-#include <chrono>
-
 namespace impulse {
 
-namespace {
-
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-}  // namespace
 
 ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<const Contact> contacts,
                                    const ResolverSettings& settings, Recorder& recorder, const FrameSetup& setup) {

@@ -11,6 +11,7 @@
 #include "settings/settings.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <memory_resource>
 #include <span>
 #include <vector>
@@ -39,6 +40,11 @@ struct StageTimes {
     double resolve() const { return prepare + position + velocity; }
     double total() const { return integrate + broad_phase + narrow_phase + resolve(); }
 };
+
+// The seconds since `start`, as the stages are timed.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 // What else a frame's resolution may be given: everything has a default.
 struct FrameSetup {

@@ -15,10 +15,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 Placement placement_of(const RigidBody& body) {
     return {body.position, body.orientation.toRotationMatrix()};
 }

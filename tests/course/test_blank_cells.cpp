@@ -28,6 +28,7 @@
 #include "resolver/settings_names.hpp"
 
 #include "support/opened.hpp"
+#include "support/impulse.hpp"
 
 #include <doctest/doctest.h>
 

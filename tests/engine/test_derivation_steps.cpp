@@ -7,6 +7,7 @@
 #include "methods/projections.hpp"
 #include "support/approx.hpp"
 #include "support/bodies.hpp"
+#include "support/impulse.hpp"
 
 using namespace impulse;
 using namespace impulse::test;

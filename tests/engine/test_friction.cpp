@@ -4,6 +4,7 @@
 #include "derivation/velocity_change.hpp"
 #include "support/approx.hpp"
 #include "support/bodies.hpp"
+#include "support/impulse.hpp"
 
 using namespace impulse;
 using namespace impulse::test;

@@ -147,7 +147,9 @@ TEST_CASE("the 3x3 full-pivot solve matches Eigen's FullPivLU on the delta veloc
     rc::check([&random] {
         const test::RandomContact r = test::any_contact();
         const std::vector<MassProperties> mass = mass_properties(r.bodies);
-        const PreparedContact p = prepare_contact(0, r.contact, r.bodies, mass, ResolverSettings{});
+        std::pmr::vector<PreparedContact> one;
+        prepare_contacts({&r.contact, 1}, r.bodies, mass, ResolverSettings{}, one);
+        const PreparedContact& p = one.front();
         const Mat3 k = delta_velocity_matrix(p.basis, p.relative_position, contact_mass(p, mass));
         RC_ASSERT(agrees_with_eigen(k, some_targets(random)));
     });

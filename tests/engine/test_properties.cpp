@@ -6,6 +6,7 @@
 #include "derivation/velocity_change.hpp"
 #include "methods/projections.hpp"
 #include "support/property.hpp"
+#include "support/impulse.hpp"
 #include "support/random_contacts.hpp"
 
 using namespace impulse;

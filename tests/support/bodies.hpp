@@ -55,7 +55,9 @@ inline ResolverSettings plain_settings() {
 inline PreparedContact prepared(const Contact& c, const std::vector<RigidBody>& bodies,
                                 const ResolverSettings& settings = plain_settings()) {
     const std::vector<MassProperties> mass = mass_properties(bodies);
-    return prepare_contact(0, c, bodies, mass, settings);
+    std::pmr::vector<PreparedContact> one;
+    prepare_contacts({&c, 1}, bodies, mass, settings, one);
+    return one.front();
 }
 
 // Steps 1-5 of `c` with every intermediate, as the recorder derives them.

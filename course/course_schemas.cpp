@@ -19,8 +19,7 @@ std::string_view lesson_schema_text() {
 
 void validate_worksheet_document(const formats::json& document) {
     const auto parsed = [](std::string_view text) { return formats::json::parse(text.begin(), text.end()); };
-    formats::SchemaValidator(parsed(worksheet_schema_text()),
-                             {{"scene.schema.json", formats::scene_schema()}})
+    formats::SchemaValidator(parsed(worksheet_schema_text()), {{"scene.schema.json", formats::scene_schema()}})
         .validate(document);
 }
 

@@ -76,8 +76,10 @@ PhaseOutcome soft_step(FrameContext& frame);                          // soft_st
 PhaseOutcome avbd_step(FrameContext& frame);                          // avbd.cpp
 
 // One row per enumerator, in the enumerators' order (checked in method_table.cpp).
-inline constexpr std::array<MethodRow<VelocityMethod>, static_cast<std::size_t>(VelocityMethod::count)>
-    velocity_methods{{
+template <typename Id>
+using MethodRows = std::array<MethodRow<Id>, static_cast<std::size_t>(Id::count)>;
+
+inline constexpr MethodRows<VelocityMethod> velocity_methods{{
     {VelocityMethod::worst_first, "worst_first", MethodScope::velocity_phase, worst_first_velocities,
      method_reads::worst_first,
      "the book: resolve the contact with the largest desired delta v, update the others, repeat",
@@ -108,8 +110,7 @@ PhaseOutcome relaxation_positions(FrameContext& frame);            // relaxation
 PhaseOutcome split_impulse_positions(FrameContext& frame);         // split_impulse.cpp
 PhaseOutcome no_positions(FrameContext& frame);                    // no_position_phase.cpp
 
-inline constexpr std::array<MethodRow<PositionMethod>, static_cast<std::size_t>(PositionMethod::count)>
-    position_methods{{
+inline constexpr MethodRows<PositionMethod> position_methods{{
     {PositionMethod::linear_projection, "linear_projection", MethodScope::position_phase, linear_projection_positions,
      method_reads::linear_projection, "worst first: move the bodies apart along the normal, by inverse mass"},
     {PositionMethod::nonlinear_projection, "nonlinear_projection", MethodScope::position_phase,

@@ -49,9 +49,9 @@ PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, M
         resolve_penetration(frame, projection, state, selector, *chosen, penetration, std::nullopt);
         ++outcome.iterations_used;
     }
-    outcome.stop = selector.worst(settings.position_epsilon)                          ? StopReason::iteration_limit
+    outcome.stop = selector.worst(settings.position_epsilon)                              ? StopReason::iteration_limit
                    : any_above(frame.contacts, settings.position_epsilon, penetration_of) ? StopReason::unmovable_left
-                                                                                      : StopReason::resolved;
+                                                                                          : StopReason::resolved;
     frame.recorder.end_phase(Phase::position, outcome);
     return outcome;
 }

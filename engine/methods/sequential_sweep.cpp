@@ -46,8 +46,8 @@ PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
         }
         if (!resolved_any) break;
     }
-    outcome.stop = any_above(contacts, settings.velocity_epsilon, desired_of) ? StopReason::sweeps_complete
-                                                                              : StopReason::resolved;
+    outcome.stop =
+        any_above(contacts, settings.velocity_epsilon, desired_of) ? StopReason::sweeps_complete : StopReason::resolved;
     frame.recorder.end_phase(Phase::velocity, outcome);
     return outcome;
 }

@@ -45,9 +45,9 @@ struct VelocityUpdate {
 
 struct PositionIteration {
     int iteration;
-    int contact;         // the contact chosen: the deepest above the epsilon
-    double penetration;  // its penetration, compared with the epsilon
-    double epsilon;      // the projections' (0 for the split impulse, which compares nothing: see slop)
+    int contact;                 // the contact chosen: the deepest above the epsilon
+    double penetration;          // its penetration, compared with the epsilon
+    double epsilon;              // the projections' (0 for the split impulse, which compares nothing: see slop)
     std::optional<double> slop;  // the split impulse's: the penetration its pushes leave, not an epsilon
     std::optional<int> pass;     // relaxation: which pass this iteration belongs to; the split impulse: which sweep
     // Absent when the recorder's contact filter leaves the chosen contact out.

@@ -83,8 +83,8 @@ void write_position_phase(std::ostream& out, const Trace& trace, const FrameReco
             out << " · contact " << it.contact << " is pushed: penetration " << number(it.penetration) << " m, slop "
                 << number(*it.slop) << " m\n";
         else
-            out << " · contact " << it.contact << " is the deepest: penetration " << number(it.penetration)
-                << " m > ε " << number(it.epsilon) << " m\n";
+            out << " · contact " << it.contact << " is the deepest: penetration " << number(it.penetration) << " m > ε "
+                << number(it.epsilon) << " m\n";
         for (const StepTable& t : position_iteration_tables(it)) write_table(out, t);
     }
     out << "Position phase ends: " << stop_text(frame.position.outcome) << '\n';

@@ -8,8 +8,8 @@ namespace impulse {
 
 inline Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relative_position,
                                  const PerBody<MassProperties>& mass, const Vec3& contact_velocity,
-                                 double desired_delta_velocity, double delta_velocity_per_unit_impulse,
-                                 double friction, SlidingFriction sliding = SlidingFriction::reference) {
+                                 double desired_delta_velocity, double delta_velocity_per_unit_impulse, double friction,
+                                 SlidingFriction sliding = SlidingFriction::reference) {
     if (friction == 0.0)
         return calculate_impulse(basis, nullptr, contact_velocity, desired_delta_velocity,
                                  delta_velocity_per_unit_impulse, friction, sliding);

@@ -37,10 +37,10 @@ PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
         for (int i = 0; i < static_cast<int>(contacts.size()); ++i) {
             const PreparedContact& contact = contacts[static_cast<std::size_t>(i)];
             if (contact.inert || desired_of(contact) <= settings.velocity_epsilon) continue;
-            const VelocityChange change = visit_contact(frame, k, i, SweepPlace{0, pass, SolverStage::solve});
+            const VelocityResolution visit = visit_contact(frame, k, i, SweepPlace{0, pass, SolverStage::solve});
             const std::array<int, 2> changed = contact.bodies;
             by_body.sharing(changed, sharing);
-            update_contact_velocities(contacts, sharing, changed, change, refinements);
+            update_contact_velocities(contacts, sharing, changed, visit.velocity_change_terms, refinements);
             ++outcome.iterations_used;
             resolved_any = true;
         }

@@ -30,20 +30,6 @@ VelocityResolution resolve_velocity(const PreparedContact& contact, std::span<co
     return r;
 }
 
-VelocityChange visit_contact(FrameContext& frame, FrictionMatrices& k, int chosen, std::optional<SweepPlace> sweep) {
-    const PreparedContact& contact = frame.contacts[static_cast<std::size_t>(chosen)];
-    const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, frame.settings);
-    frame.touched(chosen);
-    if (frame.keeping)
-        frame.recorder.velocity_visit({.contact = chosen,
-                                       .sweep = sweep,
-                                       .epsilon = frame.settings.velocity_epsilon,
-                                       .updates = DesiredFollows::step_5,
-                                       .resolution = &resolution});
-    apply_velocity_change(frame.bodies, contact.bodies, resolution.velocity_change_terms);
-    return resolution.velocity_change_terms;
-}
-
 void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int, 2>& changed,
                            const VelocityChange& change) {
     for (int i = 0; i < 2; ++i) {

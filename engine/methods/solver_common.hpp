@@ -44,8 +44,22 @@ void apply_velocity_change(std::vector<RigidBody>& bodies, const std::array<int,
 
 // One visit of the book's velocity methods to contact `chosen`: its impulse (resolve_velocity), stamped, reported
 // when the recorder keeps the frame (at `sweep`, none for worst first) and applied to its bodies. The caller then
-// updates the bookkeeping of the contacts sharing a body (update_contact_velocities) with the step 7 returned.
-VelocityChange visit_contact(FrameContext& frame, FrictionMatrices& k, int chosen, std::optional<SweepPlace> sweep);
+// updates the bookkeeping of the contacts sharing a body (update_contact_velocities) with its step 7. Inline, so each
+// method's loop compiles as it did when it wrote the visit out.
+inline VelocityResolution visit_contact(FrameContext& frame, FrictionMatrices& k, int chosen,
+                                        std::optional<SweepPlace> sweep) {
+    const PreparedContact& contact = frame.contacts[static_cast<std::size_t>(chosen)];
+    const VelocityResolution resolution = resolve_velocity(contact, frame.mass, k, frame.settings);
+    frame.touched(chosen);
+    if (frame.keeping)
+        frame.recorder.velocity_visit({.contact = chosen,
+                                       .sweep = sweep,
+                                       .epsilon = frame.settings.velocity_epsilon,
+                                       .updates = DesiredFollows::step_5,
+                                       .resolution = &resolution});
+    apply_velocity_change(frame.bodies, contact.bodies, resolution.velocity_change_terms);
+    return resolution;
+}
 
 // A whole-step method's last act (soft step, AVBD): what it accumulated kept in the contact memory for the next
 // frame when warm starting, or the memory emptied, so that warm starting switched on later starts from nothing

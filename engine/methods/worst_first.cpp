@@ -25,10 +25,10 @@ PhaseOutcome worst_first_velocities(FrameContext& frame) {
         if (outcome.iterations_used % stop_check_visits == 0 && frame.stop_requested()) break;
         const std::optional<int> chosen = selector.worst(settings.velocity_epsilon);
         if (!chosen) break;
-        const VelocityChange change = visit_contact(frame, k, *chosen, std::nullopt);
+        const VelocityResolution visit = visit_contact(frame, k, *chosen, std::nullopt);
         const std::array<int, 2> changed = contacts[static_cast<std::size_t>(*chosen)].bodies;
         const std::span<const int> sharing = selector.sharing(changed);
-        update_contact_velocities(contacts, sharing, changed, change, refinements);
+        update_contact_velocities(contacts, sharing, changed, visit.velocity_change_terms, refinements);
         selector.values_changed(sharing);
         ++outcome.iterations_used;
     }

@@ -13,6 +13,8 @@
 #include "record/word_table.hpp"
 #include "resolver/settings_names.hpp"
 
+#include <utility>
+
 namespace impulse::formats {
 
 namespace {
@@ -505,9 +507,14 @@ FrameRecord read_frame(const json& j) {
     }
     for (const json& c : j["contacts"]) f.contacts.push_back(read_preparation(c));
     for (const json& phase : j["phases"]) {
-        if (phase["phase"] == "position")
+        if (phase["phase"] == "position") {
             f.position = read_phase<PositionIteration>(phase, read_position_iteration);
-        else
+            // A trace written before the split impulse's slop had its word (format 1, and format 2 until then) keeps
+            // it as the iteration's epsilon: read it as the slop it is.
+            if (phase["method"] == name_of(position_method_names, PositionMethod::split_impulse))
+                for (PositionIteration& it : f.position.iterations)
+                    if (!it.slop) it.slop = std::exchange(it.epsilon, 0.0);
+        } else
             f.velocity = read_phase<VelocityIteration>(phase, read_velocity_iteration);
     }
     for (const json& body : j["bodies_after"]) f.bodies_after.push_back(read_body_state(body));

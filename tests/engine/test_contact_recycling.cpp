@@ -123,7 +123,9 @@ TEST_CASE("a recycled pair of boxes pushes each body at its own anchor") {
     CHECK(is->penetration == doctest::Approx(was.penetration - was.normal.dot(d)).epsilon(1e-12));
 
     const std::vector<MassProperties> mass = mass_properties(bodies);
-    const PreparedContact prepared = prepare_contact(0, *is, bodies, mass, scene.settings);
+    std::pmr::vector<PreparedContact> one;
+    prepare_contacts({&*is, 1}, bodies, mass, scene.settings, one);
+    const PreparedContact& prepared = one.front();
     for (int i = 0; i < 2; ++i) {
         const RigidBody& body = bodies[static_cast<std::size_t>(is->bodies[i])];
         CHECK(prepared.relative_position[i] == touch_point(*is, i) - body.position);

@@ -6,7 +6,7 @@
 #include "course/trace_path.hpp"
 #include "formats/input_files.hpp"
 #include "explain/annotations.hpp"
-#include "record/words.hpp"
+#include "formats/words.hpp"
 #include "explain/format.hpp"
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
@@ -166,7 +166,7 @@ Lesson read_lesson_text(std::string_view text, const std::filesystem::path& file
         if (!ids.insert(step.id).second) throw formats::InputError(where + ".id", "\"" + step.id + "\" is used twice");
         step.at = s["at"].get<std::string>();
         // A step renamed since the lesson was written (docs/trace-format.md) is read by its new name, with a note.
-        for (const words::StepRename& r : words::step_renames()) {
+        for (const formats::words::StepRename& r : formats::words::step_renames()) {
             const std::string old_place = "step=" + std::string(r.old_name);
             const std::size_t found = step.at.find(old_place);
             const std::size_t end = found + old_place.size();

@@ -11,26 +11,28 @@ namespace impulse::course {
 
 namespace {
 
-// The trace's item keys, one per word of the word list (engine/record/words.hpp) that an item holds, in the
+// The trace's item keys, one per word of the word list (formats/words.hpp) that an item holds, in the
 // list's order: the words say which step computes each and what it is to that step.
 std::vector<StepKey> keys_from_words() {
     std::vector<StepKey> keys;
-    const std::span<const words::Word> all = words::all();
+    const std::span<const formats::words::Word> all = formats::words::all();
     for (const auto& [item, kind] : {std::pair{ItemKind::contact, 'C'}, std::pair{ItemKind::position_iteration, 'P'},
                                      std::pair{ItemKind::velocity_iteration, 'V'}})
-        for (const words::Word& w : all) {
+        for (const formats::words::Word& w : all) {
             // Objects and lists hold words of their own ("rewind.time", "updates[].after"): those are the keys.
-            if (!words::held_by(w, kind) || w.kind == words::Kind::object || w.kind == words::Kind::list ||
-                w.kind == words::Kind::none)
+            if (!formats::words::held_by(w, kind) || w.kind == formats::words::Kind::object ||
+                w.kind == formats::words::Kind::list || w.kind == formats::words::Kind::none)
                 continue;
             std::string_view step = w.step;
-            if (w.role == words::Role::context || (w.role == words::Role::given && w.step != words::step::updates))
+            if (w.role == formats::words::Role::context ||
+                (w.role == formats::words::Role::given && w.step != formats::words::step::updates))
                 step = {};  // what the item starts from: an input of every step
-            if (w.role == words::Role::setting) {
+            if (w.role == formats::words::Role::setting) {
                 // A setting belongs to the first step that reads it.
                 step = {};
-                for (const words::Word& reader : all) {
-                    if (!words::held_by(reader, kind) || reader.role != words::Role::computed) continue;
+                for (const formats::words::Word& reader : all) {
+                    if (!formats::words::held_by(reader, kind) || reader.role != formats::words::Role::computed)
+                        continue;
                     const std::string_view in = reader.inputs;
                     for (std::size_t at = in.find(w.quantity); at != std::string_view::npos && step.empty();
                          at = in.find(w.quantity, at + 1)) {
@@ -40,11 +42,11 @@ std::vector<StepKey> keys_from_words() {
                     if (!step.empty()) break;
                 }
             }
-            const Role role = w.role == words::Role::given     ? Role::given
-                              : w.role == words::Role::setting ? Role::setting
-                              : w.role == words::Role::context ? Role::context
-                                                               : Role::computed;
-            keys.push_back(StepKey{item, w.quantity, role, step, words::is_per_body(w.kind), &w});
+            const Role role = w.role == formats::words::Role::given     ? Role::given
+                              : w.role == formats::words::Role::setting ? Role::setting
+                              : w.role == formats::words::Role::context ? Role::context
+                                                                        : Role::computed;
+            keys.push_back(StepKey{item, w.quantity, role, step, formats::words::is_per_body(w.kind), &w});
         }
     return keys;
 }
@@ -88,7 +90,7 @@ const StepKey* find_step_key(ItemKind item, std::string_view key) {
 }
 
 Described describe_key(const StepKey& key) {
-    const words::Word& w = *key.word;
+    const formats::words::Word& w = *key.word;
     return {std::string(w.quantity), std::string(w.unit), std::string(w.formula), std::string(w.equation),
             std::string(w.meaning)};
 }

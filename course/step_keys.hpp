@@ -1,6 +1,6 @@
 #pragma once
 // Which derivation step computes which key of a trace's item objects, read from the word list
-// (engine/record/words.hpp): the one table behind worksheets
+// (formats/words.hpp): the one table behind worksheets
 // (a step's cells are the keys it computes, its inputs the keys of the steps before it) and behind the
 // equation `diff` names beside a mismatch. An item is a prepared contact (frames[f].contacts[k]) or one
 // iteration of a phase (frames[f].phases[p].iterations[i]); the step names are those of the inspector's
@@ -8,7 +8,7 @@
 // checks over the shipped cases run with every method.
 
 #include "course/json_path.hpp"
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
 #include <span>
 #include <string>
@@ -34,9 +34,9 @@ struct StepKey {
     ItemKind item;
     std::string_view key;  // inside the item object: "basis", "friction_solve.static_impulse", "updates[].after"
     Role role;
-    std::string_view step;    // the step table that shows it; empty for given and context keys
-    bool per_body;            // a [body0, body1] array: one cell per body present (null = the world)
-    const words::Word* word;  // its word (engine/record/words.hpp): formula, equation, unit, meaning
+    std::string_view step;             // the step table that shows it; empty for given and context keys
+    bool per_body;                     // a [body0, body1] array: one cell per body present (null = the world)
+    const formats::words::Word* word;  // its word (formats/words.hpp): formula, equation, unit, meaning
 };
 
 std::span<const StepKey> step_keys();

@@ -2,7 +2,7 @@
 
 #include "formats/input_error.hpp"
 #include "formats/schema_validator.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/settings_names.hpp"
 
 namespace impulse::formats {
 

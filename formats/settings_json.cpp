@@ -3,7 +3,7 @@
 #include "formats/input_error.hpp"
 #include "formats/json_text.hpp"
 #include "formats/schemas.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/settings_names.hpp"
 
 namespace impulse::formats {
 

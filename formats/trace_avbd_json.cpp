@@ -1,6 +1,6 @@
 #include "formats/trace_avbd_json.hpp"
 
-#include "record/word_table.hpp"
+#include "formats/word_table.hpp"
 
 namespace impulse::formats {
 

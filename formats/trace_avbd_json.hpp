@@ -1,6 +1,6 @@
 #pragma once
 // AVBD's iterations in a trace (record/avbd_records.hpp): a body visit's and a dual update's keys inside a velocity
-// iteration, written and read back. Every key is a word of the list (record/word_table.hpp), checked when this
+// iteration, written and read back. Every key is a word of the list (formats/word_table.hpp), checked when this
 // compiles.
 
 #include "formats/json_values.hpp"

@@ -3,7 +3,7 @@
 
 #include "formats/input_error.hpp"
 #include "formats/physical_values.hpp"
-#include "record/word_table.hpp"
+#include "formats/word_table.hpp"
 
 #include <algorithm>
 #include <climits>

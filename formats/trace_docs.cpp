@@ -1,6 +1,6 @@
 #include "formats/trace_docs.hpp"
 
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
 namespace impulse::formats {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The field lists of docs/trace-format.md, written from the word list (engine/record/words.hpp): one table per
+// The field lists of docs/trace-format.md, written from the word list (formats/words.hpp): one table per
 // kind of item, and the keys format 2 renamed. A test keeps the committed docs equal to this text.
 
 #include <string>
@@ -8,7 +8,7 @@
 namespace impulse::formats {
 
 // The marked lines around the generated section of docs/trace-format.md.
-inline constexpr std::string_view trace_docs_begin = "<!-- words: generated from engine/record/word_table.hpp -->";
+inline constexpr std::string_view trace_docs_begin = "<!-- words: generated from formats/word_table.hpp -->";
 inline constexpr std::string_view trace_docs_end = "<!-- end of words -->";
 
 // The generated section, markers included.

@@ -2,7 +2,7 @@
 #include "formats/trace_format1.hpp"
 
 #include "record/trace.hpp"
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
 namespace impulse::formats {
 

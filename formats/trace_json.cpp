@@ -10,8 +10,8 @@
 #include "formats/physical_values.hpp"
 #include "formats/schemas.hpp"
 #include "formats/settings_json.hpp"
-#include "record/word_table.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/word_table.hpp"
+#include "formats/settings_names.hpp"
 
 #include <utility>
 
@@ -20,7 +20,7 @@ namespace impulse::formats {
 namespace {
 
 // --- keys -----------------------------------------------------------------------------------------------
-// Every key of a contact or iteration record is looked up in the word list (record/word_table.hpp) when this file
+// Every key of a contact or iteration record is looked up in the word list (formats/word_table.hpp) when this file
 // compiles: a key the list does not hold for that item does not build.
 
 consteval std::string_view contact_key(std::string_view word) {  // a prepared contact's

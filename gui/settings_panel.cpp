@@ -6,7 +6,7 @@
 #include "formats/atomic_file.hpp"
 #include "formats/input_error.hpp"
 #include "model/derivation_view.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/settings_names.hpp"
 
 #include <imgui.h>
 
@@ -35,8 +35,8 @@ void set(model::Session& session, UiState& state, model::ActionHost& host, const
 
 template <typename Enum, std::size_t N>
 void enum_combo(model::Session& session, UiState& state, model::ActionHost& host, const char* label,
-                const std::string& name, const NameTable<Enum, N>& names, Enum current) {
-    const std::string shown(name_of(names, current));
+                const std::string& name, const formats::NameTable<Enum, N>& names, Enum current) {
+    const std::string shown(formats::name_of(names, current));
     if (!ImGui::BeginCombo(labelled(label).c_str(), shown.c_str())) return;
     for (const auto& [value, text] : names)
         if (ImGui::Selectable(std::string(text).c_str(), value == current) && value != current)
@@ -79,11 +79,13 @@ void method_setting(model::Session& session, UiState& state, model::ActionHost& 
     if (key == "iterations_per_contact")
         integer_field(session, state, host, "iterations/contact", name, s.iterations_per_contact);
     if (key == "worst_first_search")
-        enum_combo(session, state, host, "worst-first search", name, worst_first_search_names, s.worst_first_search);
+        enum_combo(session, state, host, "worst-first search", name, formats::worst_first_search_names,
+                   s.worst_first_search);
     if (key == "sliding_friction")
-        enum_combo(session, state, host, "sliding friction", name, sliding_friction_names, s.sliding_friction);
+        enum_combo(session, state, host, "sliding friction", name, formats::sliding_friction_names, s.sliding_friction);
     if (key == "angular_limit.policy")
-        enum_combo(session, state, host, "angular limit", name, angular_limit_policy_names, s.angular_limit.policy);
+        enum_combo(session, state, host, "angular limit", name, formats::angular_limit_policy_names,
+                   s.angular_limit.policy);
     if (key == "angular_limit.factor") number_field(session, state, host, "limit factor", name, s.angular_limit.factor);
     if (key == "relaxation.fraction")
         number_field(session, state, host, "relaxation fraction", name, s.relaxation.fraction);
@@ -122,12 +124,14 @@ void draw_settings(model::Session& session, UiState& state, model::ActionHost& h
                 set(session, state, host, "preset", std::string(name));
         ImGui::EndCombo();
     }
-    enum_combo(session, state, host, "phase order", "phase_order", phase_order_names, s.phase_order);
-    enum_combo(session, state, host, "velocity method", "velocity_method", velocity_method_names, s.velocity_method);
+    enum_combo(session, state, host, "phase order", "phase_order", formats::phase_order_names, s.phase_order);
+    enum_combo(session, state, host, "velocity method", "velocity_method", formats::velocity_method_names,
+               s.velocity_method);
     // A velocity method that owns the whole step runs no position phase: the choice is kept but not used.
     const bool owns_step = method_row(s.velocity_method).scope == MethodScope::whole_step;
     if (owns_step) ImGui::BeginDisabled();
-    enum_combo(session, state, host, "position method", "position_method", position_method_names, s.position_method);
+    enum_combo(session, state, host, "position method", "position_method", formats::position_method_names,
+               s.position_method);
     if (owns_step) ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip("%s", std::string(method_row(position_method_in_effect(s)).description).c_str());
@@ -175,7 +179,7 @@ void draw_settings(model::Session& session, UiState& state, model::ActionHost& h
     bool from_acceleration = s.velocity_from_acceleration;
     if (ImGui::Checkbox("velocity from acceleration", &from_acceleration))
         set(session, state, host, "velocity_from_acceleration", from_acceleration ? "true" : "false");
-    enum_combo(session, state, host, "orientation update", "orientation_update", orientation_update_names,
+    enum_combo(session, state, host, "orientation update", "orientation_update", formats::orientation_update_names,
                s.orientation_update);
     ImGui::PopItemWidth();
     ImGui::TextDisabled("A change re-runs %s.", session.kind() == model::SourceKind::scene_file  ? "the scene"

@@ -3,7 +3,7 @@
 // body, which gathers its contacts' forces into a 6x6 block and moves by the block's solution (the primal update);
 // then every contact's lambda and stiffness are updated (the dual update). Each of the two is an iteration of the
 // velocity phase: a body visit (`body`, the contacts it gathered, its block and its move) or a contact's dual update
-// (its constraint, force, and new lambda and k). The words are in record/word_table.hpp; docs/methods.md derives
+// (its constraint, force, and new lambda and k). The words are in formats/word_table.hpp; docs/methods.md derives
 // them.
 //
 // What the method reports (plain numbers, when the recorder keeps the frame) and the records built from it are the

@@ -14,7 +14,7 @@ namespace {
 const std::vector<Annotation> rows = [] {
     std::vector<Annotation> names;
     std::set<std::string_view> seen;
-    for (const words::Word& w : words::all())
+    for (const formats::words::Word& w : formats::words::all())
         if (seen.insert(w.quantity).second) names.push_back(w);
     return names;
 }();
@@ -95,9 +95,9 @@ const Annotation* quantity_of_path(std::string_view path, ItemKind item) {
         return kind == 'C' ? nullptr : find_annotation(kind == 'P' ? "penetration_update" : "velocity_update");
     // Every key inside an item is a word of its own, nested ones by their whole path ("rewind.time"); an element
     // of a list a table shows row by row (AVBD's gathered contacts) by its list's path.
-    const words::Word* element = listed != keys ? words::find(listed, kind) : nullptr;
-    if (element && element->role != words::Role::context) return element;
-    return words::find(keys, kind);
+    const formats::words::Word* element = listed != keys ? formats::words::find(listed, kind) : nullptr;
+    if (element && element->role != formats::words::Role::context) return element;
+    return formats::words::find(keys, kind);
 }
 
 }  // namespace impulse::explain

@@ -1,5 +1,5 @@
 #pragma once
-// The derivation vocabulary as the inspector reads it: the word list of engine/record/words.hpp, one row per
+// The derivation vocabulary as the inspector reads it: the word list of formats/words.hpp, one row per
 // name (its key in the trace, a table row's name, a lesson's value), with the formula that makes it, the
 // chapter's equation, its unit, one line on what it means, the derivation step that computes it, and the
 // quantities it is computed from. `resolve --explain`, the inspector's tables, the lessons' units and what a
@@ -7,7 +7,7 @@
 // question hides its quantity and everything computed from it (`consumers`), so the inputs written here are
 // what predict-then-see rests on: a missing input is an answer shown too early.
 
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
 #include <string>
 #include <string_view>
@@ -15,8 +15,8 @@
 
 namespace impulse::explain {
 
-// A row of the word list (engine/record/words.hpp): the inspector reads the one table every layer reads.
-using Annotation = words::Word;
+// A row of the word list (formats/words.hpp): the inspector reads the one table every layer reads.
+using Annotation = formats::words::Word;
 
 // Every name once (the first word of a name, where items of different kinds hold different words of it), in
 // the order of the derivation.

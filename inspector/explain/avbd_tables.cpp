@@ -1,7 +1,7 @@
 #include "explain/avbd_tables.hpp"
 
 #include "explain/format.hpp"
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
 #include <algorithm>
 
@@ -10,16 +10,16 @@ namespace impulse::explain {
 namespace {
 
 // The word of a velocity iteration named `key` (AVBD's position_change.* are not step 8's).
-const words::Word& word(std::string_view key) {
-    const words::Word* w = words::find(key, 'V');
-    return w ? *w : *words::find(key);
+const formats::words::Word& word(std::string_view key) {
+    const formats::words::Word* w = formats::words::find(key, 'V');
+    return w ? *w : *formats::words::find(key);
 }
 
 // A row with the word's formula, equation and meaning; `label` names it ("gathered[0].force"), `note` precedes the
 // meaning ("contact 3, its body 0").
 Row row(std::string_view key, std::string label, std::string shown, std::string exact_text,
         std::string_view note = {}) {
-    const words::Word& w = word(key);
+    const formats::words::Word& w = word(key);
     std::string meaning = note.empty() ? std::string(w.meaning) : std::string(note) + ": " + std::string(w.meaning);
     return {std::move(label),        std::move(shown),     std::string(w.formula),
             std::string(w.equation), std::move(meaning),   {},
@@ -72,7 +72,7 @@ double largest(const std::vector<AvbdContactRows>& rows, Vec3 AvbdContactRows::*
 
 std::vector<StepTable> body_visit_tables(const BodyVisitRecord& v) {
     std::vector<StepTable> tables;
-    StepTable constraint{std::string(words::step::constraint),
+    StepTable constraint{std::string(formats::words::step::constraint),
                          "constraint — each of the body's contacts, where the bodies stand now",
                          {}};
     const double c_scale = largest(v.gathered, &AvbdContactRows::constraint);
@@ -81,7 +81,7 @@ std::vector<StepTable> body_visit_tables(const BodyVisitRecord& v) {
                                            v.gathered[i].constraint, c_scale, contact_note(v.gathered[i])));
     tables.push_back(std::move(constraint));
 
-    StepTable force{std::string(words::step::force), "force — each contact's augmented-Lagrangian force", {}};
+    StepTable force{std::string(formats::words::step::force), "force — each contact's augmented-Lagrangian force", {}};
     const double f_scale =
         std::max(largest(v.gathered, &AvbdContactRows::force), largest(v.gathered, &AvbdContactRows::lambda));
     for (std::size_t i = 0; i < v.gathered.size(); ++i) {
@@ -94,12 +94,12 @@ std::vector<StepTable> body_visit_tables(const BodyVisitRecord& v) {
     tables.push_back(std::move(force));
 
     tables.push_back(
-        {std::string(words::step::block_matrix),
+        {std::string(formats::words::step::block_matrix),
          "block_matrix — the body's 6×6 block H",
          {row("block_matrix", "block_matrix", with_unit(matrix6(v.block_matrix, false), word("block_matrix").unit),
               matrix6(v.block_matrix, true))}});
     tables.push_back(
-        {std::string(words::step::block_force),
+        {std::string(formats::words::step::block_force),
          "block_force — the right-hand side f",
          {row("block_force", "block_force", with_unit("(" + six(v.block_force, false) + ")", word("block_force").unit),
               "(" + six(v.block_force, true) + ")")}});
@@ -109,7 +109,7 @@ std::vector<StepTable> body_visit_tables(const BodyVisitRecord& v) {
     Vec6 displacement;
     displacement << v.displacement.linear, v.displacement.angular;
     tables.push_back(
-        {std::string(words::step::position_change),
+        {std::string(formats::words::step::position_change),
          "position_change — the block solve H Δx = f moves the body",
          {vec3_row("position_change.linear_change", "position_change.linear_change", v.position_change.linear, move),
           vec3_row("position_change.angular_change", "position_change.angular_change", v.position_change.angular, turn),
@@ -124,15 +124,15 @@ std::vector<StepTable> dual_update_tables(const DualUpdateRecord& d) {
     const double f_scale = std::max(
         {c.force.cwiseAbs().maxCoeff(), c.lambda.cwiseAbs().maxCoeff(), d.updated.lambda.cwiseAbs().maxCoeff()});
     return {
-        {std::string(words::step::constraint),
+        {std::string(formats::words::step::constraint),
          "constraint — at the bodies' positions after the sweep",
          {vec3_row("constraint", "constraint", c.constraint, c.constraint.cwiseAbs().maxCoeff())}},
-        {std::string(words::step::force),
+        {std::string(formats::words::step::force),
          "force — what the contact exerts there",
          {vec3_row("lambda", "lambda", c.lambda, f_scale), stiffness_row("stiffness", "stiffness", c.stiffness),
           row("friction", "friction", number(c.friction), number(c.friction)),
           vec3_row("force", "force", c.force, f_scale)}},
-        {std::string(words::step::dual_update),
+        {std::string(formats::words::step::dual_update),
          "dual_update — λ and k for the next sweep",
          {vec3_row("dual_update.lambda", "dual_update.lambda", d.updated.lambda, f_scale),
           stiffness_row("dual_update.stiffness", "dual_update.stiffness", d.updated.stiffness)}},
@@ -162,7 +162,8 @@ StepTable avbd_choice_table(const VelocityIteration& it, const ResolverSettings&
                         {},
                         "body",
                         body});
-        return {std::string(words::step::choice), "choice — " + place + " visits body " + body, std::move(rows)};
+        return {std::string(formats::words::step::choice), "choice — " + place + " visits body " + body,
+                std::move(rows)};
     }
     const std::string contact = std::to_string(it.contact);
     rows.push_back({"contact",
@@ -173,7 +174,8 @@ StepTable avbd_choice_table(const VelocityIteration& it, const ResolverSettings&
                     {},
                     "contact",
                     contact});
-    return {std::string(words::step::choice), "choice — " + place + " updates contact " + contact, std::move(rows)};
+    return {std::string(formats::words::step::choice), "choice — " + place + " updates contact " + contact,
+            std::move(rows)};
 }
 
 std::vector<StepTable> avbd_iteration_tables(const VelocityIteration& it) {
@@ -184,9 +186,10 @@ std::vector<StepTable> avbd_iteration_tables(const VelocityIteration& it) {
 
 std::vector<std::string_view> avbd_iteration_steps(const VelocityIteration& it) {
     if (it.body_visit)
-        return {words::step::constraint, words::step::force, words::step::block_matrix, words::step::block_force,
-                words::step::position_change};
-    if (it.dual_update) return {words::step::constraint, words::step::force, words::step::dual_update};
+        return {formats::words::step::constraint, formats::words::step::force, formats::words::step::block_matrix,
+                formats::words::step::block_force, formats::words::step::position_change};
+    if (it.dual_update)
+        return {formats::words::step::constraint, formats::words::step::force, formats::words::step::dual_update};
     return {};
 }
 

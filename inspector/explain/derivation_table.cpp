@@ -3,8 +3,8 @@
 #include "explain/annotations.hpp"
 #include "explain/avbd_tables.hpp"
 #include "explain/format.hpp"
-#include "record/words.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/words.hpp"
+#include "formats/settings_names.hpp"
 
 #include <algorithm>
 #include <map>
@@ -155,7 +155,7 @@ std::string desired_formula(const DesiredDeltaVelocity& d, bool accumulating, bo
 }
 
 StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false, bool warm_start = false) {
-    Table t(std::string(words::step::desired_delta_velocity),
+    Table t(std::string(formats::words::step::desired_delta_velocity),
             "desired_delta_velocity — the velocity change the impulse must make");
     t.row("separating_velocity", d.separating_velocity);
     t.row("restitution", d.restitution);
@@ -177,7 +177,7 @@ StepTable desired_table(const DesiredDeltaVelocity& d, bool accumulating = false
 
 std::vector<StepTable> updates_tables(const std::string& what, std::vector<Row> rows) {
     if (rows.empty()) return {};
-    return {StepTable{std::string(words::step::updates), "updates — " + what, std::move(rows)}};
+    return {StepTable{std::string(formats::words::step::updates), "updates — " + what, std::move(rows)}};
 }
 
 // A row of the updates table: contact `contact`'s values before → after, each at the scale of the pair.
@@ -217,7 +217,7 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
     std::vector<StepTable> tables;
     const Mat3* basis = &d.basis.contact_to_world;
 
-    Table basis_step(std::string(words::step::basis), "basis — contact coordinates from the normal");
+    Table basis_step(std::string(formats::words::step::basis), "basis — contact coordinates from the normal");
     basis_step.row("swapped", yes_no(d.swapped, "yes: given with the world as body 0, exchanged and n reversed", "no"))
         .row("normal", d.basis.normal())
         .row("tangent_seed", std::string(d.basis.seed == TangentSeed::world_x ? "world X" : "world Y"))
@@ -226,13 +226,13 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
         .row("basis", d.basis.contact_to_world);
     tables.push_back(basis_step.done());
 
-    Table relative(std::string(words::step::relative_position), "relative_position — where the contact is on each body",
-                   basis);
+    Table relative(std::string(formats::words::step::relative_position),
+                   "relative_position — where the contact is on each body", basis);
     relative.world_vectors("relative_position", d.relative_position);
     tables.push_back(relative.done());
 
     const UnitImpulseChain& chain = d.unit_impulse_chain;
-    Table unit(std::string(words::step::delta_velocity_per_unit_impulse),
+    Table unit(std::string(formats::words::step::delta_velocity_per_unit_impulse),
                "delta_velocity_per_unit_impulse — linear and angular parts", basis);
     unit.world_vectors("torque_per_unit_impulse",
                        unit_response_field(chain, &UnitImpulseResponse::torque_per_unit_impulse))
@@ -245,7 +245,8 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
         .row("delta_velocity_per_unit_impulse", chain.delta_velocity_per_unit_impulse);
     tables.push_back(unit.done());
 
-    Table velocity(std::string(words::step::contact_velocity), "contact_velocity — how the contact points move", basis);
+    Table velocity(std::string(formats::words::step::contact_velocity),
+                   "contact_velocity — how the contact points move", basis);
     velocity.world_vectors("point_velocity", d.velocity_terms.point_velocity)
         .per_body("tangential_acceleration_velocity", d.velocity_terms.tangential_acceleration_velocity)
         .contact_vector("contact_velocity", d.velocity_terms.contact_velocity,
@@ -262,13 +263,13 @@ std::vector<StepTable> preparation_tables(const ContactPreparation& d) {
 std::vector<StepTable> position_iteration_tables(const PositionIteration& it, const Mat3* basis) {
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
-        const std::string method(name_of(position_method_names, r->method));
+        const std::string method(formats::name_of(formats::position_method_names, r->method));
         const bool linear_only = r->method == PositionMethod::linear_projection;
         // The split impulse records its pushes in this vocabulary: an impulse, and the moves it made.
         const bool split = r->method == PositionMethod::split_impulse;
         if (r->rewind) {
             const Rewind& w = *r->rewind;
-            Table rewind(std::string(words::step::rewind),
+            Table rewind(std::string(formats::words::step::rewind),
                          "rewind — move the bodies back along their paths (velocity_based)", basis);
             rewind.row("rewind.closing_velocity", w.closing_velocity)
                 .row("rewind.time", w.time, std::nullopt, {},
@@ -279,7 +280,7 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
             tables.push_back(rewind.done());
         }
         if (projected(*r)) {
-            Table inertia(std::string(words::step::penetration_inertia),
+            Table inertia(std::string(formats::words::step::penetration_inertia),
                           "penetration_inertia — how readily each body gives way (" + method + ")");
             // The split impulse pushes with an impulse (N·s), not a distance: its own word.
             inertia.row("penetration", r->penetration)
@@ -292,13 +293,13 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
                      linear_only ? "Σ linear" : "");
             tables.push_back(inertia.done());
 
-            Table moves(std::string(words::step::move_split),
+            Table moves(std::string(formats::words::step::move_split),
                         "move_split — how much of the move is linear, how much angular");
             bool limited = false;
             if (const auto& limit = r->angular_limit) {
                 moves.per_body("angular_limit.linear_move_before", limit->before.linear_move)
                     .per_body("angular_limit.angular_move_before", limit->before.angular_move);
-                const std::string policy(name_of(angular_limit_policy_names, limit->policy));
+                const std::string policy(formats::name_of(formats::angular_limit_policy_names, limit->policy));
                 const std::string maximum_formula =
                     limit->policy == AngularLimitPolicy::fixed       ? "angular_limit.factor"
                     : limit->policy == AngularLimitPolicy::lever_arm ? "factor × |q_rel − (q_rel · n) n|"
@@ -330,7 +331,7 @@ std::vector<StepTable> position_iteration_tables(const PositionIteration& it, co
             tables.push_back(moves.done());
         }
 
-        Table change(std::string(words::step::position_change), "position_change — the move applied", basis);
+        Table change(std::string(formats::words::step::position_change), "position_change — the move applied", basis);
         // Velocity-based resolution applies the rewind and the projection together.
         change
             .world_vectors("position_change.linear_change", r->change.linear_change,
@@ -360,7 +361,7 @@ std::string sweep_text(const SweepPlace& sweep, const ResolverSettings& settings
     if (method_row(settings.velocity_method).scope == MethodScope::whole_step &&
         settings.velocity_method != VelocityMethod::avbd && sweep.stage != SolverStage::restitution)
         text = "sub-step " + std::to_string(sweep.substep) + " · ";
-    text += std::string(name_of(solver_stage_names, sweep.stage));
+    text += std::string(formats::name_of(formats::solver_stage_names, sweep.stage));
     if (sweep.stage == SolverStage::solve || sweep.stage == SolverStage::relax || sweep.stage == SolverStage::push ||
         sweep.stage == SolverStage::stabilize || sweep.stage == SolverStage::dual)
         text += " sweep " + std::to_string(sweep.pass);
@@ -393,8 +394,8 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
     if (is_avbd_visit(it)) return avbd_iteration_tables(it);
     std::vector<StepTable> tables;
     if (const auto& r = it.resolution) {
-        Table velocity(std::string(words::step::contact_velocity), "contact_velocity — as the resolver has it now",
-                       basis);
+        Table velocity(std::string(formats::words::step::contact_velocity),
+                       "contact_velocity — as the resolver has it now", basis);
         // The book's resolver keeps it as bookkeeping (the prepared value, updated by each iteration that
         // changed a body); the accumulating solvers read it from the bodies at every visit.
         velocity.contact_vector("contact_velocity", r->contact_velocity,
@@ -405,22 +406,22 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         const bool warm_start = it.sweep && it.sweep->stage == SolverStage::warm_start;
         tables.push_back(desired_table(r->desired_terms, accumulating, warm_start));
         if (const auto& a = it.accumulated) {
-            Table total(std::string(words::step::accumulated),
+            Table total(std::string(formats::words::step::accumulated),
                         "accumulated — the running total, kept within its limits", basis);
             total.contact_vector("accumulated.before", a->before)
                 .contact_vector("accumulated.unclamped", a->unclamped,
                                 warm_start ? "λ, last frame's total re-applied"
                                            : "λ + this visit's raw impulse (normal: Δv over the normal response; "
                                              "sliding: −K_tt⁻¹ v_t)")
-                .row("accumulated.clamp", std::string(name_of(impulse_clamp_names, a->clamp)))
+                .row("accumulated.clamp", std::string(formats::name_of(formats::impulse_clamp_names, a->clamp)))
                 .contact_vector("accumulated.after", a->after, "clamp(accumulated.unclamped)");
             tables.push_back(total.done());
         }
 
         const Impulse& g = r->impulse_terms;
-        Table impulse(std::string(words::step::impulse), "impulse — in contact and world coordinates", basis);
+        Table impulse(std::string(formats::words::step::impulse), "impulse — in contact and world coordinates", basis);
         impulse.row(
-            "impulse_model", std::string(name_of(impulse_model_names, g.impulse_model)), std::nullopt,
+            "impulse_model", std::string(formats::name_of(formats::impulse_model_names, g.impulse_model)), std::nullopt,
             accumulating ? "μ = 0: frictionless; sliding when the clamp held friction to its cone; else static" : "");
         if (const auto& s = g.friction_solve) {
             impulse.row("friction_solve.delta_velocity_matrix", s->delta_velocity_matrix)
@@ -446,7 +447,8 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
         impulse.world_vector("impulse_world", g.impulse_world);
         tables.push_back(impulse.done());
 
-        Table change(std::string(words::step::velocity_change), "velocity_change — the impulse applied", basis);
+        Table change(std::string(formats::words::step::velocity_change), "velocity_change — the impulse applied",
+                     basis);
         change.world_vectors("impulsive_torque", r->velocity_change_terms.impulsive_torque)
             .world_vectors("velocity_change", r->velocity_change_terms.velocity_change)
             .world_vectors("rotation_change", r->velocity_change_terms.rotation_change);
@@ -471,18 +473,20 @@ std::vector<StepTable> velocity_iteration_tables(const VelocityIteration& it, co
 }
 
 std::vector<std::string_view> preparation_steps(const ContactPreparation&) {
-    return {words::step::basis, words::step::relative_position, words::step::delta_velocity_per_unit_impulse,
-            words::step::contact_velocity, words::step::desired_delta_velocity};
+    return {formats::words::step::basis, formats::words::step::relative_position,
+            formats::words::step::delta_velocity_per_unit_impulse, formats::words::step::contact_velocity,
+            formats::words::step::desired_delta_velocity};
 }
 
 std::vector<std::string_view> position_iteration_steps(const PositionIteration& it) {
     std::vector<std::string_view> steps;
     if (const auto& r = it.resolution) {
-        if (r->rewind) steps.push_back(words::step::rewind);
-        if (projected(*r)) steps.insert(steps.end(), {words::step::penetration_inertia, words::step::move_split});
-        steps.push_back(words::step::position_change);
+        if (r->rewind) steps.push_back(formats::words::step::rewind);
+        if (projected(*r))
+            steps.insert(steps.end(), {formats::words::step::penetration_inertia, formats::words::step::move_split});
+        steps.push_back(formats::words::step::position_change);
     }
-    if (!it.updates.empty()) steps.push_back(words::step::updates);
+    if (!it.updates.empty()) steps.push_back(formats::words::step::updates);
     return steps;
 }
 
@@ -490,11 +494,12 @@ std::vector<std::string_view> velocity_iteration_steps(const VelocityIteration& 
     if (is_avbd_visit(it)) return avbd_iteration_steps(it);
     std::vector<std::string_view> steps;
     if (it.resolution) {
-        steps.insert(steps.end(), {words::step::contact_velocity, words::step::desired_delta_velocity});
-        if (it.accumulated) steps.push_back(words::step::accumulated);
-        steps.insert(steps.end(), {words::step::impulse, words::step::velocity_change});
+        steps.insert(steps.end(),
+                     {formats::words::step::contact_velocity, formats::words::step::desired_delta_velocity});
+        if (it.accumulated) steps.push_back(formats::words::step::accumulated);
+        steps.insert(steps.end(), {formats::words::step::impulse, formats::words::step::velocity_change});
     }
-    if (!it.updates.empty()) steps.push_back(words::step::updates);
+    if (!it.updates.empty()) steps.push_back(formats::words::step::updates);
     return steps;
 }
 

@@ -2,7 +2,7 @@
 
 #include "explain/format.hpp"
 #include "explain/text_table.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/settings_names.hpp"
 
 #include <string>
 
@@ -35,7 +35,7 @@ std::string feature_text(const Feature& f) {
 // "made by box_half_space: vertex 3 of body 0 against the ground plane"
 std::string origin_text(const ContactOrigin& o) {
     if (o.test == CollisionTest::explicit_contact) return "written in the file";
-    std::string text = "made by " + std::string(name_of(collision_test_names, o.test)) + ": " +
+    std::string text = "made by " + std::string(formats::name_of(formats::collision_test_names, o.test)) + ": " +
                        feature_text(o.features[0]) + " of body 0 against ";
     text += o.features[1].kind == FeatureKind::plane ? feature_text(o.features[1])
                                                      : feature_text(o.features[1]) + " of body 1";
@@ -47,11 +47,11 @@ std::string describe_settings(const ResolverSettings& s) {
     std::string text =
         "preset " + s.preset + ": " +
         (s.phase_order == PhaseOrder::positions_first ? "positions then velocities" : "velocities then positions") +
-        ", " + std::string(name_of(position_method_names, position_method_in_effect(s))) + " (angular limit " +
-        std::string(name_of(angular_limit_policy_names, s.angular_limit.policy));
+        ", " + std::string(formats::name_of(formats::position_method_names, position_method_in_effect(s))) +
+        " (angular limit " + std::string(formats::name_of(formats::angular_limit_policy_names, s.angular_limit.policy));
     if (s.angular_limit.policy != AngularLimitPolicy::none) text += " " + number(s.angular_limit.factor);
-    text += "), " + std::string(name_of(velocity_method_names, s.velocity_method)) + " velocities, ε " +
-            number(s.position_epsilon) + " m / " + number(s.velocity_epsilon) + " m/s";
+    text += "), " + std::string(formats::name_of(formats::velocity_method_names, s.velocity_method)) +
+            " velocities, ε " + number(s.position_epsilon) + " m / " + number(s.velocity_epsilon) + " m/s";
     return text;
 }
 
@@ -75,8 +75,8 @@ std::string stop_text(const PhaseOutcome& o) {
 
 void write_position_phase(std::ostream& out, const Trace& trace, const FrameRecord& frame) {
     // (A velocity method that owns the whole step runs no position method: `none`.)
-    out << "\n== Position phase: " << name_of(position_method_names, position_method_in_effect(trace.scene.settings))
-        << " ==\n";
+    out << "\n== Position phase: "
+        << formats::name_of(formats::position_method_names, position_method_in_effect(trace.scene.settings)) << " ==\n";
     for (const PositionIteration& it : frame.position.iterations) {
         out << "\nIteration " << it.iteration << (it.pass ? " (pass " + std::to_string(*it.pass) + ")" : "");
         if (it.slop)  // the split impulse pushes every contact in turn, aiming short of the slop
@@ -91,7 +91,8 @@ void write_position_phase(std::ostream& out, const Trace& trace, const FrameReco
 }
 
 void write_velocity_phase(std::ostream& out, const Trace& trace, const FrameRecord& frame) {
-    out << "\n== Velocity phase: " << name_of(velocity_method_names, trace.scene.settings.velocity_method) << " ==\n";
+    out << "\n== Velocity phase: "
+        << formats::name_of(formats::velocity_method_names, trace.scene.settings.velocity_method) << " ==\n";
     for (const VelocityIteration& it : frame.velocity.iterations) {
         if (it.sweep)
             out << "\nIteration " << it.iteration << " · " << sweep_text(*it.sweep, trace.scene.settings)

@@ -1,6 +1,6 @@
 #include "model/navigator.hpp"
 
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
 #include "formats/input_error.hpp"
 #include "formats/suggest.hpp"
@@ -71,7 +71,7 @@ GotoSpec parse_goto(std::string_view text, std::string_view where) {
             spec.step = std::string(value);
             // A step's name from before trace format 2 (velocity_per_unit_impulse, accumulated_impulse) reads as
             // today's (docs/trace-format.md).
-            for (const words::StepRename& r : words::step_renames())
+            for (const formats::words::StepRename& r : formats::words::step_renames())
                 if (*spec.step == r.old_name) spec.step = std::string(r.new_name);
         } else
             throw formats::InputError(std::string(where), "unknown part \"" + std::string(name) +
@@ -172,9 +172,9 @@ std::optional<int> step_named(const Trace& trace, const Cursor& cursor, const st
     for (std::size_t i = 0; i < steps.size(); ++i)
         if (steps[i] == name) return static_cast<int>(i);
     const std::string wanted = name.substr(0, name.find('['));
-    std::vector<const words::Word*> candidates;
+    std::vector<const formats::words::Word*> candidates;
     for (const bool whole : {true, false}) {
-        for (const words::Word& w : words::all())
+        for (const formats::words::Word& w : formats::words::all())
             if ((whole ? plain_name(w.quantity) : last_part(w.quantity)) == wanted) candidates.push_back(&w);
         if (!candidates.empty()) break;
     }
@@ -236,7 +236,7 @@ Cursor resolve_goto(const Trace& trace, const GotoSpec& spec, std::string_view w
              return all;
          }())
         for (const std::string_view s : step_names(trace, c)) names.emplace_back(s), stage_of.push_back(c.stage);
-    for (const words::Word& w : words::all()) {
+    for (const formats::words::Word& w : formats::words::all()) {
         names.push_back(plain_name(w.quantity)), stage_of.push_back(std::nullopt);
         names.push_back(last_part(w.quantity)), stage_of.push_back(std::nullopt);
     }

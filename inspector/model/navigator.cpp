@@ -1,6 +1,6 @@
 #include "model/navigator.hpp"
 
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
 #include "explain/avbd_tables.hpp"
 #include "explain/format.hpp"
@@ -45,7 +45,8 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
              chosen},
             {what, v, "", "", "its value now, after the visits before this one", {}, what, v_exact},
         };
-        return {std::string(words::step::choice), "choice — " + place + " visits contact " + chosen, std::move(rows)};
+        return {std::string(formats::words::step::choice), "choice — " + place + " visits contact " + chosen,
+                std::move(rows)};
     }
     std::vector<Row> rows{
         {"iteration", count + pass, "", "", "iterations count from 0 within the phase", {}, "iteration", count + pass},
@@ -67,7 +68,7 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
          "epsilon",
          e_exact},
     };
-    return {std::string(words::step::choice), "choice — iteration " + count + " picks contact " + chosen,
+    return {std::string(formats::words::step::choice), "choice — iteration " + count + " picks contact " + chosen,
             std::move(rows)};
 }
 
@@ -255,7 +256,7 @@ std::vector<std::string_view> step_names(const Trace& trace, const Cursor& c) {
     const FrameRecord& frame = frame_at(trace, c);
     const auto item = static_cast<std::size_t>(c.item);
     if (c.stage == Stage::preparation) return explain::preparation_steps(frame.contacts[item]);
-    std::vector<std::string_view> steps{words::step::choice};
+    std::vector<std::string_view> steps{formats::words::step::choice};
     for (const std::string_view s : c.stage == Stage::position
                                         ? explain::position_iteration_steps(frame.position.iterations[item])
                                         : explain::velocity_iteration_steps(frame.velocity.iterations[item]))

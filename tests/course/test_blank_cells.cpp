@@ -25,7 +25,7 @@
 #include "formats/json_text.hpp"
 #include "formats/trace_json.hpp"
 #include "course/lesson.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/settings_names.hpp"
 
 #include "support/opened.hpp"
 #include "support/impulse.hpp"
@@ -68,12 +68,12 @@ formats::json json_of(const Mat3& m) {
 }
 
 template <typename Enum, std::size_t N>
-std::string name(const NameTable<Enum, N>& table, Enum value) {
-    return std::string(name_of(table, value));
+std::string name(const formats::NameTable<Enum, N>& table, Enum value) {
+    return std::string(formats::name_of(table, value));
 }
 
 template <typename Enum, std::size_t N>
-Enum named(const NameTable<Enum, N>& table, const formats::json& text) {
+Enum named(const formats::NameTable<Enum, N>& table, const formats::json& text) {
     for (const auto& [value, word] : table)
         if (word == text.get<std::string>()) return value;
     FAIL("no such name: " << text.dump());
@@ -154,8 +154,9 @@ private:
     // reference engine's).
     SlidingFriction sliding_friction() const {
         const formats::json& settings = sheet_["settings"];
-        return settings.contains("sliding_friction") ? named(sliding_friction_names, settings["sliding_friction"])
-                                                     : SlidingFriction::reference;
+        return settings.contains("sliding_friction")
+                   ? named(formats::sliding_friction_names, settings["sliding_friction"])
+                   : SlidingFriction::reference;
     }
 
     void put(const std::string& path, formats::json value) { out_[path] = std::move(value); }
@@ -260,7 +261,7 @@ private:
         if (step == "basis") {
             const Basis b = basis(vec(k(at(c, "normal"))));  // step 1
             put(at(c, "basis"), json_of(b.contact_to_world));
-            put(at(c, "tangent_seed"), name(tangent_seed_names, b.seed));
+            put(at(c, "tangent_seed"), name(formats::tangent_seed_names, b.seed));
         } else if (step == "relative_position") {
             PerBody<Vec3> centres;
             for (std::size_t i = 0; i < 2; ++i)
@@ -408,10 +409,11 @@ private:
             }
             const std::string limit = at(p, "angular_limit");
             if (has(at(limit, "policy"))) {
-                const auto policy = named(angular_limit_policy_names, k(at(limit, "policy")));
-                const OrientationUpdate update = policy == AngularLimitPolicy::angle
-                                                     ? named(orientation_update_names, k("settings.orientation_update"))
-                                                     : OrientationUpdate::first_order;
+                const auto policy = named(formats::angular_limit_policy_names, k(at(limit, "policy")));
+                const OrientationUpdate update =
+                    policy == AngularLimitPolicy::angle
+                        ? named(formats::orientation_update_names, k("settings.orientation_update"))
+                        : OrientationUpdate::first_order;
                 const LimitedMoves limited = angular_limit(moves, {policy, number(at(limit, "factor"))}, normal,
                                                            relative_positions(c, bodies), chain(), update);
                 const AngularLimit& a = limited.limit;
@@ -509,7 +511,7 @@ private:
                 basis_of(k(at(c, "basis"))), relative_positions(c, bodies), masses(bodies),
                 vec(k(at(v, "contact_velocity"))), number(at(v, "desired_delta_velocity")),
                 number(at(c, "delta_velocity_per_unit_impulse")), number(at(c, "friction")), sliding_friction());
-            put(at(v, "impulse_model"), name(impulse_model_names, g.impulse_model));
+            put(at(v, "impulse_model"), name(formats::impulse_model_names, g.impulse_model));
             if (g.friction_solve) {
                 const FrictionSolve& s = *g.friction_solve;
                 const std::string f = at(v, "friction_solve");

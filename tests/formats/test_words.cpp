@@ -1,4 +1,4 @@
-// The word list (engine/record/words.hpp) against everything that spells its words: the committed JSON Schema
+// The word list (formats/words.hpp) against everything that spells its words: the committed JSON Schema
 // (every key in both, of the same kind), the keys and kinds a trace writes, the committed docs, and format 1's
 // traces, which still open with the renames.
 
@@ -10,9 +10,9 @@
 #include "formats/trace_format1.hpp"
 #include "formats/trace_json.hpp"
 #include "record/trace_recorder.hpp"
-#include "record/words.hpp"
+#include "formats/words.hpp"
 #include "resolver/resolver.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/settings_names.hpp"
 #include "settings/settings.hpp"
 #include "formats/settings_json.hpp"
 
@@ -35,42 +35,44 @@ std::string file_text(const std::string& path) {
     return text.str();
 }
 
-using KeyKinds = std::map<std::string, words::Kind>;
+using KeyKinds = std::map<std::string, formats::words::Kind>;
 
 // The kind the schema gives a property: its $ref's definition, or its type.
-words::Kind schema_kind(const formats::json& property) {
+formats::words::Kind schema_kind(const formats::json& property) {
     if (property.contains("$ref")) {
         const std::string ref = property["$ref"].get<std::string>();
         const std::string name = ref.substr(ref.rfind('/') + 1);
-        if (name == "vec3") return words::Kind::vec3;
-        if (name == "vec2") return words::Kind::vec2;
-        if (name == "mat3") return words::Kind::mat3;
-        if (name == "vec6") return words::Kind::vec6;
-        if (name == "mat6") return words::Kind::mat6;
-        if (name.starts_with("per_body_vec3")) return words::Kind::per_body_vec3;
-        if (name.starts_with("per_body_number")) return words::Kind::per_body_number;
-        if (name == "per_body_bool") return words::Kind::per_body_bool;
-        return words::Kind::object;  // rewind, angular_limit, friction_solve, origin: objects of words
+        if (name == "vec3") return formats::words::Kind::vec3;
+        if (name == "vec2") return formats::words::Kind::vec2;
+        if (name == "mat3") return formats::words::Kind::mat3;
+        if (name == "vec6") return formats::words::Kind::vec6;
+        if (name == "mat6") return formats::words::Kind::mat6;
+        if (name.starts_with("per_body_vec3")) return formats::words::Kind::per_body_vec3;
+        if (name.starts_with("per_body_number")) return formats::words::Kind::per_body_number;
+        if (name == "per_body_bool") return formats::words::Kind::per_body_bool;
+        return formats::words::Kind::object;  // rewind, angular_limit, friction_solve, origin: objects of words
     }
     if (property.contains("enum")) {
         const formats::json& first = property["enum"][0];
-        return first.is_string() ? words::Kind::word : first.is_boolean() ? words::Kind::boolean : words::Kind::integer;
+        return first.is_string()    ? formats::words::Kind::word
+               : first.is_boolean() ? formats::words::Kind::boolean
+                                    : formats::words::Kind::integer;
     }
     const formats::json& type = property["type"];
-    if (type == "integer") return words::Kind::integer;
-    if (type == "number") return words::Kind::number;
-    if (type == "boolean") return words::Kind::boolean;
-    if (type == "string") return words::Kind::word;
-    if (type == "object") return words::Kind::object;
+    if (type == "integer") return formats::words::Kind::integer;
+    if (type == "number") return formats::words::Kind::number;
+    if (type == "boolean") return formats::words::Kind::boolean;
+    if (type == "string") return formats::words::Kind::word;
+    if (type == "object") return formats::words::Kind::object;
     if (type == "array") {
         const formats::json& items = property.contains("items") ? property["items"] : formats::json();
         if (items.contains("$ref") || items.contains("type")) {
             const bool objects = items.contains("$ref") || items["type"] == "object";
-            if (objects) return words::Kind::list;
+            if (objects) return formats::words::Kind::list;
         }
-        return words::Kind::bodies;  // [body_index, body_index]
+        return formats::words::Kind::bodies;  // [body_index, body_index]
     }
-    return words::Kind::none;
+    return formats::words::Kind::none;
 }
 
 const formats::json& resolved(const formats::json& schema, const formats::json& property) {
@@ -83,22 +85,24 @@ const formats::json& resolved(const formats::json& schema, const formats::json& 
 void schema_keys(const formats::json& schema, const formats::json& object, const std::string& prefix, KeyKinds& out) {
     for (const auto& [key, property] : object["properties"].items()) {
         const std::string path = prefix + key;
-        const words::Kind kind = schema_kind(property);
+        const formats::words::Kind kind = schema_kind(property);
         out[path] = kind;
-        if (kind == words::Kind::object) schema_keys(schema, resolved(schema, property), path + ".", out);
-        if (kind == words::Kind::list) schema_keys(schema, resolved(schema, property["items"]), path + "[].", out);
+        if (kind == formats::words::Kind::object) schema_keys(schema, resolved(schema, property), path + ".", out);
+        if (kind == formats::words::Kind::list)
+            schema_keys(schema, resolved(schema, property["items"]), path + "[].", out);
     }
 }
 
 KeyKinds word_keys(char item) {
     KeyKinds out;
-    for (const words::Word& w : words::all())
-        if (words::held_by(w, item) && w.kind != words::Kind::none) out[std::string(w.quantity)] = w.kind;
+    for (const formats::words::Word& w : formats::words::all())
+        if (formats::words::held_by(w, item) && w.kind != formats::words::Kind::none)
+            out[std::string(w.quantity)] = w.kind;
     return out;
 }
 
 // The kind of a written value, as the word list names kinds (per body: two elements, one maybe null).
-bool value_is(const formats::json& v, words::Kind kind) {
+bool value_is(const formats::json& v, formats::words::Kind kind) {
     const auto vec = [](const formats::json& x, std::size_t n) {
         return x.is_array() && x.size() == n &&
                std::all_of(x.begin(), x.end(), [](const formats::json& e) { return e.is_number(); });
@@ -108,39 +112,39 @@ bool value_is(const formats::json& v, words::Kind kind) {
                std::all_of(v.begin(), v.end(), [&](const formats::json& e) { return e.is_null() || element(e); });
     };
     switch (kind) {
-        case words::Kind::integer:
+        case formats::words::Kind::integer:
             return v.is_number_integer();
-        case words::Kind::number:
+        case formats::words::Kind::number:
             return v.is_number();
-        case words::Kind::boolean:
+        case formats::words::Kind::boolean:
             return v.is_boolean();
-        case words::Kind::word:
+        case formats::words::Kind::word:
             return v.is_string();
-        case words::Kind::vec2:
+        case formats::words::Kind::vec2:
             return vec(v, 2);
-        case words::Kind::vec3:
+        case formats::words::Kind::vec3:
             return vec(v, 3);
-        case words::Kind::mat3:
+        case formats::words::Kind::mat3:
             return v.is_array() && v.size() == 3 &&
                    std::all_of(v.begin(), v.end(), [&](const formats::json& r) { return vec(r, 3); });
-        case words::Kind::vec6:
+        case formats::words::Kind::vec6:
             return vec(v, 6);
-        case words::Kind::mat6:
+        case formats::words::Kind::mat6:
             return v.is_array() && v.size() == 6 &&
                    std::all_of(v.begin(), v.end(), [&](const formats::json& r) { return vec(r, 6); });
-        case words::Kind::per_body_number:
+        case formats::words::Kind::per_body_number:
             return per_body([](const formats::json& e) { return e.is_number(); });
-        case words::Kind::per_body_vec3:
+        case formats::words::Kind::per_body_vec3:
             return per_body([&](const formats::json& e) { return vec(e, 3); });
-        case words::Kind::per_body_bool:
+        case formats::words::Kind::per_body_bool:
             return per_body([](const formats::json& e) { return e.is_boolean(); });
-        case words::Kind::bodies:
+        case formats::words::Kind::bodies:
             return per_body([](const formats::json& e) { return e.is_number_integer(); });
-        case words::Kind::object:
+        case formats::words::Kind::object:
             return v.is_object();
-        case words::Kind::list:
+        case formats::words::Kind::list:
             return v.is_array();
-        case words::Kind::none:
+        case formats::words::Kind::none:
             return false;
     }
     return false;
@@ -149,14 +153,14 @@ bool value_is(const formats::json& v, words::Kind kind) {
 void check_item(const formats::json& item, char kind, const std::string& prefix, std::set<std::string>& seen) {
     for (const auto& [key, value] : item.items()) {
         const std::string path = prefix + key;
-        const words::Word* w = words::find(path, kind);
+        const formats::words::Word* w = formats::words::find(path, kind);
         CAPTURE(kind);
         CAPTURE(path);
         REQUIRE(w != nullptr);
         CHECK(value_is(value, w->kind));
         seen.insert(path);
-        if (w->kind == words::Kind::object) check_item(value, kind, path + ".", seen);
-        if (w->kind == words::Kind::list)
+        if (w->kind == formats::words::Kind::object) check_item(value, kind, path + ".", seen);
+        if (w->kind == formats::words::Kind::list)
             for (const formats::json& element : value) check_item(element, kind, path + "[].", seen);
     }
 }
@@ -176,7 +180,7 @@ Trace resolved_case(const std::string& name, const std::string& preset, const st
 
 TEST_CASE("the committed trace schema and the word list name the same keys, of the same kinds") {
     const formats::json schema = formats::parse_json_text(file_text(IMPULSE_SOURCE_DIR "/schemas/trace.schema.json"));
-    CHECK(schema["properties"]["version"]["const"] == words::format_version);
+    CHECK(schema["properties"]["version"]["const"] == trace_format_version);
     for (const auto& entry :
          {std::pair{'C', "contact"}, std::pair{'P', "position_iteration"}, std::pair{'V', "velocity_iteration"}}) {
         const char item = entry.first;  // (clang 14 cannot CAPTURE a structured binding)
@@ -216,8 +220,8 @@ formats::json names_in_schema_order(const Table& names, std::string_view skip = 
 TEST_CASE("the schemas take the method table's methods, in its order, and the committed ones name none by hand") {
     const formats::json scene = formats::scene_schema();
     const formats::json trace = formats::trace_schema();
-    const formats::json positions = names_in_schema_order(position_method_names);
-    const formats::json velocities = names_in_schema_order(velocity_method_names);
+    const formats::json positions = names_in_schema_order(formats::position_method_names);
+    const formats::json velocities = names_in_schema_order(formats::velocity_method_names);
     const formats::json& settings = scene["$defs"]["settings"]["properties"];
     CHECK(settings["position_method"]["enum"] == positions);
     CHECK(settings["velocity_method"]["enum"] == velocities);
@@ -225,7 +229,7 @@ TEST_CASE("the schemas take the method table's methods, in its order, and the co
     CHECK(trace["$defs"]["velocity_phase"]["properties"]["method"]["enum"] == velocities);
     // A position iteration is made by a method that iterates: every one but `none`.
     CHECK(trace["$defs"]["position_iteration"]["properties"]["method"]["enum"] ==
-          names_in_schema_order(position_method_names, "none"));
+          names_in_schema_order(formats::position_method_names, "none"));
     // The committed files leave the names to the table: a new method is its file and its row, not a schema edit.
     for (const char* file : {"/schemas/scene.schema.json", "/schemas/trace.schema.json"}) {
         CAPTURE(file);
@@ -255,7 +259,7 @@ TEST_CASE("every key a trace writes is a word of its item, its value of the word
 }
 
 TEST_CASE("every word's inputs are words, and a step's name is a word of the item it belongs to") {
-    for (const words::Word& w : words::all()) {
+    for (const formats::words::Word& w : formats::words::all()) {
         CAPTURE(w.quantity);
         CHECK_FALSE(w.step.empty());
         std::string_view rest = w.inputs;
@@ -263,20 +267,22 @@ TEST_CASE("every word's inputs are words, and a step's name is a word of the ite
             const std::size_t space = rest.find(' ');
             const std::string_view input = rest.substr(0, space);
             CAPTURE(input);
-            CHECK(words::find(input) != nullptr);
+            CHECK(formats::words::find(input) != nullptr);
             if (space == std::string_view::npos) break;
             rest.remove_prefix(space + 1);
         }
     }
     for (std::string_view step :
-         {words::step::basis, words::step::relative_position, words::step::delta_velocity_per_unit_impulse,
-          words::step::contact_velocity, words::step::desired_delta_velocity, words::step::accumulated,
-          words::step::impulse, words::step::velocity_change, words::step::rewind, words::step::penetration_inertia,
-          words::step::move_split, words::step::position_change, words::step::updates}) {
+         {formats::words::step::basis, formats::words::step::relative_position,
+          formats::words::step::delta_velocity_per_unit_impulse, formats::words::step::contact_velocity,
+          formats::words::step::desired_delta_velocity, formats::words::step::accumulated,
+          formats::words::step::impulse, formats::words::step::velocity_change, formats::words::step::rewind,
+          formats::words::step::penetration_inertia, formats::words::step::move_split,
+          formats::words::step::position_change, formats::words::step::updates}) {
         CAPTURE(step);
-        const words::Word* w = words::find(step);
+        const formats::words::Word* w = formats::words::find(step);
         REQUIRE(w != nullptr);
-        CHECK(w->kind != words::Kind::none);  // stored: the trace has a key of the step's name
+        CHECK(w->kind != formats::words::Kind::none);  // stored: the trace has a key of the step's name
     }
 }
 
@@ -292,7 +298,7 @@ TEST_CASE("docs/trace-format.md lists the words as the word list has them") {
     }
     REQUIRE(committed.find(formats::trace_docs_begin) != std::string::npos);
     CHECK_MESSAGE(generated == committed,
-                  "docs/trace-format.md's word tables differ from engine/record/word_table.hpp; regenerate them with "
+                  "docs/trace-format.md's word tables differ from formats/word_table.hpp; regenerate them with "
                   "IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*'");
 }
 

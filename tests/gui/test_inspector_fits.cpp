@@ -6,7 +6,7 @@
 #include "gui/layout_check.hpp"
 #include "gui/visible_text.hpp"
 #include "model/replay.hpp"
-#include "resolver/settings_names.hpp"
+#include "formats/settings_names.hpp"
 #include "support/opened.hpp"
 
 #include <doctest/doctest.h>
@@ -78,13 +78,13 @@ TEST_CASE("the inspector at 1280x800 cuts no navigator row, setting or contacts 
         // The first settings show whole; those further down (the panel scrolls) are never cut where they show.
         check_whole(runs,
                     {"preset", "phase order", "velocity method", "position method", s.preset,
-                     std::string(name_of(phase_order_names, s.phase_order)),
-                     std::string(name_of(velocity_method_names, s.velocity_method)),
-                     std::string(name_of(position_method_names, s.position_method))},
+                     std::string(formats::name_of(formats::phase_order_names, s.phase_order)),
+                     std::string(formats::name_of(formats::velocity_method_names, s.velocity_method)),
+                     std::string(formats::name_of(formats::position_method_names, s.position_method))},
                     "Settings", true);
         check_whole(runs,
                     {"restitution cut-off", "orientation update", "velocity from acceleration",
-                     std::string(name_of(orientation_update_names, s.orientation_update))},
+                     std::string(formats::name_of(formats::orientation_update_names, s.orientation_update))},
                     "Settings");
         // The contacts list: its headers and each row's status.
         std::vector<std::string> cells{"pen. mm", "Δv m/s", "|g| N·s", "status"};

@@ -1,11 +1,11 @@
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
-#include "record/word_table.hpp"
+#include "formats/word_table.hpp"
 
 #include <algorithm>
 #include <array>
 
-namespace impulse::words {
+namespace impulse::formats::words {
 
 namespace {
 
@@ -41,4 +41,4 @@ bool is_per_body(Kind kind) {
     return kind == Kind::per_body_number || kind == Kind::per_body_vec3 || kind == Kind::per_body_bool;
 }
 
-}  // namespace impulse::words
+}  // namespace impulse::formats::words

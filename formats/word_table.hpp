@@ -1,14 +1,14 @@
 #pragma once
-// The word list itself (record/words.hpp says what a word is): one row per value a trace records. In a header so
+// The word list itself (formats/words.hpp says what a word is): one row per value a trace records. In a header so
 // that code spelling a trace key can look it up when it compiles: words::key() below makes a writer or reader that
 // names a key the list does not hold for its item fail to build.
 
-#include "record/words.hpp"
+#include "formats/words.hpp"
 
 #include <array>
 #include <string_view>
 
-namespace impulse::words {
+namespace impulse::formats::words {
 
 namespace detail {
 
@@ -473,4 +473,4 @@ consteval std::string_view key(std::string_view quantity, std::string_view items
     return cut == std::string_view::npos ? quantity : quantity.substr(cut + 1);
 }
 
-}  // namespace impulse::words
+}  // namespace impulse::formats::words

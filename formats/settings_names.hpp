@@ -14,7 +14,7 @@
 #include <string_view>
 #include <utility>
 
-namespace impulse {
+namespace impulse::formats {
 
 template <typename Enum, std::size_t N>
 using NameTable = std::array<std::pair<Enum, std::string_view>, N>;
@@ -107,4 +107,4 @@ constexpr std::optional<Enum> value_of(const NameTable<Enum, N>& table, std::str
     return std::nullopt;
 }
 
-}  // namespace impulse
+}  // namespace impulse::formats

@@ -4,12 +4,13 @@
 // inspector's row, the lesson's `value` and the worksheet's cell; a step's name is a word too (the value it
 // exists to compute, or the object holding what it computes). The trace writer and reader, the schema test,
 // the inspector's tables and annotations, the worksheets and docs/trace-format.md all read this table.
-// Pure data: no files, no JSON.
+// Pure data: no files, no JSON. It is the trace's vocabulary, so it lives in formats/: the engine's records are
+// plain structs that never read it.
 
 #include <span>
 #include <string_view>
 
-namespace impulse::words {
+namespace impulse::formats::words {
 
 // The step names, each a word of the table below (or, for `choice`, `contact`, `body` and `settings`, what a
 // given value comes from). Code names a step through these constants, never through a string literal.
@@ -94,8 +95,6 @@ struct Word {
     std::string_view format1 = {};    // its key in trace format 1, when that was another
 };
 
-inline constexpr int format_version = 2;
-
 // Every word, in the order of the derivation.
 std::span<const Word> all();
 
@@ -112,4 +111,4 @@ constexpr bool held_by(const Word& word, char item) {
 
 bool is_per_body(Kind kind);
 
-}  // namespace impulse::words
+}  // namespace impulse::formats::words

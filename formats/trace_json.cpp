@@ -129,15 +129,16 @@ json preparation_json(const ContactPreparation& d) {
         {contact_key("swapped"), d.swapped},
         {contact_key("inert"), d.inert},
         {contact_key("point"), vec3_json(d.point)},
-        {contact_key("normal"), vec3_json(d.normal)},
-        {contact_key("penetration"), d.penetration},
-        {contact_key("restitution"), d.restitution},
-        {contact_key("friction"), d.friction},
-        {contact_key("origin"), origin_json(d.origin)},
-        {contact_key("basis"), mat3_json(d.basis.contact_to_world)},
-        {contact_key("tangent_seed"), name_of(tangent_seed_names, d.basis.seed)},
-        {contact_key("relative_position"), per_body_vec3(d.relative_position)},
     };
+    if (d.body1_point) out[contact_key("body1_point")] = vec3_json(*d.body1_point);  // a recycled contact's
+    out[contact_key("normal")] = vec3_json(d.normal);
+    out[contact_key("penetration")] = d.penetration;
+    out[contact_key("restitution")] = d.restitution;
+    out[contact_key("friction")] = d.friction;
+    out[contact_key("origin")] = origin_json(d.origin);
+    out[contact_key("basis")] = mat3_json(d.basis.contact_to_world);
+    out[contact_key("tangent_seed")] = name_of(tangent_seed_names, d.basis.seed);
+    out[contact_key("relative_position")] = per_body_vec3(d.relative_position);
     const auto& bodies = d.unit_impulse_chain.bodies;
     const auto field = [&bodies](auto member) {
         PerBody<std::decay_t<decltype((*bodies[0]).*member)>> values;
@@ -168,6 +169,7 @@ ContactPreparation read_preparation(const json& j) {
     d.swapped = j[contact_key("swapped")].get<bool>();
     d.inert = j[contact_key("inert")].get<bool>();
     d.point = read_vec3(j[contact_key("point")]);
+    if (j.contains(contact_key("body1_point"))) d.body1_point = read_vec3(j[contact_key("body1_point")]);
     d.normal = read_vec3(j[contact_key("normal")]);
     d.penetration = j[contact_key("penetration")].get<double>();
     d.restitution = j[contact_key("restitution")].get<double>();

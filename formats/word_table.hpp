@@ -49,6 +49,9 @@ inline constexpr std::array table{
          given},
     Word{"point", "q, from collision detection", "", "m", "the contact point, world", step::contact, "", "C", vec3,
          given},
+    Word{"body1_point", "q₁, body 1's own anchor carried since detection", "", "m",
+         "where body 1 is touched, world, when it is not `point` (a recycled contact; absent otherwise)", step::contact,
+         "", "C", vec3, given},
     Word{"normal", "n, from collision detection", "", "", "the way body 0 must move to separate", step::contact,
          "swapped", "C", vec3, given},
     Word{"penetration", "from collision detection", "", "m", "overlap along the normal", step::contact, "", "C", number,
@@ -78,7 +81,7 @@ inline constexpr std::array table{
          "normal tangent1 tangent2", "C", mat3},
     // Step 2
     Word{"relative_position", "q_rel = q − p", "(1.8)", "m", "the contact point seen from the body's centre",
-         step::relative_position, "point body_position bodies", "C", per_body_vec3},
+         step::relative_position, "point body1_point body_position bodies", "C", per_body_vec3},
     // Step 3
     Word{"torque_per_unit_impulse", "u = q_rel × n", "(14.2)", "N·m·s per N·s",
          "impulsive torque of a unit impulse along n", step::delta_velocity_per_unit_impulse,

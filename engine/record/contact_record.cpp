@@ -37,7 +37,9 @@ ContactPreparation contact_preparation(int index, const Contact& contact, std::s
     return {.contact = index,
             .swapped = o.swapped,
             .bodies = o.bodies,
-            .point = contact.point,
+            .point = touch_point(contact, o.swapped ? 1 : 0),
+            .body1_point =
+                contact.body1_point ? std::optional<Vec3>(touch_point(contact, o.swapped ? 0 : 1)) : std::nullopt,
             .normal = o.normal,
             .penetration = contact.penetration,
             .restitution = contact.restitution,

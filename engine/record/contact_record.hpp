@@ -13,17 +13,20 @@
 #include "settings/settings.hpp"
 
 #include <array>
+#include <optional>
 #include <span>
 
 namespace impulse {
 
 // Steps 1-5 for one contact, exactly as the recorder stores them.
 struct ContactPreparation {
-    int contact;                // index in the input contact list
-    bool swapped;               // given with the world as body 0: bodies exchanged and normal negated
-    std::array<int, 2> bodies;  // after swapping; bodies[1] may be world_body
-    Vec3 point;
-    Vec3 normal;  // after swapping: from body 1 towards body 0
+    int contact;                      // index in the input contact list
+    bool swapped;                     // given with the world as body 0: bodies exchanged and normal negated
+    std::array<int, 2> bodies;        // after swapping; bodies[1] may be world_body
+    Vec3 point;                       // q: where body 0 is touched (and body 1, unless body1_point says otherwise)
+    std::optional<Vec3> body1_point;  // where body 1 is touched when that is not `point`: a recycled contact's
+                                      // bodies keep their own anchors (Contact::body1_point); empty otherwise
+    Vec3 normal;                      // after swapping: from body 1 towards body 0
     double penetration;
     double restitution;
     double friction;

@@ -130,6 +130,9 @@ void write_explanation(std::ostream& out, const Trace& trace) {
                 << number(c.penetration) << " m, restitution " << number(c.restitution) << ", friction "
                 << number(c.friction) << '\n'
                 << "  " << origin_text(c.origin) << '\n';
+            if (c.body1_point)
+                out << "  body 1 is touched at " << vector(*c.body1_point)
+                    << " m (body1_point): a recycled contact keeps each body's own anchor\n";
             if (c.swapped)
                 out << "  (given with the world as body 0: bodies swapped and the normal reversed, so it points "
                        "towards body 0)\n";

@@ -73,6 +73,11 @@ std::vector<Trace> every_kind_of_trace() {
         options.settings = {"baumgarte=true"};
         traces.push_back(opened("cases/tilted_box", options));
     }
+    // A recycled contact between two boxes: each body touched at its own anchor (body1_point).
+    model::OpenOptions recycled;
+    recycled.preset = "soft_step_recycled";
+    recycled.frames = 3;
+    traces.push_back(opened("stack_3", recycled));
     // AVBD's body visits and dual updates.
     model::OpenOptions avbd;
     avbd.preset = "avbd";

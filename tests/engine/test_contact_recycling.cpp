@@ -6,6 +6,7 @@
 #include "methods/soft_step.hpp"
 #include "math/rotation.hpp"
 #include "preparation/prepared_contact.hpp"
+#include "record/contact_record.hpp"
 #include "record/trace_recorder.hpp"
 #include "support/shipped.hpp"
 #include "world/world.hpp"
@@ -131,6 +132,15 @@ TEST_CASE("a recycled pair of boxes pushes each body at its own anchor") {
         CHECK(prepared.relative_position[i] == touch_point(*is, i) - body.position);
     }
     CHECK(prepared.relative_position[0] == was.point - scene.bodies[static_cast<std::size_t>(upper)].position);
+
+    // The record says where each body is touched, so step 2 can be rebuilt from it: q_rel,1 = body1_point - p_1.
+    const ContactPreparation record = contact_preparation(0, *is, bodies, mass, scene.settings);
+    REQUIRE(record.body1_point);
+    CHECK(record.point == is->point);
+    CHECK(*record.body1_point == *is->body1_point);
+    const Vec3 lower_centre = bodies[static_cast<std::size_t>(is->bodies[1])].position;
+    CHECK(*record.relative_position[1] == *record.body1_point - lower_centre);
+    CHECK_FALSE(contact_preparation(0, was, bodies, mass, scene.settings).body1_point);  // detected: one point
 }
 
 TEST_CASE("a pair that moves or turns past the recycling settings is tested afresh") {

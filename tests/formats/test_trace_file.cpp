@@ -65,6 +65,23 @@ TEST_CASE("a trace written and read back is equal to the last bit, for every met
     }
 }
 
+TEST_CASE("a contact whose bodies are touched at two points (recycled) round-trips with body 1's point") {
+    Scene scene = test::shipped("cases/two_body_oblique");
+    Contact& contact = scene.contacts.front();
+    contact.body1_point = contact.point + Vec3(0.002, -0.001, 0.0);  // the anchors a recycled contact keeps
+    Trace trace = resolved(scene);
+    // The world makes recycled contacts, a scene or case file never holds one: the trace's scene is as read.
+    trace.scene.contacts.front().body1_point.reset();
+    const ContactPreparation& record = trace.frames.front().contacts.front();
+    REQUIRE(record.body1_point);
+    const Vec3 centre = scene.bodies[static_cast<std::size_t>(record.bodies[1])].position;
+    CHECK(*record.relative_position[1] == *record.body1_point - centre);
+    const formats::json j = formats::trace_json(trace);
+    const formats::json& written_contact = j["frames"][0]["contacts"][0];
+    CHECK(std::next(written_contact.find("point")).key() == "body1_point");  // beside the point, in step order
+    CHECK(formats::read_trace_text(written(trace)) == trace);
+}
+
 TEST_CASE("a filtered trace round-trips with its filter") {
     Trace trace;
     trace.scene = test::shipped("cases/sliding_box");

@@ -287,7 +287,7 @@ TEST_CASE("every word's inputs are words, and a step's name is a word of the ite
 }
 
 TEST_CASE("docs/trace-format.md lists the words as the word list has them") {
-    // IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*' writes the section from the list.
+    // IMPULSE_WRITE_DOCS=1 impulse_formats_tests -tc='docs/trace-format.md*' writes the section from the list.
     const std::string path = IMPULSE_SOURCE_DIR "/docs/trace-format.md";
     const std::string committed = file_text(path);
     const std::string generated = formats::with_trace_word_docs(committed, formats::trace_word_docs());
@@ -299,7 +299,7 @@ TEST_CASE("docs/trace-format.md lists the words as the word list has them") {
     REQUIRE(committed.find(formats::trace_docs_begin) != std::string::npos);
     CHECK_MESSAGE(generated == committed,
                   "docs/trace-format.md's word tables differ from formats/word_table.hpp; regenerate them with "
-                  "IMPULSE_WRITE_DOCS=1 impulse_tests -tc='docs/trace-format.md*'");
+                  "IMPULSE_WRITE_DOCS=1 impulse_formats_tests -tc='docs/trace-format.md*'");
 }
 
 namespace {

@@ -39,6 +39,7 @@ void apply_fields(Scene& scene, const json& object, std::string_view path) {
         if (soft.contains("contact_hertz")) s.soft_step.contact_hertz = soft["contact_hertz"].get<double>();
         if (soft.contains("damping_ratio")) s.soft_step.damping_ratio = soft["damping_ratio"].get<double>();
         if (soft.contains("max_push_velocity")) s.soft_step.max_push_velocity = soft["max_push_velocity"].get<double>();
+        if (soft.contains("order")) s.soft_step.order = read_enum(solve_order_names, soft["order"]);
     }
     if (has("recycling")) {
         const json& recycling = object["recycling"];
@@ -157,6 +158,9 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
     if (s.baumgarte) out["baumgarte"] = true;
     if (s.sliding_friction != SlidingFriction::reference)
         out["sliding_friction"] = name_of(sliding_friction_names, s.sliding_friction);
+    // Written only when not the default, so the traces of the runs before the setting are unchanged.
+    if (s.soft_step.order != SolveOrder::contacts)
+        out["soft_step"]["order"] = name_of(solve_order_names, s.soft_step.order);
     if (s.recycling != RecyclingSettings{})
         out["recycling"] = {{"distance", s.recycling.distance}, {"angle", s.recycling.angle}};
     if (s.velocity_method == VelocityMethod::avbd || s.avbd != AvbdSettings{})

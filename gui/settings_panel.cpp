@@ -97,6 +97,8 @@ void method_setting(model::Session& session, UiState& state, model::ActionHost& 
         number_field(session, state, host, "contact hertz", name, s.soft_step.contact_hertz);
     if (key == "soft_step.damping_ratio")
         number_field(session, state, host, "damping ratio", name, s.soft_step.damping_ratio);
+    if (key == "soft_step.order")
+        enum_combo(session, state, host, "solve order", name, formats::solve_order_names, s.soft_step.order);
     if (key == "avbd.iterations") integer_field(session, state, host, "iterations", name, s.avbd.iterations);
     if (key == "avbd.alpha") number_field(session, state, host, "stabilisation α", name, s.avbd.alpha);
     if (key == "avbd.beta") number_field(session, state, host, "stiffness ramp β (N/m²)", name, s.avbd.beta);
@@ -151,6 +153,7 @@ void draw_settings(model::Session& session, UiState& state, model::ActionHost& h
                                           "soft_step.substeps",
                                           "soft_step.contact_hertz",
                                           "soft_step.damping_ratio",
+                                          "soft_step.order",
                                           "avbd.iterations",
                                           "avbd.post_stabilize",
                                           "avbd.alpha",

@@ -47,12 +47,13 @@ inline constexpr std::array<std::string_view, 6> sequential_sweep{
     "velocity_epsilon", "sweeps", "sliding_friction", "baumgarte", "position_bias.factor", "position_bias.slop"};
 inline constexpr std::array<std::string_view, 6> projected_gauss_seidel{
     "velocity_epsilon", "sweeps", "warm_start", "baumgarte", "position_bias.factor", "position_bias.slop"};
-inline constexpr std::array<std::string_view, 6> soft_step{"sweeps",
+inline constexpr std::array<std::string_view, 7> soft_step{"sweeps",
                                                            "warm_start",
                                                            "soft_step.substeps",
                                                            "soft_step.contact_hertz",
                                                            "soft_step.damping_ratio",
-                                                           "soft_step.max_push_velocity"};
+                                                           "soft_step.max_push_velocity",
+                                                           "soft_step.order"};
 inline constexpr std::array<std::string_view, 9> avbd{"warm_start",         "avbd.iterations", "avbd.alpha",
                                                       "avbd.beta",          "avbd.gamma",      "avbd.stiffness_min",
                                                       "avbd.stiffness_max", "avbd.slop",       "avbd.post_stabilize"};

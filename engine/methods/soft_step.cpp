@@ -6,6 +6,7 @@
 
 #include "body/integrate.hpp"
 #include "methods/contact_rows.hpp"
+#include "methods/graph_colouring.hpp"
 #include "methods/solver_common.hpp"
 
 #include <algorithm>
@@ -96,6 +97,7 @@ public:
                 if (const std::optional<RowVisit> total = remembered.of(active_.rows[r], active_.keys[r]))
                     active_.rows[r].total_impulse = total->after;
         }
+        if (settings_.soft_step.order == SolveOrder::colours) sort_by_colour();
     }
 
     void run() {
@@ -133,6 +135,22 @@ public:
     int visits() const { return visits_; }
 
 private:
+    // soft_step.order = colours: every list kept per row put in colour order once (methods/graph_colouring.hpp),
+    // after the warm start's look-up in detection's order; the stages below visit the rows as they stand.
+    void sort_by_colour() {
+        const std::pmr::vector<std::uint32_t> order = colour_order(active_.rows, bodies_, frame_.scratch);
+        const auto permute = [&order, this](auto& list) {
+            std::remove_reference_t<decltype(list)> sorted(frame_.scratch);
+            sorted.reserve(list.size());
+            for (const std::uint32_t r : order) sorted.push_back(list[r]);
+            list.swap(sorted);
+        };
+        permute(active_.rows);
+        permute(active_.keys);
+        permute(soft_);
+        permute(bounce_);
+    }
+
     void load_velocities() {
         for (std::size_t b = 0; b < bodies_.size(); ++b) {
             bodies_[b].velocity = frame_.bodies[b].velocity;

@@ -13,6 +13,8 @@
 //   6. restitution, once: contacts that closed faster than the cut-off when the frame began and were pushed
 //      get the normal target -c v_n(before);
 //   7. store each lambda in the ContactMemory (world coordinates) when settings.warm_start.
+// Every stage visits the contacts in settings.soft_step.order: as detected, or colour by colour (Box3D's constraint
+// graph, methods/graph_colouring.hpp); the order is fixed for the frame.
 //
 // The soft contact (Catto, "Solver2D" and Box2D v3's b2MakeSoft): the contact is a spring of stiffness
 // k = m omega^2 and damper c = 2 m zeta omega on the effective mass m, omega = 2 pi hertz, stepped with implicit

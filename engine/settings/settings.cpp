@@ -14,8 +14,8 @@ int velocity_iteration_limit(const ResolverSettings& settings, int contact_count
 }
 
 namespace {
-constexpr std::array<std::string_view, 8> names{
-    "book", "chapter", "sweep", "pgs", "pgs_split", "soft_step", "soft_step_recycled", "avbd"};
+constexpr std::array<std::string_view, 9> names{
+    "book", "chapter", "sweep", "pgs", "pgs_split", "soft_step", "soft_step_recycled", "soft_step_coloured", "avbd"};
 }
 
 std::span<const std::string_view> preset_names() {
@@ -53,11 +53,11 @@ std::optional<ResolverSettings> preset(std::string_view name) {
         s.position_bias.factor = name == "pgs" ? 0.2 : 0.8;
         return s;
     }
-    if (name == "soft_step" || name == "soft_step_recycled") {
+    if (name == "soft_step" || name == "soft_step_recycled" || name == "soft_step_coloured") {
         s.velocity_method = VelocityMethod::soft_step;
         s.position_method = PositionMethod::none;  // the soft contact carries its own push (see SoftStepSettings)
         s.sweeps = 1;
-        if (name == "soft_step_recycled") {
+        if (name != "soft_step") {
             // Box3D's B3_CONTACT_RECYCLE_DISTANCE, 10 linear slops of 5 mm; its angle, 10 degrees, is the default.
             s.recycling.distance = 0.05;
             // Box3D's 30 Hz and damping ratio 10 both scaled by 1.2: the push-out rate omega / (2 zeta + h omega)
@@ -68,6 +68,10 @@ std::optional<ResolverSettings> preset(std::string_view name) {
             s.soft_step.contact_hertz = 36.0;
             s.soft_step.damping_ratio = 12.0;
         }
+        // soft_step_recycled solved colour by colour (Box3D's constraint graph): no direction through the scene
+        // favoured, so the large pyramid's top stays within 5 cm sideways; a chain's support then climbs two links a
+        // sweep, not all of them, and stacks settle slower at N = 4 (docs/bench.md, "Solve order").
+        if (name == "soft_step_coloured") s.soft_step.order = SolveOrder::colours;
         return s;
     }
     if (name == "avbd") {

@@ -1,6 +1,6 @@
 #include "course/trace_path.hpp"
 
-#include "formats/trace_json.hpp"
+#include "formats/trace_items_json.hpp"
 
 #include <algorithm>
 #include <charconv>

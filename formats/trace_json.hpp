@@ -28,12 +28,6 @@ std::string trace_frame_text(const FrameRecord& frame, const ResolverSettings& s
 inline constexpr std::string_view trace_frames_open = "[\n    ", trace_frames_between = ",\n    ",
                                   trace_frames_close = "\n  ]\n}\n", trace_no_frames = "[]\n}\n";
 
-// One item of a frame as the trace writes it (frames[f].contacts[k], or an iteration of a phase): for reading
-// a value by its path without writing the whole trace.
-json item_json(const ContactPreparation& contact);
-json item_json(const PositionIteration& iteration);
-json item_json(const VelocityIteration& iteration);
-
 // Checks the schema, then reads (a format-1 document upgraded first: the trace's `version` says so); throws
 // InputError with the JSON path of the first problem.
 Trace read_trace(const json& document);

@@ -46,6 +46,7 @@ void apply_fields(Scene& scene, const json& object, std::string_view path) {
         if (recycling.contains("distance")) s.recycling.distance = recycling["distance"].get<double>();
         if (recycling.contains("angle")) s.recycling.angle = recycling["angle"].get<double>();
     }
+    if (has("speculative_margin")) s.speculative_margin = object["speculative_margin"].get<double>();
     if (has("avbd")) {
         const json& avbd = object["avbd"];
         const auto number = [&avbd](const char* key, double& value) {
@@ -163,6 +164,7 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
         out["soft_step"]["order"] = name_of(solve_order_names, s.soft_step.order);
     if (s.recycling != RecyclingSettings{})
         out["recycling"] = {{"distance", s.recycling.distance}, {"angle", s.recycling.angle}};
+    if (s.speculative_margin != 0.0) out["speculative_margin"] = s.speculative_margin;
     if (s.velocity_method == VelocityMethod::avbd || s.avbd != AvbdSettings{})
         out["avbd"] = {{"iterations", s.avbd.iterations},
                        {"alpha", s.avbd.alpha},

@@ -172,7 +172,8 @@ Few<std::size_t, 4> reduce_to_four(const Few<Vec3, most_points>& points, const F
     return keep;
 }
 
-void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Axis& axis, std::vector<Contact>& out) {
+void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Axis& axis, double margin,
+                  std::vector<Contact>& out) {
     // The reference box owns the face normal; its face towards the other box has outward normal -n when it is
     // box a (n points from b to a) and +n when it is box b.
     const bool reference_is_a = axis.kind == Axis::face_a;
@@ -219,13 +220,16 @@ void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
     }
 
     // Keep the points below the reference face; each is on the incident box, `depth` inside the reference box.
+    // With a margin, also the points up to `margin` above it (depth < 0): speculative points, which let the solver
+    // stop a landing face on all its corners, not on the one that happened to touch first (Box3D keeps a
+    // manifold's points within its speculative distance, 2 cm; docs/methods.md, "Speculative points").
     Few<Vec3, most_points> points;
     Few<double, most_points> depth;
     Few<Feature, most_points> features;
     const double face_level = ref_normal.dot(face_centre);
     for (const ClipPoint& p : polygon) {
         const double d = face_level - ref_normal.dot(p.position);
-        if (d < 0.0) continue;
+        if (d < -margin) continue;
         points.push_back(p.position);
         depth.push_back(d);
         features.push_back(p.feature);
@@ -428,7 +432,7 @@ std::optional<Axis> least_overlap_screened(const Oriented& A, const Oriented& B,
 }
 
 template <std::optional<Axis> (*choose)(const Oriented&, const Oriented&, const Vec3&, int, int)>
-void boxes(const Box& ba, const Placement& pa, int a, const Box& bb, const Placement& pb, int b,
+void boxes(const Box& ba, const Placement& pa, int a, const Box& bb, const Placement& pb, int b, double margin,
            std::vector<Contact>& out) {
     const Oriented A{pa.position, pa.rotation, ba.half_size};
     const Oriented B{pb.position, pb.rotation, bb.half_size};
@@ -437,19 +441,19 @@ void boxes(const Box& ba, const Placement& pa, int a, const Box& bb, const Place
     if (best->kind == Axis::edge)
         edge_contact(A, B, a, b, *best, out);
     else
-        face_contact(A, B, a, b, *best, out);
+        face_contact(A, B, a, b, *best, margin, out);
 }
 
 }  // namespace
 
 void box_and_box(const Box& ba, const Placement& pa, int a, const Box& bb, const Placement& pb, int b,
-                 std::vector<Contact>& out) {
-    boxes<least_overlap_screened>(ba, pa, a, bb, pb, b, out);
+                 std::vector<Contact>& out, double margin) {
+    boxes<least_overlap_screened>(ba, pa, a, bb, pb, b, margin, out);
 }
 
 void box_and_box_every_axis(const Box& ba, const Placement& pa, int a, const Box& bb, const Placement& pb, int b,
-                            std::vector<Contact>& out) {
-    boxes<least_overlap_every_axis>(ba, pa, a, bb, pb, b, out);
+                            std::vector<Contact>& out, double margin) {
+    boxes<least_overlap_every_axis>(ba, pa, a, bb, pb, b, margin, out);
 }
 
 }  // namespace impulse

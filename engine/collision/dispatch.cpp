@@ -5,11 +5,11 @@
 namespace impulse {
 
 void collide(const Shape& sa, const Placement& pa, int a, const Shape& sb, const Placement& pb, int b,
-             std::vector<Contact>& out) {
+             std::vector<Contact>& out, double margin) {
     const auto* sphere_a = std::get_if<Sphere>(&sa);
     const auto* sphere_b = std::get_if<Sphere>(&sb);
     if (sphere_a && sphere_b) return sphere_and_sphere(*sphere_a, pa, a, *sphere_b, pb, b, out);
-    if (!sphere_a && !sphere_b) return box_and_box(std::get<Box>(sa), pa, a, std::get<Box>(sb), pb, b, out);
+    if (!sphere_a && !sphere_b) return box_and_box(std::get<Box>(sa), pa, a, std::get<Box>(sb), pb, b, out, margin);
     // Box and sphere: the box is body 0 whichever came first.
     if (sphere_a) return box_and_sphere(std::get<Box>(sb), pb, b, *sphere_a, pa, a, out);
     return box_and_sphere(std::get<Box>(sa), pa, a, *sphere_b, pb, b, out);

@@ -123,6 +123,10 @@ struct ResolverSettings {
     SoftStepSettings soft_step{};
     AvbdSettings avbd{};
     RecyclingSettings recycling{};  // off unless distance > 0: contacts detected afresh every frame
+    // m: a face contact between two boxes also keeps the clipped points up to this far outside the reference face,
+    // as speculative points (negative penetration), so a face landing on a slight tilt is stopped on all its
+    // corners at once (Box3D's manifold keeps its points within 2 cm). 0: only the points that touch.
+    double speculative_margin = 0.0;
     // The reference engine's chapter-15 refinements of steps 4 and 5 (velocity_refinements() below gives them to
     // step 5). Contacts closing slower than restitution_cutoff (m/s) bounce with restitution 0, so resting
     // contacts do not jitter; 0 switches the cut-off off. Reference engine: 0.25.

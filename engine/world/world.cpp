@@ -85,7 +85,8 @@ void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Dete
         const auto ui = static_cast<std::size_t>(i), uj = static_cast<std::size_t>(j);
         if (recycling && recycling->recycle({i, j}, out)) continue;
         const std::size_t first = out.size();
-        collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out);
+        collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out,
+                scene.settings.speculative_margin);
         stamp_material(out, first, *materials[ui], *materials[uj]);
         if (recycling) recycling->keep({i, j}, std::span<const Contact>(out).subspan(first));
     }

@@ -178,6 +178,8 @@ void draw_settings(model::Session& session, UiState& state, model::ActionHost& h
     // Contact recycling is the world's detection, not a method's: any method may use it (its angle once it is on).
     number_field(session, state, host, "recycle distance (m)", "recycling.distance", s.recycling.distance);
     if (s.recycling.on()) number_field(session, state, host, "recycle angle (°)", "recycling.angle", s.recycling.angle);
+    // Also detection's: two boxes' face contact keeps its points up to this far apart (speculative to the soft step).
+    number_field(session, state, host, "speculative margin (m)", "speculative_margin", s.speculative_margin);
     number_field(session, state, host, "restitution cut-off", "restitution_cutoff", s.restitution_cutoff);
     bool from_acceleration = s.velocity_from_acceleration;
     if (ImGui::Checkbox("velocity from acceleration", &from_acceleration))

@@ -1,5 +1,8 @@
 #include "methods/contact_rows.hpp"
 
+#include <new>
+#include <type_traits>
+
 namespace impulse {
 
 std::pmr::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass,
@@ -22,9 +25,9 @@ void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>
 
 bool fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBody* bodies, bool friction_rows) {
     row.contact = d.contact;
+    row.body = row_bodies(d);
     ContactMass mass{nullptr, nullptr};
     for (int i = 0; i < 2; ++i) {
-        row.body[i] = d.bodies[i] == world_body ? -1 : d.bodies[i];
         row.anchor[i] = d.relative_position[i];
         if (row.body[i] >= 0) mass[i] = &bodies[row.body[i]].mass;
     }
@@ -33,7 +36,7 @@ bool fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBod
     // K_nn is step 3's d, so a rigid normal row visited alone gives the chapter's impulse g = v / d (14.3); the
     // friction rows read the rest of K (derivation/impulse.hpp), as the book's friction solve does.
     const double k_nn = d.delta_velocity_per_unit_impulse;
-    if (!(k_nn > 0.0)) return false;  // inert: never visited
+    if (!can_move(d)) return false;  // inert: never visited
     row.normal_response = k_nn;
     row.normal_mass = 1.0 / k_nn;
     if (row.friction != 0.0) {
@@ -66,6 +69,22 @@ ContactRow* ActiveRows::add(const PreparedContact& contact, const SolverBody* bo
     }
     keys.push_back(contact_key(contact));
     return &rows.back();
+}
+
+PlacedRows::PlacedRows(std::size_t count, std::pmr::memory_resource* scratch)
+    : rows(static_cast<ContactRow*>(scratch->allocate(count * sizeof(ContactRow), alignof(ContactRow))), count),
+      keys(count, scratch),
+      scratch_(scratch) {}
+
+PlacedRows::~PlacedRows() {
+    static_assert(std::is_trivially_destructible_v<ContactRow>);
+    scratch_->deallocate(rows.data(), rows.size() * sizeof(ContactRow), alignof(ContactRow));
+}
+
+void PlacedRows::place(std::size_t slot, const PreparedContact& contact, const SolverBody* bodies) {
+    ContactRow* row = new (&rows[slot]) ContactRow;
+    fill_contact_row(*row, contact, bodies);
+    keys[slot] = contact_key(contact);
 }
 
 std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const ContactKey& key) {

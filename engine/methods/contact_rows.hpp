@@ -98,6 +98,17 @@ struct ContactRow {
     Axes total_impulse;                                     // lambda (N s)
 };
 
+// The solver bodies of a prepared contact's rows (ContactRow::body): -1 for the world.
+inline std::array<int, 2> row_bodies(const PreparedContact& contact) {
+    return {contact.bodies[0] == world_body ? -1 : contact.bodies[0],
+            contact.bodies[1] == world_body ? -1 : contact.bodies[1]};
+}
+
+// Whether an impulse can move the contact at all (K_nn > 0): a contact that cannot has no rows and is never visited.
+inline bool can_move(const PreparedContact& contact) {
+    return contact.delta_velocity_per_unit_impulse > 0.0;
+}
+
 // Fills `row` with the rows of a prepared contact, with its bodies' mass from `bodies` (K_nn = d of step 3, the
 // other entries derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes)
 // only the normal row is filled. Returns whether an impulse can move the contact at all (K_nn > 0); a contact that
@@ -115,6 +126,26 @@ struct ActiveRows {
 
     std::pmr::vector<ContactRow> rows;  // in contact order
     std::pmr::vector<ContactKey> keys;  // each row's contact's key in the ContactMemory
+};
+
+// The same rows built in the order a method visits them (soft step's colours): each placed in its slot as it is
+// filled, in storage from the frame's scratch that nothing writes before (a vector's resize would write every row
+// once more: 16 MB a frame on Box3D's large pyramid). Every slot below `count` must be placed before it is read.
+class PlacedRows {
+public:
+    PlacedRows(std::size_t count, std::pmr::memory_resource* scratch);
+    ~PlacedRows();
+    PlacedRows(const PlacedRows&) = delete;
+    PlacedRows& operator=(const PlacedRows&) = delete;
+
+    // Fills slot `slot` with the row of `contact`, which can_move, and its key.
+    void place(std::size_t slot, const PreparedContact& contact, const SolverBody* bodies);
+
+    std::span<ContactRow> rows;  // in the order they were placed in
+    std::pmr::vector<ContactKey> keys;
+
+private:
+    std::pmr::memory_resource* scratch_;
 };
 
 // What the normal row aims for in one visit.

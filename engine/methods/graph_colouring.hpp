@@ -25,14 +25,23 @@
 
 namespace impulse {
 
-// The order to visit `rows` in: order[k] is the row visited k-th, colour by colour (the overflow first), detection's
-// order within a colour. `bodies` are the solver's bodies the rows index (a body with zero inverse mass and inverse
-// inertia is static). In `scratch` (FrameContext::scratch).
-std::pmr::vector<std::uint32_t> colour_order(std::span<const ContactRow> rows, std::span<const SolverBody> bodies,
-                                             std::pmr::memory_resource* scratch);
+// The colour of each pair of a frame's rows, given as each row's bodies (ContactRow::body, detection's order), as
+// colour_slots sorts them: -1 for the overflow, else 0 to 22. `bodies` are the solver's bodies the rows index (a body
+// with zero inverse mass and inverse inertia is static). In `scratch` (FrameContext::scratch).
+std::pmr::vector<int> pair_colours(std::span<const std::array<int, 2>> pairs, std::span<const SolverBody> bodies,
+                                   std::pmr::memory_resource* scratch);
 
-// The colour of each row, as colour_order sorts them: -1 for the overflow, else 0 to 22 (exposed for tests).
+// Where each row goes in the colour order: slot[r] is the place of row r (given by its bodies, as above) among the
+// visits, colour by colour (the overflow first), detection's order within a colour. A method builds its rows in
+// these slots, so nothing is copied to put them in order.
+std::pmr::vector<std::uint32_t> colour_slots(std::span<const std::array<int, 2>> pairs,
+                                             std::span<const SolverBody> bodies, std::pmr::memory_resource* scratch);
+
+// The same for rows already built: the colour of each (as pair_colours), and the order to visit them in (order[k] is
+// the row visited k-th, the inverse of colour_slots).
 std::pmr::vector<int> row_colours(std::span<const ContactRow> rows, std::span<const SolverBody> bodies,
                                   std::pmr::memory_resource* scratch);
+std::pmr::vector<std::uint32_t> colour_order(std::span<const ContactRow> rows, std::span<const SolverBody> bodies,
+                                             std::pmr::memory_resource* scratch);
 
 }  // namespace impulse

@@ -33,6 +33,15 @@ Softness soft_step_softness(const ResolverSettings& settings) {
 
 namespace {
 
+// The contacts an impulse can move (can_move), by their index, in detection's order: the ones that get rows.
+std::pmr::vector<std::uint32_t> moving_contacts(const FrameContext& frame) {
+    std::pmr::vector<std::uint32_t> moving(frame.scratch);
+    moving.reserve(frame.contacts.size());
+    for (std::size_t c = 0; c < frame.contacts.size(); ++c)
+        if (can_move(frame.contacts[c])) moving.push_back(static_cast<std::uint32_t>(c));
+    return moving;
+}
+
 // What soft step keeps per contact beside its rows, read on every visit. (Small: the rows and these are read
 // through once per sweep, and together they must stay in the core's cache.)
 struct SoftContact {
@@ -59,7 +68,8 @@ public:
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
           bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          active_(frame.contacts.size(), frame.scratch),
+          moving_(moving_contacts(frame)),
+          active_(moving_.size(), frame.scratch),
           soft_(frame.scratch),
           bounce_(frame.scratch),
           start_position_(frame.scratch),
@@ -75,29 +85,8 @@ public:
         }
         moved_.assign(frame.bodies.size(), Vec3::Zero());
         turned_.assign(frame.bodies.size(), Mat3::Identity());
-        soft_.reserve(frame.contacts.size());
-        bounce_.reserve(frame.contacts.size());
-        for (const PreparedContact& d : frame.contacts) {
-            if (!active_.add(d, bodies_.data())) continue;  // nothing can move it: no visits
-            SoftContact& c = soft_.emplace_back();
-            c.prepared_penetration = d.penetration;
-            aim_at(c, d.penetration);
-            // Step 4's v_s, which restitution reverses, judged once against the cut-off.
-            SoftBounce& bounce = bounce_.emplace_back();
-            bounce.restitution = d.restitution;
-            if (d.restitution == 0.0) continue;
-            bounce.relative_velocity = d.contact_velocity.x();
-            bounce.cutoff_applied = !(bounce.relative_velocity < -settings_.restitution_cutoff);
-            bounce.bounces = !bounce.cutoff_applied;
-        }
+        place_rows();
         if (frame.keeping) kept_.resize(active_.rows.size());
-        if (settings_.warm_start && frame.memory) {
-            RememberedTotals remembered(*frame.memory, frame.scratch);
-            for (std::size_t r = 0; r < active_.rows.size(); ++r)
-                if (const std::optional<RowVisit> total = remembered.of(active_.rows[r], active_.keys[r]))
-                    active_.rows[r].total_impulse = total->after;
-        }
-        if (settings_.soft_step.order == SolveOrder::colours) sort_by_colour();
     }
 
     void run() {
@@ -135,20 +124,45 @@ public:
     int visits() const { return visits_; }
 
 private:
-    // soft_step.order = colours: every list kept per row put in colour order once (methods/graph_colouring.hpp),
-    // after the warm start's look-up in detection's order; the stages below visit the rows as they stand.
-    void sort_by_colour() {
-        const std::pmr::vector<std::uint32_t> order = colour_order(active_.rows, bodies_, frame_.scratch);
-        const auto permute = [&order, this](auto& list) {
-            std::remove_reference_t<decltype(list)> sorted(frame_.scratch);
-            sorted.reserve(list.size());
-            for (const std::uint32_t r : order) sorted.push_back(list[r]);
-            list.swap(sorted);
-        };
-        permute(active_.rows);
-        permute(active_.keys);
-        permute(soft_);
-        permute(bounce_);
+    // The rows of the contacts an impulse can move, each list kept per row built in the order of the visits (for
+    // soft_step.order = colours, colour by colour: methods/graph_colouring.hpp), in place; and the warm start's
+    // totals looked up in detection's order (the memory gives a key shared by two contacts to the first).
+    void place_rows() {
+        const std::pmr::vector<std::uint32_t>& moving = moving_;
+        const std::size_t count = moving.size();
+        std::pmr::vector<std::uint32_t> slots(frame_.scratch);  // slots[k]: where the k-th one's row goes
+        if (settings_.soft_step.order == SolveOrder::colours) {
+            std::pmr::vector<std::array<int, 2>> pairs(frame_.scratch);
+            pairs.reserve(count);
+            for (const std::uint32_t c : moving) pairs.push_back(row_bodies(frame_.contacts[c]));
+            slots = colour_slots(pairs, bodies_, frame_.scratch);
+        } else {
+            slots.resize(count);
+            for (std::size_t k = 0; k < count; ++k) slots[k] = static_cast<std::uint32_t>(k);
+        }
+        soft_.resize(count);
+        bounce_.resize(count);
+        for (std::size_t k = 0; k < count; ++k) {
+            const PreparedContact& d = frame_.contacts[moving[k]];
+            const std::size_t r = slots[k];
+            active_.place(r, d, bodies_.data());
+            SoftContact& c = soft_[r];
+            c.prepared_penetration = d.penetration;
+            aim_at(c, d.penetration);
+            // Step 4's v_s, which restitution reverses, judged once against the cut-off.
+            SoftBounce& bounce = bounce_[r];
+            bounce.restitution = d.restitution;
+            if (d.restitution == 0.0) continue;
+            bounce.relative_velocity = d.contact_velocity.x();
+            bounce.cutoff_applied = !(bounce.relative_velocity < -settings_.restitution_cutoff);
+            bounce.bounces = !bounce.cutoff_applied;
+        }
+        if (settings_.warm_start && frame_.memory) {
+            RememberedTotals remembered(*frame_.memory, frame_.scratch);
+            for (const std::uint32_t r : slots)
+                if (const std::optional<RowVisit> total = remembered.of(active_.rows[r], active_.keys[r]))
+                    active_.rows[r].total_impulse = total->after;
+        }
     }
 
     void load_velocities() {
@@ -312,9 +326,10 @@ private:
     Softness softness_;
     // Every buffer in the frame's scratch (FrameContext::scratch).
     std::pmr::vector<SolverBody> bodies_;
-    ActiveRows active_;                    // the rows, in contact order, with their contacts and keys
-    std::pmr::vector<SoftContact> soft_;   // beside each row
-    std::pmr::vector<SoftBounce> bounce_;  // beside each row
+    std::pmr::vector<std::uint32_t> moving_;  // the contacts an impulse can move, in detection's order
+    PlacedRows active_;                       // the rows, in the order of the visits, with their contacts and keys
+    std::pmr::vector<SoftContact> soft_;      // beside each row
+    std::pmr::vector<SoftBounce> bounce_;     // beside each row
     std::pmr::vector<Vec3> start_position_;
     std::pmr::vector<Quat> start_orientation_;
     std::pmr::vector<Vec3> moved_;      // per body: its move since the frame began

@@ -73,7 +73,6 @@ ContactRow* ActiveRows::add(const PreparedContact& contact, const SolverBody* bo
 
 PlacedRows::PlacedRows(std::size_t count, std::pmr::memory_resource* scratch)
     : rows(static_cast<ContactRow*>(scratch->allocate(count * sizeof(ContactRow), alignof(ContactRow))), count),
-      keys(count, scratch),
       scratch_(scratch) {}
 
 PlacedRows::~PlacedRows() {
@@ -84,7 +83,6 @@ PlacedRows::~PlacedRows() {
 void PlacedRows::place(std::size_t slot, const PreparedContact& contact, const SolverBody* bodies) {
     ContactRow* row = new (&rows[slot]) ContactRow;
     fill_contact_row(*row, contact, bodies);
-    keys[slot] = contact_key(contact);
 }
 
 std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const ContactKey& key) {

@@ -138,11 +138,10 @@ public:
     PlacedRows(const PlacedRows&) = delete;
     PlacedRows& operator=(const PlacedRows&) = delete;
 
-    // Fills slot `slot` with the row of `contact`, which can_move, and its key.
+    // Fills slot `slot` with the row of `contact`, which can_move.
     void place(std::size_t slot, const PreparedContact& contact, const SolverBody* bodies);
 
-    std::span<ContactRow> rows;  // in the order they were placed in
-    std::pmr::vector<ContactKey> keys;
+    std::span<ContactRow> rows;  // in the order of their slots
 
 private:
     std::pmr::memory_resource* scratch_;

@@ -70,6 +70,8 @@ public:
           bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
           moving_(moving_contacts(frame)),
           active_(moving_.size(), frame.scratch),
+          slots_(frame.scratch),
+          keys_(frame.scratch),
           soft_(frame.scratch),
           bounce_(frame.scratch),
           start_position_(frame.scratch),
@@ -119,33 +121,39 @@ public:
         store_velocities(bodies_, frame_.bodies);
     }
 
-    void remember(ContactMemory& memory) const { remember_totals(active_.rows, active_.keys, memory); }
+    void remember(ContactMemory& memory) const {
+        memory.remember(keys_, [this](std::size_t k) {
+            const ContactRow& row = active_.rows[slots_[k]];
+            return world_impulse(row, row.total_impulse);
+        });
+    }
 
     int visits() const { return visits_; }
 
 private:
     // The rows of the contacts an impulse can move, each list kept per row built in the order of the visits (for
-    // soft_step.order = colours, colour by colour: methods/graph_colouring.hpp), in place; and the warm start's
-    // totals looked up in detection's order (the memory gives a key shared by two contacts to the first).
+    // soft_step.order = colours, colour by colour: methods/graph_colouring.hpp), in place; their keys in detection's
+    // order, in which the warm start looks last frame's totals up and the memory keeps this frame's (the memory gives
+    // a key two contacts share to the first; most look-ups find their entry next to the last one found).
     void place_rows() {
-        const std::pmr::vector<std::uint32_t>& moving = moving_;
-        const std::size_t count = moving.size();
-        std::pmr::vector<std::uint32_t> slots(frame_.scratch);  // slots[k]: where the k-th one's row goes
+        const std::size_t count = moving_.size();
         if (settings_.soft_step.order == SolveOrder::colours) {
             std::pmr::vector<std::array<int, 2>> pairs(frame_.scratch);
             pairs.reserve(count);
-            for (const std::uint32_t c : moving) pairs.push_back(row_bodies(frame_.contacts[c]));
-            slots = colour_slots(pairs, bodies_, frame_.scratch);
+            for (const std::uint32_t c : moving_) pairs.push_back(row_bodies(frame_.contacts[c]));
+            slots_ = colour_slots(pairs, bodies_, frame_.scratch);
         } else {
-            slots.resize(count);
-            for (std::size_t k = 0; k < count; ++k) slots[k] = static_cast<std::uint32_t>(k);
+            slots_.resize(count);
+            for (std::size_t k = 0; k < count; ++k) slots_[k] = static_cast<std::uint32_t>(k);
         }
+        keys_.reserve(count);
         soft_.resize(count);
         bounce_.resize(count);
         for (std::size_t k = 0; k < count; ++k) {
-            const PreparedContact& d = frame_.contacts[moving[k]];
-            const std::size_t r = slots[k];
+            const PreparedContact& d = frame_.contacts[moving_[k]];
+            const std::size_t r = slots_[k];
             active_.place(r, d, bodies_.data());
+            keys_.push_back(contact_key(d));
             SoftContact& c = soft_[r];
             c.prepared_penetration = d.penetration;
             aim_at(c, d.penetration);
@@ -159,9 +167,11 @@ private:
         }
         if (settings_.warm_start && frame_.memory) {
             RememberedTotals remembered(*frame_.memory, frame_.scratch);
-            for (const std::uint32_t r : slots)
-                if (const std::optional<RowVisit> total = remembered.of(active_.rows[r], active_.keys[r]))
-                    active_.rows[r].total_impulse = total->after;
+            for (std::size_t k = 0; k < count; ++k) {
+                ContactRow& row = active_.rows[slots_[k]];
+                if (const std::optional<RowVisit> total = remembered.of(row, keys_[k]))
+                    row.total_impulse = total->after;
+            }
         }
     }
 
@@ -327,7 +337,9 @@ private:
     // Every buffer in the frame's scratch (FrameContext::scratch).
     std::pmr::vector<SolverBody> bodies_;
     std::pmr::vector<std::uint32_t> moving_;  // the contacts an impulse can move, in detection's order
-    PlacedRows active_;                       // the rows, in the order of the visits, with their contacts and keys
+    PlacedRows active_;                       // the rows, in the order of the visits
+    std::pmr::vector<std::uint32_t> slots_;   // per moving contact (detection's order): its row's slot in active_
+    std::pmr::vector<ContactKey> keys_;       // per moving contact: its key in the ContactMemory
     std::pmr::vector<SoftContact> soft_;      // beside each row
     std::pmr::vector<SoftBounce> bounce_;     // beside each row
     std::pmr::vector<Vec3> start_position_;

@@ -33,14 +33,22 @@ Softness soft_step_softness(const ResolverSettings& settings) {
 
 namespace {
 
-// The contacts an impulse can move (can_move), by their index, in detection's order: the ones that get rows.
-std::pmr::vector<std::uint32_t> moving_contacts(const FrameContext& frame) {
-    std::pmr::vector<std::uint32_t> moving(frame.scratch);
-    moving.reserve(frame.contacts.size());
-    for (std::size_t c = 0; c < frame.contacts.size(); ++c)
-        if (can_move(frame.contacts[c])) moving.push_back(static_cast<std::uint32_t>(c));
-    return moving;
-}
+// The contacts an impulse can move (can_move), by their index, in detection's order: the ones that get rows; and,
+// for a solve in colours, each one's bodies (ContactRow::body), read in the same pass over the contacts.
+struct MovingContacts {
+    std::pmr::vector<std::uint32_t> index;
+    std::pmr::vector<std::array<int, 2>> bodies;  // empty unless asked for
+
+    MovingContacts(const FrameContext& frame, bool with_bodies) : index(frame.scratch), bodies(frame.scratch) {
+        index.reserve(frame.contacts.size());
+        if (with_bodies) bodies.reserve(frame.contacts.size());
+        for (std::size_t c = 0; c < frame.contacts.size(); ++c) {
+            if (!can_move(frame.contacts[c])) continue;
+            index.push_back(static_cast<std::uint32_t>(c));
+            if (with_bodies) bodies.push_back(row_bodies(frame.contacts[c]));
+        }
+    }
+};
 
 // What soft step keeps per contact beside its rows, read on every visit. (Small: the rows and these are read
 // through once per sweep, and together they must stay in the core's cache.)
@@ -68,8 +76,8 @@ public:
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
           bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          moving_(moving_contacts(frame)),
-          active_(moving_.size(), frame.scratch),
+          moving_(frame, frame.settings.soft_step.order == SolveOrder::colours),
+          active_(moving_.index.size(), frame.scratch),
           slots_(frame.scratch),
           keys_(frame.scratch),
           soft_(frame.scratch),
@@ -136,12 +144,9 @@ private:
     // order, in which the warm start looks last frame's totals up and the memory keeps this frame's (the memory gives
     // a key two contacts share to the first; most look-ups find their entry next to the last one found).
     void place_rows() {
-        const std::size_t count = moving_.size();
+        const std::size_t count = moving_.index.size();
         if (settings_.soft_step.order == SolveOrder::colours) {
-            std::pmr::vector<std::array<int, 2>> pairs(frame_.scratch);
-            pairs.reserve(count);
-            for (const std::uint32_t c : moving_) pairs.push_back(row_bodies(frame_.contacts[c]));
-            slots_ = colour_slots(pairs, bodies_, frame_.scratch);
+            slots_ = colour_slots(moving_.bodies, bodies_, frame_.scratch);
         } else {
             slots_.resize(count);
             for (std::size_t k = 0; k < count; ++k) slots_[k] = static_cast<std::uint32_t>(k);
@@ -150,7 +155,7 @@ private:
         soft_.resize(count);
         bounce_.resize(count);
         for (std::size_t k = 0; k < count; ++k) {
-            const PreparedContact& d = frame_.contacts[moving_[k]];
+            const PreparedContact& d = frame_.contacts[moving_.index[k]];
             const std::size_t r = slots_[k];
             active_.place(r, d, bodies_.data());
             keys_.push_back(contact_key(d));
@@ -336,12 +341,12 @@ private:
     Softness softness_;
     // Every buffer in the frame's scratch (FrameContext::scratch).
     std::pmr::vector<SolverBody> bodies_;
-    std::pmr::vector<std::uint32_t> moving_;  // the contacts an impulse can move, in detection's order
-    PlacedRows active_;                       // the rows, in the order of the visits
-    std::pmr::vector<std::uint32_t> slots_;   // per moving contact (detection's order): its row's slot in active_
-    std::pmr::vector<ContactKey> keys_;       // per moving contact: its key in the ContactMemory
-    std::pmr::vector<SoftContact> soft_;      // beside each row
-    std::pmr::vector<SoftBounce> bounce_;     // beside each row
+    MovingContacts moving_;
+    PlacedRows active_;                      // the rows, in the order of the visits
+    std::pmr::vector<std::uint32_t> slots_;  // per moving contact (detection's order): its row's slot in active_
+    std::pmr::vector<ContactKey> keys_;      // per moving contact: its key in the ContactMemory
+    std::pmr::vector<SoftContact> soft_;     // beside each row
+    std::pmr::vector<SoftBounce> bounce_;    // beside each row
     std::pmr::vector<Vec3> start_position_;
     std::pmr::vector<Quat> start_orientation_;
     std::pmr::vector<Vec3> moved_;      // per body: its move since the frame began

@@ -98,7 +98,9 @@ TEST_CASE("a body with more neighbours than moving colours sends the rest to the
     CHECK(order[2] == 0);
 }
 
-TEST_CASE("on a pyramid's contacts no two pairs of a colour share a moving body, and the order visits every row once") {
+TEST_CASE(
+    "on a pyramid's contacts no two pairs of a colour share a moving body, the order visits every row once, and the "
+    "slots are its inverse") {
     const Scene scene = test::shipped_under("pyramid_20", "soft_step_coloured");
     World world(scene);
     for (int frame = 0; frame < 30; ++frame) world.step();
@@ -132,6 +134,15 @@ TEST_CASE("on a pyramid's contacts no two pairs of a colour share a moving body,
     }
     std::vector<std::uint32_t> order = order_of(rows, bodies);
     for (std::size_t k = 1; k < order.size(); ++k) CHECK(colours[order[k - 1]] <= colours[order[k]]);
+    // The slots a method builds its rows in (from each row's bodies alone) are where the order visits each row.
+    std::vector<std::array<int, 2>> bodies_of_rows;
+    for (const ContactRow& row : rows) bodies_of_rows.push_back(row.body);
+    const std::pmr::vector<std::uint32_t> slots = colour_slots(bodies_of_rows, bodies, std::pmr::new_delete_resource());
+    REQUIRE(slots.size() == rows.size());
+    std::size_t misplaced = 0;
+    for (std::size_t r = 0; r < rows.size(); ++r)
+        if (order[slots[r]] != r) ++misplaced;
+    CHECK(misplaced == 0);
     std::sort(order.begin(), order.end());
     std::vector<std::uint32_t> every(rows.size());
     std::iota(every.begin(), every.end(), 0u);

@@ -81,7 +81,7 @@ PlacedRows::~PlacedRows() {
 }
 
 void PlacedRows::place(std::size_t slot, const PreparedContact& contact, const SolverBody* bodies) {
-    ContactRow* row = new (&rows[slot]) ContactRow;
+    ContactRow* row = new (rows.data() + slot) ContactRow;  // the slot's row begins here
     fill_contact_row(*row, contact, bodies);
 }
 

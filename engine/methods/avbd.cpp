@@ -8,7 +8,9 @@
 // h = settings.duration:
 //   1. the contacts' rows, linearised at the frame's start (Sec. 4): derivation/avbd/contact_constraint.hpp;
 //   2. warm start (Eq. 19): each contact's lambda and k from the contact memory, decayed by alpha gamma and
-//      gamma, or lambda = 0 and k = k_min for a new one (derivation/avbd/dual_update.hpp);
+//      gamma, or lambda = 0 and k = k_min for a new one (derivation/avbd/dual_update.hpp), with beta, k_min and
+//      k_max the settings' per-kilogram numbers times the lighter body's mass
+//      (derivation/avbd/mass_scaled_penalty.hpp);
 //   3. each body's inertial target y = x + h v + h^2 g (Eq. 2) and its initial guess (VBD's adaptive one):
 //      derivation/avbd/implicit_euler.hpp;
 //   4. `avbd.iterations` times: a primal sweep, every body in index order solving its block
@@ -34,6 +36,7 @@
 #include "derivation/avbd/contact_force.hpp"
 #include "derivation/avbd/dual_update.hpp"
 #include "derivation/avbd/implicit_euler.hpp"
+#include "derivation/avbd/mass_scaled_penalty.hpp"
 #include "derivation/contact_velocity.hpp"
 #include "derivation/delta_velocity_per_unit_impulse.hpp"
 #include "derivation/velocity_change.hpp"
@@ -55,6 +58,7 @@ struct AvbdContact {
     ConstraintJacobian jacobian;     // the rows' gradients (Sec. 4)
     double initial_normal = 0.0;     // C_n(x-) = slop - penetration (m)
     double friction = 0.0;           // mu
+    PenaltyParameters penalty;       // its beta, k_min and k_max: the settings' per kg times the lighter body's mass
     DualVariables dual;              // lambda (N) and k (N/m)
 };
 
@@ -181,6 +185,7 @@ private:
             c.jacobian = constraint_jacobian(row.basis, row.relative_position);
             c.initial_normal = avbd_.slop - row.penetration;
             c.friction = row.friction;
+            c.penalty = mass_scaled_penalty(avbd_, {mass_of(body[0]), mass_of(body[1])});
             const ContactKey key = contact_key(row);
             keys_.push_back(key);
             std::optional<RememberedDual> remembered;
@@ -191,10 +196,10 @@ private:
                     const std::optional<std::array<double, 2>> k = frame_.memory->stiffness_at(slot);
                     remembered = RememberedDual{
                         to_contact(row.basis, frame_.memory->impulse_at(slot)),
-                        k ? Stiffness{(*k)[0], (*k)[1]} : Stiffness{avbd_.stiffness_min, avbd_.stiffness_min}};
+                        k ? Stiffness{(*k)[0], (*k)[1]} : Stiffness{c.penalty.stiffness_min, c.penalty.stiffness_min}};
                 }
             }
-            c.dual = warm_start(remembered, c.friction, avbd_);  // (Eq. 19)
+            c.dual = warm_start(remembered, c.friction, avbd_, c.penalty);  // (Eq. 19)
             Bounce& bounce = bounce_.emplace_back();
             bounce.restitution = row.restitution;
             if (row.restitution != 0.0) bounce.separating_velocity = row.contact_velocity.x();
@@ -224,6 +229,9 @@ private:
                 displacement_[b] = target_[b];
         }
     }
+
+    // A body's mass as its block takes it (kg): 0 for the world and for a body that cannot translate.
+    double mass_of(int body) const { return body == world_body ? 0.0 : mass_[static_cast<std::size_t>(body)].mass; }
 
     const Displacement& displacement_of(int body) const {
         static const Displacement world{};
@@ -275,7 +283,7 @@ private:
         for (AvbdContact& c : contacts_) {
             const ConstraintValue value = constraint_of(c, alpha);
             const ContactForce force = contact_force(c.dual.lambda, c.dual.stiffness, value.constraint, c.friction);
-            const DualVariables updated = dual_update(force, c.dual.stiffness, value.constraint, avbd_);
+            const DualVariables updated = dual_update(force, c.dual.stiffness, value.constraint, c.penalty);
             if (frame_.keeping)
                 frame_.recorder.dual_visit({0, it, SolverStage::dual}, {rows_of(c, 0, value, force), updated});
             c.dual = updated;

@@ -6,6 +6,7 @@
 #include "derivation/avbd/block_solve.hpp"
 #include "derivation/avbd/body_block.hpp"
 #include "derivation/avbd/dual_update.hpp"
+#include "derivation/avbd/mass_scaled_penalty.hpp"
 #include "formats/json_text.hpp"
 #include "formats/settings_json.hpp"
 #include "formats/trace_json.hpp"
@@ -102,7 +103,7 @@ TEST_CASE("a body visit's block, move and displacement and a dual update's value
     const AvbdSettings& avbd = scene.settings.avbd;
     std::map<int, Displacement> last;   // per body: its displacement after its latest visit
     std::map<int, DualVariables> dual;  // per contact: lambda and k after its latest dual update
-    int checked_blocks = 0, checked_duals = 0;
+    int checked_blocks = 0, checked_duals = 0, between_boxes = 0;
     for (const VelocityIteration& it : f.velocity.iterations) {
         if (const auto& v = it.body_visit) {
             // The block solve of the recorded block gives the recorded move, to the bit (Eq. 4).
@@ -144,13 +145,23 @@ TEST_CASE("a body visit's block, move and displacement and a dual update's value
             const ContactPreparation& p = f.contacts.at(static_cast<std::size_t>(it.contact));
             const ContactForce force = contact_force(d->rows.lambda, d->rows.stiffness, d->rows.constraint, p.friction);
             CHECK(force.force == d->rows.force);
-            CHECK(dual_update(force, d->rows.stiffness, d->rows.constraint, avbd) == d->updated);  // (Eqs. 11, 16)
+            // beta and k_max per kg, times the lighter of the contact's bodies that translate (mass_ratio_100: the
+            // 1 kg box's on the ground and under the 100 kg box), read off the scene as a trace reader would.
+            std::array<double, 2> mass{0.0, 0.0};
+            for (int i = 0; i < 2; ++i)
+                if (p.bodies[i] != world_body)
+                    mass[i] = 1.0 / scene.bodies.at(static_cast<std::size_t>(p.bodies[i])).inverse_mass;
+            const PenaltyParameters penalty = mass_scaled_penalty(avbd, mass);
+            CHECK(dual_update(force, d->rows.stiffness, d->rows.constraint, penalty) == d->updated);  // (Eqs. 11, 16)
+            if (p.bodies[1] != world_body) ++between_boxes;
+            CHECK(penalty.mass == 1.0);
             dual[it.contact] = d->updated;
             ++checked_duals;
         }
     }
     CHECK(checked_blocks == 22);
     CHECK(checked_duals == 80);
+    CHECK(between_boxes == 40);  // the four corners between the boxes, each sweep: 1 kg, not 100
     // The bodies end where their last visit left them (the post-stabilisation sweep's displacement).
     for (const auto& moved : last) {
         const auto body = static_cast<std::size_t>(moved.first);

@@ -6,24 +6,24 @@
 namespace impulse {
 
 DualVariables dual_update(const ContactForce& force, const Stiffness& stiffness, const Vec3& constraint,
-                          const AvbdSettings& settings) {
+                          const PenaltyParameters& penalty) {
     DualVariables d{force.force, stiffness};  // lambda <- F  (Eq. 11)
     // k <- min(k + beta |C*|, k_max) inside the bounds  (Eq. 16)
     if (force.pushing)
         d.stiffness.normal =
-            std::min(stiffness.normal + settings.beta * std::abs(constraint.x()), settings.stiffness_max);
+            std::min(stiffness.normal + penalty.beta * std::abs(constraint.x()), penalty.stiffness_max);
     if (force.pushing && !force.sliding && force.block_stiffness.tangential > 0.0)
         d.stiffness.tangential =
             std::min(stiffness.tangential +
-                         settings.beta * std::sqrt(constraint.y() * constraint.y() + constraint.z() * constraint.z()),
-                     settings.stiffness_max);
+                         penalty.beta * std::sqrt(constraint.y() * constraint.y() + constraint.z() * constraint.z()),
+                     penalty.stiffness_max);
     return d;
 }
 
-DualVariables warm_start(const std::optional<RememberedDual>& remembered, double friction,
-                         const AvbdSettings& settings) {
+DualVariables warm_start(const std::optional<RememberedDual>& remembered, double friction, const AvbdSettings& settings,
+                         const PenaltyParameters& penalty) {
     DualVariables d;
-    d.stiffness = {settings.stiffness_min, settings.stiffness_min};
+    d.stiffness = {penalty.stiffness_min, penalty.stiffness_min};
     if (!remembered) return d;
     const double keep = settings.post_stabilize ? 1.0 : settings.alpha * settings.gamma;  // (Eq. 19)
     Vec3 lambda = keep * remembered->lambda;
@@ -39,7 +39,7 @@ DualVariables warm_start(const std::optional<RememberedDual>& remembered, double
     }
     d.lambda = lambda;
     const auto decayed = [&](double k) {
-        return std::clamp(settings.gamma * k, settings.stiffness_min, settings.stiffness_max);
+        return std::clamp(settings.gamma * k, penalty.stiffness_min, penalty.stiffness_max);
     };
     d.stiffness = {decayed(remembered->stiffness.normal), decayed(remembered->stiffness.tangential)};
     return d;

@@ -17,9 +17,12 @@
 // gamma < 1 lets a stiffness that is no longer needed decay, and alpha takes out the share of lambda that held the
 // penetration the stabilisation leaves. With post-stabilisation lambda is kept whole. A new contact
 // starts at lambda = 0, k = k_min.
+// beta, k_min and k_max are the contact's own: the settings' per-kilogram numbers times the mass of the lighter body
+// it holds (derivation/avbd/mass_scaled_penalty.hpp).
 
 #include "derivation/avbd/avbd_settings.hpp"
 #include "derivation/avbd/contact_force.hpp"
+#include "derivation/avbd/mass_scaled_penalty.hpp"
 
 #include <optional>
 
@@ -34,7 +37,7 @@ struct DualVariables {
 
 // Eqs. 11 and 16, from the contact's force at the bodies' new positions and its constraint there.
 DualVariables dual_update(const ContactForce& force, const Stiffness& stiffness, const Vec3& constraint,
-                          const AvbdSettings& settings);
+                          const PenaltyParameters& penalty);
 
 // What a contact remembered from last frame: its lambda already in this frame's contact coordinates, its stiffness.
 struct RememberedDual {
@@ -43,8 +46,9 @@ struct RememberedDual {
 };
 
 // Eq. 19: the frame's starting lambda and k (a new contact: `remembered` empty). The remembered lambda is first put
-// back inside its bounds (a turned basis may have moved it out): lambda_n >= 0, |lambda_t| <= mu lambda_n.
-DualVariables warm_start(const std::optional<RememberedDual>& remembered, double friction,
-                         const AvbdSettings& settings);
+// back inside its bounds (a turned basis may have moved it out): lambda_n >= 0, |lambda_t| <= mu lambda_n. `settings`
+// gives alpha, gamma and post_stabilize, `penalty` the contact's k_min and k_max.
+DualVariables warm_start(const std::optional<RememberedDual>& remembered, double friction, const AvbdSettings& settings,
+                         const PenaltyParameters& penalty);
 
 }  // namespace impulse

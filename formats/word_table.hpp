@@ -450,8 +450,10 @@ inline constexpr std::array table{
          step::dual_update, "", "V", object},
     Word{"dual_update.lambda", "λ ← F", "(11)", "N", "the force becomes the multiplier the next sweep starts from",
          step::dual_update, "force", "V", vec3},
-    Word{"dual_update.stiffness", "k ← min(k + β |C*|, k_max) while the row is inside its bounds", "(16)", "N/m",
-         "a row still violated grows stiffer", step::dual_update, "stiffness constraint force", "V", vec2, context},
+    Word{"dual_update.stiffness",
+         "k ← min(k + m β |C*|, m k_max) while the row is inside its bounds, m the lighter moving body's mass", "(16)",
+         "N/m", "a row still violated grows stiffer", step::dual_update, "stiffness constraint force", "V", vec2,
+         context},
 
     // What the frame's resolution did to the bodies.
     Word{"bodies_after", "bodies_before + every change", "", "", "each body's state after resolution", step::updates,

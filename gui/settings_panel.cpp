@@ -101,12 +101,12 @@ void method_setting(model::Session& session, UiState& state, model::ActionHost& 
         enum_combo(session, state, host, "solve order", name, formats::solve_order_names, s.soft_step.order);
     if (key == "avbd.iterations") integer_field(session, state, host, "iterations", name, s.avbd.iterations);
     if (key == "avbd.alpha") number_field(session, state, host, "stabilisation α", name, s.avbd.alpha);
-    if (key == "avbd.beta") number_field(session, state, host, "stiffness ramp β (N/m²)", name, s.avbd.beta);
+    if (key == "avbd.beta") number_field(session, state, host, "stiffness ramp β (N/m² per kg)", name, s.avbd.beta);
     if (key == "avbd.gamma") number_field(session, state, host, "warm-start decay γ", name, s.avbd.gamma);
     if (key == "avbd.stiffness_min")
-        number_field(session, state, host, "stiffness min (N/m)", name, s.avbd.stiffness_min);
+        number_field(session, state, host, "stiffness min (N/m per kg)", name, s.avbd.stiffness_min);
     if (key == "avbd.stiffness_max")
-        number_field(session, state, host, "stiffness max (N/m)", name, s.avbd.stiffness_max);
+        number_field(session, state, host, "stiffness max (N/m per kg)", name, s.avbd.stiffness_max);
     if (key == "avbd.slop") number_field(session, state, host, "slop (m)", name, s.avbd.slop);
     if (key == "avbd.post_stabilize") bool_field(session, state, host, "post-stabilise", name, s.avbd.post_stabilize);
     if (key == "baumgarte") bool_field(session, state, host, "Baumgarte bias (step 5)", name, s.baumgarte);

@@ -146,16 +146,12 @@ inline constexpr MethodRows<PositionMethod> position_methods{{
      "no position phase: only velocities (Baumgarte's step-5 bias, a soft contact) separate the bodies"},
 }};
 
-// The row of a settings value.
+// The row of a settings value: the rows stand in enumerator order (checked in method_table.cpp).
 constexpr const MethodRow<VelocityMethod>& method_row(VelocityMethod id) {
-    for (const auto& row : velocity_methods)
-        if (row.id == id) return row;
-    return velocity_methods.front();  // unreachable: every enumerator has a row (checked below)
+    return velocity_methods[static_cast<std::size_t>(id)];
 }
 constexpr const MethodRow<PositionMethod>& method_row(PositionMethod id) {
-    for (const auto& row : position_methods)
-        if (row.id == id) return row;
-    return position_methods.front();
+    return position_methods[static_cast<std::size_t>(id)];
 }
 
 // The position method that runs with these settings: none when the velocity method owns the whole step.

@@ -17,29 +17,19 @@ namespace impulse {
 
 enum class PhaseOrder { positions_first, velocities_first };
 
+// The methods, each described by its row in methods/method_table.hpp (its name, what it does, what it reads);
+// `count` is not a method but how many there are.
 enum class PositionMethod {
-    linear_projection,     // move the bodies apart along the normal only, in proportion to inverse mass
-    nonlinear_projection,  // move and turn them, in proportion to linear and angular inertia (the book)
-    velocity_based,        // move them back along their paths, then project whatever remains
-    relaxation,            // nonlinear projection of a fraction of each contact's penetration per pass
-    split_impulse,         // a second velocity solve on pseudo-velocities that only move positions and are
-                           // then discarded, so pushing apart adds no energy (Bullet's split impulse)
-    none,                  // no position phase: nothing moves the bodies apart but their velocities (with
-                           // `baumgarte`, step 5's position bias; soft step's soft contact)
-    count,                 // not a method: how many there are, each with its row in methods/method_table.hpp
+    linear_projection,
+    nonlinear_projection,
+    velocity_based,
+    relaxation,
+    split_impulse,
+    none,
+    count
 };
 
-enum class VelocityMethod {
-    worst_first,             // the book: resolve the contact with the largest desired delta v, update the others
-    sequential_sweep,        // every contact in turn, the book's impulse on its current velocity, `sweeps` times
-    projected_gauss_seidel,  // sequential impulses: accumulated impulse per contact, clamped to push only and
-                             // to the friction cone, warm started from last frame's matching contact
-    soft_step,               // Box2D v3's soft step: sub-steps with soft (spring-damper) contacts, relax, then
-                             // restitution; it integrates the bodies itself
-    avbd,                    // augmented vertex block descent (Giles et al. 2025): each body's 6x6 block solved
-                             // in turn against its contacts' augmented-Lagrangian forces; it integrates the bodies
-    count,                   // not a method: how many there are, each with its row in methods/method_table.hpp
-};
+enum class VelocityMethod { worst_first, sequential_sweep, projected_gauss_seidel, soft_step, avbd, count };
 
 // How worst-first finds its next contact. Both choose the same contacts in the same order and give identical
 // results; full_scan is the reference engine's loop over every contact per iteration (cost ~ contacts^2).

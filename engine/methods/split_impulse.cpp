@@ -6,7 +6,7 @@
 // energy (Baumgarte's bias does), and the real velocity solve runs without any position bias.
 //
 // Per contact, the normal row of methods/contact_rows.hpp only (friction has no business moving positions):
-//   target          = beta max(penetration - slop, 0) / h     penetration as prepared (methods/position_bias.hpp)
+//   target          = beta max(penetration - slop, 0) / h     penetration as prepared (settings/settings.hpp)
 //   v_push          = sum over bodies of +-(pseudo v + pseudo w x q_rel) . n           (9.5, body 0 minus body 1)
 //   d lambda        = (target - v_push) / d                   d = step 3's delta velocity per unit impulse
 //   lambda          = max(lambda + d lambda, 0)               the accumulated push, never a pull
@@ -29,7 +29,6 @@
 
 #include "methods/contact_rows.hpp"
 #include "methods/method.hpp"
-#include "preparation/position_bias.hpp"
 
 #include <algorithm>
 #include <cmath>

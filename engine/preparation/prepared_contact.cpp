@@ -1,7 +1,6 @@
 #include "preparation/prepared_contact.hpp"
 
 #include "preparation/bookkeeping.hpp"
-#include "preparation/position_bias.hpp"
 
 #include <utility>
 

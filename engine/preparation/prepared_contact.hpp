@@ -71,7 +71,7 @@ OrientedContact oriented(const Contact& contact);
 
 // What steps 4 and 5 read: the bodies' motion.
 PerBody<BodyMotion> contact_motion(const std::array<int, 2>& bodies, std::span<const RigidBody> all_bodies);
-// Step 5's Baumgarte term, when the setting is on (preparation/position_bias.hpp).
+// Step 5's Baumgarte term, when the setting is on (settings/settings.hpp).
 std::optional<double> step_5_position_bias(double penetration, const ResolverSettings& settings);
 
 // Every contact, in order, into `prepared` (emptied first).

@@ -8,6 +8,7 @@
 #include "derivation/position_change.hpp"
 #include "math/rotation.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <span>
 #include <string>
@@ -47,13 +48,20 @@ enum class SolveOrder {
 };
 
 // The velocity-level position correction of `baumgarte` (a term of step 5) and of split_impulse (the push's
-// target): factor x max(penetration - slop, 0) / duration.
+// target): instead of moving the bodies, ask the contact to separate at a speed that would close a share of the
+// penetration within one frame. Baumgarte (1972) for constraint drift; in games Catto's sequential impulses and
+// Bullet.
 struct PositionBiasSettings {
     double factor = 0.2;  // beta: share of the penetration removed per frame
-    double slop = 0.005;  // m: penetration left alone, so resting contacts do not jitter
+    double slop = 0.005;  // m: penetration left alone, so resting contacts do not jitter between touching and parting
 
     bool operator==(const PositionBiasSettings&) const = default;
 };
+
+// position_bias = beta x max(penetration - slop, 0) / h, h the frame duration.
+inline double position_bias(double penetration, const PositionBiasSettings& bias, double duration) {
+    return bias.factor * std::max(penetration - bias.slop, 0.0) / duration;
+}
 
 // Box2D v3's soft step (solver.c, contact_solver.c): `substeps` sub-steps per frame, each integrating the
 // velocities, solving with a soft contact of stiffness `contact_hertz` and damping ratio `damping_ratio`,

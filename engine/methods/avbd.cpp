@@ -439,14 +439,7 @@ private:
 }  // namespace
 
 PhaseOutcome avbd_step(FrameContext& frame) {
-    Avbd step(frame);
-    step.run();
-    remember_or_forget(frame, step);
-    // Every block solve, dual update and bounce counts as an iteration; the schedule is fixed, so it runs to its end
-    // unless the stop flag cuts it short (frame.cut_short).
-    const PhaseOutcome outcome{step.visit_limit(), step.visits(), StopReason::sweeps_complete};
-    frame.recorder.end_phase(Phase::velocity, outcome);
-    return outcome;
+    return whole_step<Avbd>(frame);
 }
 
 }  // namespace impulse

@@ -137,6 +137,7 @@ public:
     }
 
     int visits() const { return visits_; }
+    int visit_limit() const { return visits_; }  // the schedule is fixed: it always runs to its end
 
 private:
     // The rows of the contacts an impulse can move, each list kept per row built in the order of the visits (for
@@ -194,12 +195,6 @@ private:
             moved_[b] = body.position - start_position_[b];
             turned_[b] = (body.orientation * start_orientation_[b].conjugate()).toRotationMatrix();
         }
-    }
-
-    // Contact r's p once the bodies moved, and what it asks of this sub-step's relax and the next one's solve.
-    [[gnu::always_inline]] void track_penetration(std::size_t r) {
-        const double p = penetration(r);
-        aim_at(soft_[r], p);
     }
 
     // p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)]: the anchors turn with their bodies.
@@ -262,14 +257,14 @@ private:
     }
 
     // One sweep of solve (with the soft bias) or relax (without); `moved`: the bodies moved since the last sweep,
-    // so each contact's p is found first (track_penetration). Its visits are kept for the recorder in a buffer and
-    // reported after the sweep (KeptVisit), solved again with the targets they had (a contact's aim changes only at
-    // the sweep that finds its p, before its visit).
+    // so each contact's p is found first, and what it asks of this sub-step's relax and the next one's solve. Its
+    // visits are kept for the recorder in a buffer and reported after the sweep (KeptVisit), solved again with the
+    // targets they had (a contact's aim changes only at the sweep that finds its p, before its visit).
     template <bool biased, bool moved = false>
     void sweep(const SweepPlace& place) {
         KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
         for (std::size_t r = 0; r < active_.rows.size(); ++r) {
-            if constexpr (moved) track_penetration(r);
+            if constexpr (moved) aim_at(soft_[r], penetration(r));
             const ContactRow& row = active_.rows[r];
             const Axes velocity = row_velocity(row, bodies_.data());
             const Axes before = row.total_impulse;
@@ -358,13 +353,7 @@ private:
 }  // namespace
 
 PhaseOutcome soft_step(FrameContext& frame) {
-    SoftStep step(frame);
-    step.run();
-    remember_or_forget(frame, step);
-    // Every visit of every stage is an iteration; the schedule is fixed, so it always runs to its end.
-    const PhaseOutcome outcome{step.visits(), step.visits(), StopReason::sweeps_complete};
-    frame.recorder.end_phase(Phase::velocity, outcome);
-    return outcome;
+    return whole_step<SoftStep>(frame);
 }
 
 }  // namespace impulse

@@ -61,16 +61,20 @@ inline VelocityResolution visit_contact(FrameContext& frame, FrictionMatrices& k
     return resolution;
 }
 
-// A whole-step method's last act (soft step, AVBD): what it accumulated kept in the contact memory for the next
-// frame when warm starting, or the memory emptied, so that warm starting switched on later starts from nothing
-// rather than from totals of frames ago.
+// A method that owns the whole step (soft step, AVBD) runs its Step; then what it accumulated is kept in the
+// contact memory for the next frame when warm starting, or the memory emptied, so that warm starting switched on
+// later starts from nothing rather than from totals of frames ago. Every visit counts as an iteration.
 template <typename Step>
-void remember_or_forget(const FrameContext& frame, const Step& step) {
-    if (!frame.memory) return;
-    if (frame.settings.warm_start)
+PhaseOutcome whole_step(FrameContext& frame) {
+    Step step(frame);
+    step.run();
+    if (frame.memory && frame.settings.warm_start)
         step.remember(*frame.memory);
-    else
+    else if (frame.memory)
         frame.memory->clear();
+    const PhaseOutcome outcome{step.visit_limit(), step.visits(), StopReason::sweeps_complete};
+    frame.recorder.end_phase(Phase::velocity, outcome);
+    return outcome;
 }
 
 }  // namespace impulse

@@ -6,10 +6,11 @@
 //
 // The hot loop reads plain data (Box2D's contact constraint structs): a ContactRow per contact holding what a
 // visit needs, copied once per frame from the contact's preparation, and a SolverBody per body holding its
-// velocities and mass. The rows derive nothing themselves: step 3's d, K's entries, step 4's point velocity and
-// step 7's apply are the derivation's own inline forms (derivation/*.hpp), the ones the book's methods use.
-// A method runs one loop and reports each visit only when the recorder keeps the frame (record/visits.hpp):
-// recording costs a branch per visit when off, and changes no bit when on.
+// velocities and mass; the row functions are always inlined (IMPULSE_KERNEL), so a sweep compiles to one loop. The rows
+// derive nothing themselves: step 3's d, K's entries, step 4's point velocity and step 7's apply are the derivation's
+// own inline forms (derivation/*.hpp), the ones the book's methods use. A method runs one loop and reports each visit
+// only when the recorder keeps the frame (record/visits.hpp): recording costs a branch per visit when off, and changes
+// no bit when on.
 //
 // The normal row (K = the 3x3 velocity change per unit impulse in contact coordinates, K_nn = d of step 3):
 //   delta lambda_n = normal_mass mass_scale (target - v_n) - impulse_scale lambda_n,   normal_mass = 1 / d
@@ -36,6 +37,7 @@
 #include "derivation/contact_velocity.hpp"
 #include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
+#include "math/products.hpp"
 #include "memory/contact_memory.hpp"
 #include "record/iteration_records.hpp"
 #include "preparation/prepared_contact.hpp"
@@ -44,10 +46,6 @@
 #include <memory_resource>
 #include <span>
 #include <vector>
-
-// The row functions are small and called from every visit of every sweep: they are always inlined, so a sweep
-// compiles to one loop (GCC and clang would otherwise keep some of them out of line at -O2).
-#define IMPULSE_ROW_FUNCTION [[gnu::always_inline]] inline
 
 namespace impulse {
 
@@ -160,7 +158,7 @@ inline double prepared_normal_velocity(const PreparedContact& c) {
     return c.contact_velocity.x() + c.desired_delta_velocity;
 }
 // A body's point velocity at the row's anchor (step 4's, 9.5), world, added to `out` with `sign`.
-IMPULSE_ROW_FUNCTION void add_point_velocity(const SolverBody& b, const Vec3& r, double sign, double* out) {
+IMPULSE_KERNEL void add_point_velocity(const SolverBody& b, const Vec3& r, double sign, double* out) {
     const Vec3 v = point_velocity(b.velocity, b.angular_velocity, r);
     out[0] += sign * v.x();
     out[1] += sign * v.y();
@@ -173,7 +171,7 @@ inline Vec3 normal_of(const ContactRow& row) {
 }
 
 // Body 0's point velocity minus body 1's at the row's anchors, world.
-IMPULSE_ROW_FUNCTION Vec3 relative_velocity(const ContactRow& row, const SolverBody* bodies) {
+IMPULSE_KERNEL Vec3 relative_velocity(const ContactRow& row, const SolverBody* bodies) {
     double relative[3] = {0.0, 0.0, 0.0};
     add_point_velocity(bodies[row.body[0]], row.anchor[0], 1.0, relative);
     if (row.body[1] >= 0) add_point_velocity(bodies[row.body[1]], row.anchor[1], -1.0, relative);
@@ -181,14 +179,14 @@ IMPULSE_ROW_FUNCTION Vec3 relative_velocity(const ContactRow& row, const SolverB
 }
 
 // Step 4 for the row: the contact velocity (v_n, v_t1, v_t2) from the bodies as they are now, plus slip_offset.
-IMPULSE_ROW_FUNCTION Axes row_velocity(const ContactRow& row, const SolverBody* bodies) {
+IMPULSE_KERNEL Axes row_velocity(const ContactRow& row, const SolverBody* bodies) {
     const Vec3 v = transposed_times(row.basis, relative_velocity(row, bodies));
     return {v.x(), v.y() + row.slip_offset[0], v.z() + row.slip_offset[1]};
 }
 
 // lambda_n after the normal row; `unclamped` receives the total before the push-only clamp.
-IMPULSE_ROW_FUNCTION double normal_row(double total, double normal_velocity, double normal_mass,
-                                       const NormalTarget& target, double& unclamped) {
+IMPULSE_KERNEL double normal_row(double total, double normal_velocity, double normal_mass, const NormalTarget& target,
+                                 double& unclamped) {
     unclamped =
         total + normal_mass * target.mass_scale * (target.velocity - normal_velocity) - target.impulse_scale * total;
     return unclamped < 0.0 ? 0.0 : unclamped;
@@ -197,8 +195,8 @@ IMPULSE_ROW_FUNCTION double normal_row(double total, double normal_velocity, dou
 // The point of the disc |lambda_t| <= limit nearest (x, y) in K_tt's metric, for (x, y) outside it (see the
 // header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt (x, y), Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
 // `k` is K_tt as (11, 12, 22), `k_inverse` its inverse. Returns the point in (x, y).
-IMPULSE_ROW_FUNCTION void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse,
-                                          double& x, double& y, double limit) {
+IMPULSE_KERNEL void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse, double& x,
+                                    double& y, double limit) {
     const double wx = k[0] * x + k[1] * y, wy = k[1] * x + k[2] * y;  // w = K_tt free
     const double inverse_limit = 1.0 / limit;
     // (K + nu 1)^-1 at nu = 0 is K^-1; after that, its adjugate [[k22 + nu, -k12], [-k12, k11 + nu]] / det.
@@ -248,8 +246,8 @@ struct RowVisit {
 // (x, y) before, and the cone's radius mu lambda_n: (x, y) becomes lambda_t,free in (free_x, free_y) and the total
 // after in (x, y); returns whether the contact slides (the cone clamped). Plain doubles in and out, so the caller's
 // values stay in registers.
-IMPULSE_ROW_FUNCTION bool friction_rows(const ContactRow& row, double s1, double s2, double limit, double& free_x,
-                                        double& free_y, double& x, double& y) {
+IMPULSE_KERNEL bool friction_rows(const ContactRow& row, double s1, double s2, double limit, double& free_x,
+                                  double& free_y, double& x, double& y) {
     const std::array<double, 3>& m = row.tangent_mass;
     free_x = x - (m[0] * s1 + m[1] * s2);  // lambda_t,free = lambda_t - K_tt^-1 v_t'
     free_y = y - (m[1] * s1 + m[2] * s2);
@@ -270,8 +268,8 @@ IMPULSE_ROW_FUNCTION bool friction_rows(const ContactRow& row, double s1, double
 
 // One visit's three rows on the velocity `velocity` (row_velocity), from the total `before` (the row's, or a kept
 // visit's when the recorder is shown it). The row's total is not changed here.
-IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& before, const Axes& velocity,
-                                         const NormalTarget& target) {
+IMPULSE_KERNEL RowVisit solve_rows(const ContactRow& row, const Axes& before, const Axes& velocity,
+                                   const NormalTarget& target) {
     double unclamped_n;
     const double n = normal_row(before.n, velocity.n, row.normal_mass, target, unclamped_n);
     double free_x = before.t1, free_y = before.t2, x = 0.0, y = 0.0;
@@ -289,8 +287,7 @@ IMPULSE_ROW_FUNCTION RowVisit solve_rows(const ContactRow& row, const Axes& befo
 }
 
 // The normal row alone (soft step's restitution, the split impulse's pushes): tangential totals unchanged.
-IMPULSE_ROW_FUNCTION RowVisit solve_normal_row(const ContactRow& row, double normal_velocity,
-                                               const NormalTarget& target) {
+IMPULSE_KERNEL RowVisit solve_normal_row(const ContactRow& row, double normal_velocity, const NormalTarget& target) {
     RowVisit v;
     v.before = v.unclamped = v.after = row.total_impulse;
     v.after.n = normal_row(v.before.n, normal_velocity, row.normal_mass, target, v.unclamped.n);
@@ -309,7 +306,7 @@ struct KeptVisit {
 };
 
 // Keeps a visit, value by value: a copy of the structs whole would keep them in memory through the whole loop.
-IMPULSE_ROW_FUNCTION void keep_visit(KeptVisit& kept, const Axes& velocity, const Axes& before) {
+IMPULSE_KERNEL void keep_visit(KeptVisit& kept, const Axes& velocity, const Axes& before) {
     const auto copy = [](Axes& to, const Axes& from) {
         to.n = from.n;
         to.t1 = from.t1;
@@ -338,12 +335,12 @@ inline RowVisit within_limits(const Vec3& total, double friction) {
 }
 
 // The impulse `a` (contact coordinates) in world coordinates, g = C a.
-IMPULSE_ROW_FUNCTION Vec3 world_impulse(const ContactRow& row, const Axes& a) {
+IMPULSE_KERNEL Vec3 world_impulse(const ContactRow& row, const Axes& a) {
     return to_world(row.basis, vector_of(a));
 }
 
 // Step 7 for one body (derivation/velocity_change.hpp): adds g m^-1 and I^-1 (r x g) to it.
-IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, const Vec3& impulse) {
+IMPULSE_KERNEL void apply_to_body(SolverBody& body, const Vec3& r, const Vec3& impulse) {
     const BodyVelocityChange c = body_velocity_change(impulse, r, body.mass);
     body.velocity.x() += c.velocity_change.x();
     body.velocity.y() += c.velocity_change.y();
@@ -354,7 +351,7 @@ IMPULSE_ROW_FUNCTION void apply_to_body(SolverBody& body, const Vec3& r, const V
 }
 
 // Step 7: applies g (world) to the row's bodies, +g to body 0 and -g to body 1.
-IMPULSE_ROW_FUNCTION void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse) {
+IMPULSE_KERNEL void apply_impulse(const ContactRow& row, SolverBody* bodies, const Vec3& impulse) {
     apply_to_body(bodies[row.body[0]], row.anchor[0], impulse);
     if (row.body[1] >= 0)
         apply_to_body(bodies[row.body[1]], row.anchor[1], Vec3(-impulse.x(), -impulse.y(), -impulse.z()));
@@ -362,7 +359,7 @@ IMPULSE_ROW_FUNCTION void apply_impulse(const ContactRow& row, SolverBody* bodie
 
 // Keeps `after` as the row's total, field by field (a copy of the struct can become one 16-byte load of values
 // just stored 8 bytes at a time, which the processor cannot forward).
-IMPULSE_ROW_FUNCTION void keep_total(ContactRow& row, const Axes& after) {
+IMPULSE_KERNEL void keep_total(ContactRow& row, const Axes& after) {
     row.total_impulse.n = after.n;
     row.total_impulse.t1 = after.t1;
     row.total_impulse.t2 = after.t2;
@@ -370,7 +367,7 @@ IMPULSE_ROW_FUNCTION void keep_total(ContactRow& row, const Axes& after) {
 
 // |K (after - before)|^2: how much a visit changed its own contact's velocity (m/s), squared. A norm, so the
 // early stop of a sweeping method does not depend on the tangent basis.
-IMPULSE_ROW_FUNCTION double velocity_change_squared(const ContactRow& row, const Axes& d) {
+IMPULSE_KERNEL double velocity_change_squared(const ContactRow& row, const Axes& d) {
     const std::array<double, 2>& k_tn = row.normal_to_tangent;
     const std::array<double, 3>& k_tt = row.tangent_response;
     const double n = row.normal_response * d.n + k_tn[0] * d.t1 + k_tn[1] * d.t2;

@@ -103,30 +103,26 @@ void ContactRecycling::pass_before(const std::optional<BodyPair>& pair, std::vec
     while (cursor_ < last_.pairs.size() && (!pair || comes_before(last_.pairs[cursor_].pair, *pair))) {
         const KeptPair& kept = last_.pairs[cursor_++];
         // Not handed this frame (their bounds apart): kept while they may be, their points now apart (p < 0).
-        if (may_keep(kept)) {
-            keep_as_is(kept);
-            append_recycled(next_.pairs.back(), out);
-            ++recycled_pairs_;
-        }
+        recycle_if_may(kept, out);
     }
 }
 
-void ContactRecycling::keep_as_is(const KeptPair& kept) {
+bool ContactRecycling::recycle_if_may(const KeptPair& kept, std::vector<Contact>& out) {
+    if (!may_keep(kept)) return false;
     KeptPair& copy = next_.pairs.emplace_back(kept);
     copy.first = static_cast<std::uint32_t>(next_.contacts.size());
     next_.contacts.insert(next_.contacts.end(), last_.contacts.begin() + kept.first,
                           last_.contacts.begin() + kept.first + kept.count);
+    append_recycled(copy, out);
+    ++recycled_pairs_;
+    return true;
 }
 
 bool ContactRecycling::recycle(BodyPair pair, std::vector<Contact>& out) {
     pass_before(pair, out);
     if (cursor_ == last_.pairs.size() || !(last_.pairs[cursor_].pair == pair)) return false;
-    const KeptPair& kept = last_.pairs[cursor_++];
-    if (!may_keep(kept)) return false;  // moved too far: tested afresh, and what the test finds is kept instead
-    keep_as_is(kept);
-    append_recycled(next_.pairs.back(), out);
-    ++recycled_pairs_;
-    return true;
+    // Moved too far: tested afresh, and what the test finds is kept instead.
+    return recycle_if_may(last_.pairs[cursor_++], out);
 }
 
 void ContactRecycling::keep(BodyPair pair, std::span<const Contact> found) {

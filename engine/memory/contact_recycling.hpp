@@ -100,7 +100,9 @@ private:
     Pose pose_of(int body) const;
     double reach_of(int body) const;
     bool may_keep(const KeptPair& kept) const;
-    void keep_as_is(const KeptPair& kept);  // copied into what this frame keeps, its poses those of its detection
+    // When it may be kept: copied into what this frame keeps (its poses those of its detection) and its contacts,
+    // brought up to date, appended to `out`.
+    bool recycle_if_may(const KeptPair& kept, std::vector<Contact>& out);
     void append_recycled(const KeptPair& kept, std::vector<Contact>& out);
     // Kept pairs before `pair` (all of them: nullopt) that detection did not hand: recycled while they may be.
     void pass_before(const std::optional<BodyPair>& pair, std::vector<Contact>& out);

@@ -7,7 +7,7 @@
 // them.
 //
 // What the method reports (plain numbers, when the recorder keeps the frame) and the records built from it are the
-// same structs: the record is the report with the sweep's place and its number in the phase.
+// same structs: the record is the report with the sweep's place and its number in the phase (record/trace_recorder).
 
 #include "derivation/avbd/contact_force.hpp"
 #include "derivation/avbd/dual_update.hpp"
@@ -49,17 +49,5 @@ struct DualUpdateRecord {
 
     bool operator==(const DualUpdateRecord&) const = default;
 };
-
-struct SweepPlace;
-struct TraceFilter;
-struct VelocityIteration;
-
-// The iteration numbered `iteration` of the velocity phase that a body visit or a dual update is. With a contact
-// filter, a body visit keeps the gathered contacts the recording keeps, and a dual update of a contact it leaves out
-// is kept as a line (which contact, where in the sweeps).
-VelocityIteration body_visit_iteration(int iteration, const SweepPlace& place, const BodyVisitRecord& visit,
-                                       const TraceFilter& filter);
-VelocityIteration dual_update_iteration(int iteration, const SweepPlace& place, const DualUpdateRecord& update,
-                                        const TraceFilter& filter);
 
 }  // namespace impulse

@@ -91,20 +91,31 @@ void TraceRecorder::velocity_visit(const VelocityVisit& visit) {
     count((kept.resolution ? velocity_iteration_bytes : line_bytes) + velocity_update_bytes * kept.updates.size());
 }
 
+// With a contact filter, a body visit keeps the gathered contacts the recording keeps, and a dual update of a contact
+// it leaves out is kept as a line (which contact, where in the sweeps).
 void TraceRecorder::body_visit(const SweepPlace& place, const BodyVisitRecord& visit) {
     if (!recording_) return;
     std::vector<VelocityIteration>& iterations = trace_.frames.back().velocity.iterations;
-    VelocityIteration& kept = iterations.emplace_back(
-        body_visit_iteration(static_cast<int>(iterations.size()), place, visit, trace_.recording));
-    count(iteration_line_bytes + sweep_place_bytes + body_visit_bytes +
-          gathered_bytes * kept.body_visit->gathered.size());
+    VelocityIteration& kept = iterations.emplace_back();
+    kept.iteration = static_cast<int>(iterations.size()) - 1;
+    // Every solved body has a contact (methods/avbd.cpp solves no other), so its first is its iteration's contact.
+    kept.contact = visit.gathered.empty() ? 0 : visit.gathered.front().contact;
+    kept.sweep = place;
+    std::vector<AvbdContactRows>& gathered = kept.body_visit.emplace(visit).gathered;
+    if (trace_.recording.contacts)
+        std::erase_if(gathered,
+                      [this](const AvbdContactRows& c) { return !trace_.recording.records_contact(c.contact); });
+    count(iteration_line_bytes + sweep_place_bytes + body_visit_bytes + gathered_bytes * gathered.size());
 }
 
 void TraceRecorder::dual_visit(const SweepPlace& place, const DualUpdateRecord& update) {
     if (!recording_) return;
     std::vector<VelocityIteration>& iterations = trace_.frames.back().velocity.iterations;
-    const VelocityIteration& kept = iterations.emplace_back(
-        dual_update_iteration(static_cast<int>(iterations.size()), place, update, trace_.recording));
+    VelocityIteration& kept = iterations.emplace_back();
+    kept.iteration = static_cast<int>(iterations.size()) - 1;
+    kept.contact = update.rows.contact;
+    kept.sweep = place;
+    if (trace_.recording.records_contact(update.rows.contact)) kept.dual_update = update;
     count(iteration_line_bytes + sweep_place_bytes + (kept.dual_update ? dual_update_bytes : 0));
 }
 

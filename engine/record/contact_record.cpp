@@ -9,25 +9,16 @@ ContactPreparation contact_preparation(int index, const Contact& contact, std::s
                                        std::span<const MassProperties> mass, const ResolverSettings& settings) {
     const OrientedContact o = oriented(contact);
     // What the steps need of each body (nothing of the world).
-    const auto centre = [&](int i) -> std::optional<Vec3> {
-        if (o.bodies[i] == world_body) return std::nullopt;
-        return bodies[static_cast<std::size_t>(o.bodies[i])].position;
-    };
-    const auto mass_of = [&](int i) -> std::optional<MassProperties> {
-        if (o.bodies[i] == world_body) return std::nullopt;
-        return mass[static_cast<std::size_t>(o.bodies[i])];
-    };
-    const PerBody<MassProperties> body_mass{mass_of(0), mass_of(1)};
+    const std::array<bool, 2> present{o.bodies[0] != world_body, o.bodies[1] != world_body};
+    const auto body = [&o](int i) { return static_cast<std::size_t>(o.bodies[i]); };
+    const PerBody<MassProperties> body_mass = per_body(present, [&](int i) { return mass[body(i)]; });
     const PerBody<BodyMotion> motion = contact_motion(o.bodies, bodies);
-
     const Basis contact_basis = basis(o.normal);
     // Each body's own point (they differ only on a recycled contact; the swap exchanged them).
-    const auto q_rel_of = [&](int i) -> std::optional<Vec3> {
-        const std::optional<Vec3> p = centre(i);
-        if (!p) return std::nullopt;
-        return relative_position(touch_point(contact, o.swapped ? 1 - i : i), {p, std::nullopt})[0];
-    };
-    const PerBody<Vec3> q_rel{q_rel_of(0), q_rel_of(1)};
+    const PerBody<Vec3> q_rel = per_body(present, [&](int i) {
+        const Vec3& point = touch_point(contact, o.swapped ? 1 - i : i);
+        return *relative_position(point, {bodies[body(i)].position, std::nullopt})[0];
+    });
     const UnitImpulseChain chain = delta_velocity_per_unit_impulse(o.normal, q_rel, body_mass);
     const ContactVelocityTerms velocity =
         contact_velocity(contact_basis, q_rel, motion, settings.duration, settings.tangential_acceleration_velocity);

@@ -9,7 +9,9 @@ ContactKey key_of(const Contact& contact) {
     return {contact.bodies, contact.origin};
 }
 
-std::size_t ContactKeyHash::operator()(const ContactKey& key) const {
+namespace {
+
+std::size_t hash_of(const ContactKey& key) {
     std::size_t h = 0;
     const auto mix = [&h](int value) { h = h * 1000003u ^ std::hash<int>{}(value); };
     // (The table keeps the low bits: the final multiply and fold spread every input into them.)
@@ -23,8 +25,6 @@ std::size_t ContactKeyHash::operator()(const ContactKey& key) const {
     const std::uint64_t spread = (h ^ (h >> 29)) * 0x9E3779B97F4A7C15ull;
     return static_cast<std::size_t>(spread ^ (spread >> 32));
 }
-
-namespace {
 
 // Field by field (the defaulted comparison calls memcmp for the arrays).
 bool same_key(const ContactKey& a, const ContactKey& b) {
@@ -40,7 +40,7 @@ bool same_key(const ContactKey& a, const ContactKey& b) {
 std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key) const {
     if (index_.empty()) return -1;
     const std::size_t mask = index_.size() - 1;
-    for (std::size_t at = ContactKeyHash{}(key)&mask;; at = (at + 1) & mask) {
+    for (std::size_t at = hash_of(key) & mask;; at = (at + 1) & mask) {
         const std::int32_t entry = index_[at];
         if (entry < 0) return -1;
         if (same_key(entries_[static_cast<std::size_t>(entry)].first, key)) return entry;
@@ -69,7 +69,7 @@ void ContactMemory::index_entries() {
     const std::size_t mask = size - 1;
     for (std::size_t e = 0; e < entries_.size(); ++e) {
         const ContactKey& key = entries_[e].first;
-        std::size_t at = ContactKeyHash{}(key)&mask;
+        std::size_t at = hash_of(key) & mask;
         while (index_[at] >= 0 && !same_key(entries_[static_cast<std::size_t>(index_[at])].first, key))
             at = (at + 1) & mask;
         if (index_[at] < 0) {  // else the first with this key keeps it

@@ -26,10 +26,6 @@ struct ContactKey {
 
 ContactKey key_of(const Contact& contact);
 
-struct ContactKeyHash {
-    std::size_t operator()(const ContactKey& key) const;
-};
-
 class ContactMemory {
 public:
     // Last frame's accumulated impulse of the contact with this key (world coordinates, so a basis that

@@ -13,9 +13,7 @@
 // the error shrinks by M/(M + K) an iteration). Fixed in N/m, the same k is stiff for a 1 kg box and nothing for a
 // 10^6 kg one, whose contacts start 10^6 times too soft and ramp 10^6 times too slowly (Jolt's heavy_on_light fell
 // through in a third of a second). Per kilogram, k/(m/h^2) is what it was at 1 kg, and a scene with every mass times
-// s moves as it did: k, lambda, F, H and f all scale by s, the move H^-1 f does not. (For the same reason Li et al.'s
-// Physics-Based Simulation, lecture "Penalty Method", weights the penalty on a node by the node's mass, so that its
-// Hessian is a fixed multiple of the inertia term's whatever the mass.)
+// s moves as it did: k, lambda, F, H and f all scale by s, the move H^-1 f does not.
 //
 // Why the lighter body's. A contact's own mass is the reduced mass mu = m_0 m_1 / (m_0 + m_1), the inverse of the
 // chapter's velocity change per unit impulse along the normal without the turning terms (step 3): k/mu is the

@@ -45,13 +45,6 @@ int colour_of_pair(const Pair& pair, std::span<const SolverBody> bodies, std::pm
     return overflow;
 }
 
-std::pmr::vector<Pair> pairs_of(std::span<const ContactRow> rows, std::pmr::memory_resource* scratch) {
-    std::pmr::vector<Pair> pairs(scratch);
-    pairs.reserve(rows.size());
-    for (const ContactRow& row : rows) pairs.push_back(row.body);
-    return pairs;
-}
-
 }  // namespace
 
 std::pmr::vector<int> pair_colours(std::span<const Pair> pairs, std::span<const SolverBody> bodies,
@@ -80,19 +73,6 @@ std::pmr::vector<std::uint32_t> colour_slots(std::span<const Pair> pairs, std::s
     std::pmr::vector<std::uint32_t> slots(pairs.size(), 0u, scratch);
     for (std::size_t r = 0; r < pairs.size(); ++r) slots[r] = start[static_cast<std::size_t>(colours[r] + 1)]++;
     return slots;
-}
-
-std::pmr::vector<int> row_colours(std::span<const ContactRow> rows, std::span<const SolverBody> bodies,
-                                  std::pmr::memory_resource* scratch) {
-    return pair_colours(pairs_of(rows, scratch), bodies, scratch);
-}
-
-std::pmr::vector<std::uint32_t> colour_order(std::span<const ContactRow> rows, std::span<const SolverBody> bodies,
-                                             std::pmr::memory_resource* scratch) {
-    const std::pmr::vector<std::uint32_t> slots = colour_slots(pairs_of(rows, scratch), bodies, scratch);
-    std::pmr::vector<std::uint32_t> order(rows.size(), 0u, scratch);
-    for (std::size_t r = 0; r < rows.size(); ++r) order[slots[r]] = static_cast<std::uint32_t>(r);
-    return order;
 }
 
 }  // namespace impulse

@@ -37,11 +37,4 @@ std::pmr::vector<int> pair_colours(std::span<const std::array<int, 2>> pairs, st
 std::pmr::vector<std::uint32_t> colour_slots(std::span<const std::array<int, 2>> pairs,
                                              std::span<const SolverBody> bodies, std::pmr::memory_resource* scratch);
 
-// The same for rows already built: the colour of each (as pair_colours), and the order to visit them in (order[k] is
-// the row visited k-th, the inverse of colour_slots).
-std::pmr::vector<int> row_colours(std::span<const ContactRow> rows, std::span<const SolverBody> bodies,
-                                  std::pmr::memory_resource* scratch);
-std::pmr::vector<std::uint32_t> colour_order(std::span<const ContactRow> rows, std::span<const SolverBody> bodies,
-                                             std::pmr::memory_resource* scratch);
-
 }  // namespace impulse

@@ -41,14 +41,23 @@ std::vector<SolverBody> moving_bodies(int count) {
     return bodies;
 }
 
+std::vector<std::array<int, 2>> pairs_of(const std::vector<ContactRow>& rows) {
+    std::vector<std::array<int, 2>> pairs;
+    for (const ContactRow& row : rows) pairs.push_back(row.body);
+    return pairs;
+}
+
 std::vector<int> colours_of(const std::vector<ContactRow>& rows, const std::vector<SolverBody>& bodies) {
-    const std::pmr::vector<int> c = row_colours(rows, bodies, std::pmr::new_delete_resource());
+    const std::pmr::vector<int> c = pair_colours(pairs_of(rows), bodies, std::pmr::new_delete_resource());
     return {c.begin(), c.end()};
 }
 
+// The order of the visits: order[k] is the row visited k-th, the inverse of colour_slots.
 std::vector<std::uint32_t> order_of(const std::vector<ContactRow>& rows, const std::vector<SolverBody>& bodies) {
-    const std::pmr::vector<std::uint32_t> o = colour_order(rows, bodies, std::pmr::new_delete_resource());
-    return {o.begin(), o.end()};
+    const std::pmr::vector<std::uint32_t> slots = colour_slots(pairs_of(rows), bodies, std::pmr::new_delete_resource());
+    std::vector<std::uint32_t> order(rows.size());
+    for (std::size_t r = 0; r < rows.size(); ++r) order[slots[r]] = static_cast<std::uint32_t>(r);
+    return order;
 }
 
 }  // namespace
@@ -134,9 +143,7 @@ TEST_CASE("on a pyramid a colour's pairs share no moving body, each row is visit
     for (std::size_t k = 1; k < order.size(); ++k) CHECK(colours[order[k - 1]] <= colours[order[k]]);
     // The slots a method builds its rows in (from each row's bodies alone): colour by colour, detection's order
     // within a colour, as a stable sort of the rows by colour puts them.
-    std::vector<std::array<int, 2>> bodies_of_rows;
-    for (const ContactRow& row : rows) bodies_of_rows.push_back(row.body);
-    const std::pmr::vector<std::uint32_t> slots = colour_slots(bodies_of_rows, bodies, std::pmr::new_delete_resource());
+    const std::pmr::vector<std::uint32_t> slots = colour_slots(pairs_of(rows), bodies, std::pmr::new_delete_resource());
     std::vector<std::uint32_t> by_colour(rows.size());
     std::iota(by_colour.begin(), by_colour.end(), 0u);
     std::stable_sort(by_colour.begin(), by_colour.end(),

@@ -53,19 +53,13 @@ namespace {
 
 // A contact as AVBD carries it through the frame: its rows, fixed at the frame's start, and its dual variables.
 struct AvbdContact {
-    int contact = 0;                 // index in the prepared list
-    std::array<int, 2> body{0, -1};  // -1 = the world
-    ConstraintJacobian jacobian;     // the rows' gradients (Sec. 4)
-    double initial_normal = 0.0;     // C_n(x-) = slop - penetration (m)
-    double friction = 0.0;           // mu
-    PenaltyParameters penalty;       // its beta, k_min and k_max: the settings' per kg times the lighter body's mass
-    DualVariables dual;              // lambda (N) and k (N/m)
-};
-
-// One of a body's contacts: which, and whether the body is its body 0 or body 1.
-struct BodyContact {
-    int contact = 0;
-    int slot = 0;
+    int contact = 0;                   // index in the prepared list
+    std::array<int, 2> bodies{0, -1};  // -1 = the world
+    ConstraintJacobian jacobian;       // the rows' gradients (Sec. 4)
+    double initial_normal = 0.0;       // C_n(x-) = slop - penetration (m)
+    double friction = 0.0;             // mu
+    PenaltyParameters penalty;         // its beta, k_min and k_max: the settings' per kg times the lighter body's mass
+    DualVariables dual;                // lambda (N) and k (N/m)
 };
 
 class Avbd {
@@ -83,12 +77,10 @@ public:
           velocity_(frame.bodies.size(), frame.scratch),
           mass_(frame.bodies.size(), frame.scratch),
           solved_(frame.scratch),
-          first_contact_(frame.bodies.size() + 1, 0, frame.scratch),
-          body_contacts_(frame.scratch),
           bounced_(frame.scratch) {
         prepare_bodies();
         prepare_contacts();
-        list_body_contacts();
+        list_solved_bodies();
     }
 
     void run() {
@@ -181,7 +173,7 @@ private:
             if (!moves0 && !moves1) continue;  // nothing it could push
             AvbdContact& c = contacts_.emplace_back();
             c.contact = row.contact;
-            c.body = body;
+            c.bodies = body;
             c.jacobian = constraint_jacobian(row.basis, row.relative_position);
             c.initial_normal = avbd_.slop - row.penetration;
             c.friction = row.friction;
@@ -206,29 +198,22 @@ private:
         }
     }
 
-    // Each body's contacts, in contact order (a compressed list: body b's are first_contact_[b] .. [b + 1]); the
-    // bodies that take part in the sweeps are the movable ones with a contact. A movable body with none lands on
-    // its inertial target (its block would be M/h^2 alone).
-    void list_body_contacts() {
-        for (const AvbdContact& c : contacts_)
-            for (int i = 0; i < 2; ++i)
-                if (c.body[i] != world_body) ++first_contact_[static_cast<std::size_t>(c.body[i]) + 1];
-        for (std::size_t b = 0; b < frame_.bodies.size(); ++b) first_contact_[b + 1] += first_contact_[b];
-        body_contacts_.resize(static_cast<std::size_t>(first_contact_.back()));
-        std::pmr::vector<int> next(first_contact_.begin(), first_contact_.end() - 1, frame_.scratch);
-        for (std::size_t k = 0; k < contacts_.size(); ++k)
-            for (int i = 0; i < 2; ++i)
-                if (contacts_[k].body[i] != world_body)
-                    body_contacts_[static_cast<std::size_t>(next[static_cast<std::size_t>(contacts_[k].body[i])]++)] = {
-                        static_cast<int>(k), i};
+    // The bodies that take part in the sweeps: the movable ones with a contact. A movable body with none lands on its
+    // inertial target (its block would be M/h^2 alone).
+    void list_solved_bodies() {
+        by_body_.emplace(contacts_, frame_.bodies.size());
         for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
             if (is_immovable(frame_.bodies[b])) continue;
-            if (first_contact_[b + 1] > first_contact_[b])
+            if (has_contacts(b))
                 solved_.push_back(static_cast<int>(b));
             else
                 displacement_[b] = target_[b];
         }
     }
+
+    bool has_contacts(std::size_t body) const { return !by_body_->contacts_of(static_cast<int>(body)).empty(); }
+    // Which of a contact's bodies `body` is (0 or 1).
+    static int slot_of(const AvbdContact& c, std::size_t body) { return c.bodies[0] == static_cast<int>(body) ? 0 : 1; }
 
     // A body's mass as its block takes it (kg): 0 for the world and for a body that cannot translate.
     double mass_of(int body) const { return body == world_body ? 0.0 : mass_[static_cast<std::size_t>(body)].mass; }
@@ -239,8 +224,8 @@ private:
     }
 
     ConstraintValue constraint_of(const AvbdContact& c, double alpha) const {
-        return constraint_value(c.jacobian, c.initial_normal, {displacement_of(c.body[0]), displacement_of(c.body[1])},
-                                alpha);
+        return constraint_value(c.jacobian, c.initial_normal,
+                                {displacement_of(c.bodies[0]), displacement_of(c.bodies[1])}, alpha);
     }
 
     // Sweep `it`: every body's primal update, then, in the iterations, every contact's dual update.
@@ -263,11 +248,10 @@ private:
     void visit(std::size_t b, double alpha, const SweepPlace& place) {
         Displacement& x = displacement_[b];
         BodyBlock block = inertial_block(mass_[b], h_, target_[b], x);
-        for (int k = first_contact_[b]; k < first_contact_[b + 1]; ++k) {
-            const BodyContact& bc = body_contacts_[static_cast<std::size_t>(k)];
-            const AvbdContact& c = contacts_[static_cast<std::size_t>(bc.contact)];
+        for (const int k : by_body_->contacts_of(static_cast<int>(b))) {
+            const AvbdContact& c = contacts_[static_cast<std::size_t>(k)];
             const ConstraintValue value = constraint_of(c, alpha);
-            add_contact_force(c.jacobian, bc.slot,
+            add_contact_force(c.jacobian, slot_of(c, b),
                               contact_force(c.dual.lambda, c.dual.stiffness, value.constraint, c.friction), block);
         }
         if (!mass_[b].translates || !mass_[b].turns_freely) hold_fixed_directions(mass_[b], block);
@@ -303,11 +287,10 @@ private:
                       const SweepPlace& place) const {
         BodyVisitRecord r;
         r.body = static_cast<int>(b);
-        for (int k = first_contact_[b]; k < first_contact_[b + 1]; ++k) {
-            const BodyContact& bc = body_contacts_[static_cast<std::size_t>(k)];
-            const AvbdContact& c = contacts_[static_cast<std::size_t>(bc.contact)];
+        for (const int k : by_body_->contacts_of(static_cast<int>(b))) {
+            const AvbdContact& c = contacts_[static_cast<std::size_t>(k)];
             const ConstraintValue value = constraint_of(c, alpha);
-            r.gathered.push_back(rows_of(c, bc.slot, value,
+            r.gathered.push_back(rows_of(c, slot_of(c, b), value,
                                          contact_force(c.dual.lambda, c.dual.stiffness, value.constraint, c.friction)));
         }
         r.block_matrix = block.block_matrix;
@@ -334,7 +317,7 @@ private:
             RigidBody& body = frame_.bodies[b];
             const Displacement& d = displacement_[b];
             if (!is_immovable(body)) {
-                const bool solved = first_contact_[b + 1] > first_contact_[b];
+                const bool solved = has_contacts(b);
                 body.velocity = solved ? velocity_[b].linear : Vec3(d.linear / h_);
                 body.angular_velocity = solved ? velocity_[b].angular : Vec3(d.angular / h_);
             }
@@ -352,27 +335,19 @@ private:
             if (bounce.restitution == 0.0 || bounce.separating_velocity >= -cutoff || !(c.dual.lambda.x() > 0.0))
                 continue;
             const PreparedContact& row = frame_.contacts[static_cast<std::size_t>(c.contact)];
-            PerBody<Vec3> relative;
-            PerBody<MassProperties> mass;
-            PerBody<BodyMotion> motion;
-            for (int i = 0; i < 2; ++i) {
-                if (c.body[i] == world_body) continue;
-                const auto u = static_cast<std::size_t>(c.body[i]);
-                relative[i] = row.relative_position[i];
-                mass[i] = frame_.mass[u];
-                motion[i] = BodyMotion{frame_.bodies[u].velocity, frame_.bodies[u].angular_velocity, Vec3::Zero()};
-            }
-            const double d = delta_velocity_per_unit_impulse(row.basis.normal(), relative, mass)
-                                 .delta_velocity_per_unit_impulse;                                            // step 3
-            const Vec3 velocity = contact_velocity(row.basis, relative, motion, h_, false).contact_velocity;  // step 4
-            const double v_n = velocity.x();
-            if (!(d > 0.0)) continue;  // no impulse can move it
-            // g = (-c v_n(before) - v_n) / d along n, push only.
-            const double impulse = (-bounce.restitution * bounce.separating_velocity - v_n) / d;
+            const double d = row.delta_velocity_per_unit_impulse;  // step 3 (the frame's mass, as prepared)
+            if (!(d > 0.0)) continue;                              // no impulse can move it
+            const PerBody<Vec3> relative = relative_positions(row);
+            // Step 4 on the velocities now; g = (-c v_n(before) - v_n) / d along n, push only.
+            const Vec3 velocity =
+                contact_velocity(row.basis, relative, contact_motion(row.bodies, frame_.bodies), h_, false)
+                    .contact_velocity;
+            const double impulse = (-bounce.restitution * bounce.separating_velocity - velocity.x()) / d;
             if (!(impulse > 0.0)) continue;
             if (frame_.keeping) report_bounce(c.contact, bounce, velocity, impulse);
-            apply_velocity_change(frame_.bodies, c.body,
-                                  velocity_change(row.basis.normal() * impulse, relative, mass));  // step 7
+            apply_velocity_change(
+                frame_.bodies, c.bodies,
+                velocity_change(row.basis.normal() * impulse, relative, impulse::mass_of(row, frame_.mass)));  // step 7
             bounced_.push_back(c.contact);
         }
     }
@@ -405,10 +380,8 @@ private:
     void stamp_visits() const {
         if (!frame_.touch) return;
         for (const int b : solved_)
-            for (int k = first_contact_[static_cast<std::size_t>(b)];
-                 k < first_contact_[static_cast<std::size_t>(b) + 1]; ++k)
-                frame_.touch->touched(
-                    contacts_[static_cast<std::size_t>(body_contacts_[static_cast<std::size_t>(k)].contact)].contact);
+            for (const int k : by_body_->contacts_of(b))
+                frame_.touch->touched(contacts_[static_cast<std::size_t>(k)].contact);
         for (const int c : bounced_) frame_.touch->touched(c);
     }
 
@@ -429,11 +402,10 @@ private:
     std::pmr::vector<Velocities> velocity_;        // per body
     std::pmr::vector<BodyMass> mass_;              // per body
     std::pmr::vector<int> solved_;                 // the bodies the sweeps visit, in index order
-    std::pmr::vector<int> first_contact_;          // per body, into body_contacts_, and one past the last
-    std::pmr::vector<BodyContact> body_contacts_;
-    std::pmr::vector<int> bounced_;  // the contacts restitution visited
-    int visits_ = 0;                 // block solves
-    int dual_updates_ = 0;           // contacts' dual updates
+    std::optional<ContactsByBody> by_body_;        // each body's contacts, in contact order
+    std::pmr::vector<int> bounced_;                // the contacts restitution visited
+    int visits_ = 0;                               // block solves
+    int dual_updates_ = 0;                         // contacts' dual updates
 };
 
 }  // namespace

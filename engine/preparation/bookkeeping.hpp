@@ -19,13 +19,27 @@ namespace impulse {
 // Per body, the indices of the contacts touching it, ascending (one flat array with an offset per body).
 class ContactsByBody {
 public:
-    ContactsByBody(std::span<const PreparedContact> contacts, std::size_t body_count);
+    // `contacts`: anything that holds each contact's two bodies in `bodies` (the prepared contacts, AVBD's).
+    template <typename Contacts>
+    ContactsByBody(const Contacts& contacts, std::size_t body_count) : first_(body_count + 1, 0) {
+        // Count each body's contacts, turn the counts into starts, then place the contacts in index order.
+        for (const auto& c : contacts)
+            for (const int body : c.bodies)
+                if (body != world_body) ++first_[static_cast<std::size_t>(body) + 1];
+        for (std::size_t b = 0; b < body_count; ++b) first_[b + 1] += first_[b];
+        contacts_.resize(static_cast<std::size_t>(first_[body_count]));
+        std::vector<int> next(first_.begin(), first_.end() - 1);
+        for (std::size_t i = 0; i < std::size(contacts); ++i)
+            for (const int body : contacts[i].bodies)
+                if (body != world_body)
+                    contacts_[static_cast<std::size_t>(next[static_cast<std::size_t>(body)]++)] = static_cast<int>(i);
+    }
+    // The contacts touching `body`, ascending (none for the world).
+    std::span<const int> contacts_of(int body) const;
     // The contacts touching either of `moved` (the world touches nothing), each once, ascending, into `out`.
     void sharing(const std::array<int, 2>& moved, std::vector<int>& out) const;
 
 private:
-    std::span<const int> contacts_of(int body) const;
-
     std::vector<int> first_;     // per body, where its contacts start in contacts_; one more at the end
     std::vector<int> contacts_;  // every body's contacts, body after body
 };
@@ -83,11 +97,36 @@ Vec3 contact_velocity_change(const PreparedContact& contact, int slot, const Vec
 DesiredDeltaVelocity desired_again(const PreparedContact& contact, const VelocityRefinements& refinements);
 
 // The book's loops: the bookkeeping of the `candidates` (ascending) sharing a body of `moved` (the resolved
-// contact's bodies; body 1 may be the world) after that contact's move or impulse.
+// contact's bodies; body 1 may be the world) after that contact's move or impulse. Each update made is shown to
+// `updated` (index, slot, m, its delta and the values before it): the recorder's records of them
+// (record/visit_records.hpp), made by the same functions as the book's.
+struct NotShown {
+    void operator()(const auto&...) const {}
+};
+template <typename Updated = NotShown>
 void update_penetrations(std::span<PreparedContact> contacts, std::span<const int> candidates,
-                         const std::array<int, 2>& moved, const PositionChange& change);
+                         const std::array<int, 2>& moved, const PositionChange& change, Updated updated = {}) {
+    for_each_sharing(contacts, candidates, moved, [&](int index, int slot, int m) {
+        PreparedContact& other = contacts[static_cast<std::size_t>(index)];
+        const double delta = penetration_change(other, slot, *change.linear_change[m], *change.angular_change[m]);
+        const double before = other.penetration;
+        other.penetration += delta;
+        updated(index, slot, m, delta, before);
+    });
+}
+template <typename Updated = NotShown>
 void update_contact_velocities(std::span<PreparedContact> contacts, std::span<const int> candidates,
                                const std::array<int, 2>& moved, const VelocityChange& change,
-                               const VelocityRefinements& refinements);
+                               const VelocityRefinements& refinements, Updated updated = {}) {
+    for_each_sharing(contacts, candidates, moved, [&](int index, int slot, int m) {
+        PreparedContact& other = contacts[static_cast<std::size_t>(index)];
+        const Vec3 delta = contact_velocity_change(other, slot, *change.velocity_change[m], *change.rotation_change[m]);
+        const Vec3 before = other.contact_velocity;
+        const double desired_before = other.desired_delta_velocity;
+        other.contact_velocity += delta;
+        other.desired_delta_velocity = desired_again(other, refinements).desired_delta_velocity;
+        updated(index, slot, m, delta, before, desired_before);
+    });
+}
 
 }  // namespace impulse

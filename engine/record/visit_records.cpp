@@ -85,34 +85,27 @@ VelocityIteration VisitRecords::velocity_iteration(const VelocityVisit& visit) {
 void VisitRecords::record_updates(const PositionChange& change, const std::array<int, 2>& moved,
                                   PositionIteration& it) {
     by_body_->sharing(moved, sharing_);
-    for_each_sharing(contacts_, sharing_, moved, [&](int index, int slot, int m) {
-        PreparedContact& other = contacts_[static_cast<std::size_t>(index)];
-        const double delta = penetration_change(other, slot, *change.linear_change[m], *change.angular_change[m]);
-        const double before = other.penetration;
-        other.penetration += delta;
-        it.updates.push_back({index, moved[m], slot, delta, before, other.penetration});
-    });
+    update_penetrations(
+        contacts_, sharing_, moved, change, [&](int index, int slot, int m, double delta, double before) {
+            it.updates.push_back(
+                {index, moved[m], slot, delta, before, contacts_[static_cast<std::size_t>(index)].penetration});
+        });
 }
 
 void VisitRecords::record_updates(const VelocityChange& change, const std::array<int, 2>& moved, DesiredFollows follows,
                                   VelocityIteration& it) {
     by_body_->sharing(moved, sharing_);
-    for_each_sharing(contacts_, sharing_, moved, [&](int index, int slot, int m) {
-        PreparedContact& other = contacts_[static_cast<std::size_t>(index)];
-        const Vec3 delta = contact_velocity_change(other, slot, *change.velocity_change[m], *change.rotation_change[m]);
-        const Vec3 before = other.contact_velocity;
-        const double desired_before = other.desired_delta_velocity;
-        other.contact_velocity += delta;
-        if (follows == DesiredFollows::step_5) {
-            other.desired_delta_velocity = desired_again(other, refinements_).desired_delta_velocity;
-            it.updates.push_back({index, moved[m], slot, delta, before, other.contact_velocity, desired_before,
-                                  other.desired_delta_velocity});
-        } else {
-            const double target = targets_[static_cast<std::size_t>(index)];
-            it.updates.push_back({index, moved[m], slot, delta, before, other.contact_velocity, target - before.x(),
-                                  target - other.contact_velocity.x()});
-        }
-    });
+    const auto updated = [&](int index, int slot, int m, const Vec3& delta, const Vec3& before, double desired_before) {
+        const PreparedContact& other = contacts_[static_cast<std::size_t>(index)];
+        // The row's target minus the velocity, for a method that keeps its rows' targets (the book's step 5 is
+        // still followed on this copy, unread).
+        const double target = targets_[static_cast<std::size_t>(index)];
+        const bool book = follows == DesiredFollows::step_5;
+        it.updates.push_back({index, moved[m], slot, delta, before, other.contact_velocity,
+                              book ? desired_before : target - before.x(),
+                              book ? other.desired_delta_velocity : target - other.contact_velocity.x()});
+    };
+    update_contact_velocities(contacts_, sharing_, moved, change, refinements_, updated);
 }
 
 }  // namespace impulse

@@ -7,16 +7,6 @@
 
 namespace impulse {
 
-Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_per_unit_impulse) {
-    return {desired_delta_velocity / delta_velocity_per_unit_impulse, 0.0, 0.0};  // g = v / d  (14.3)
-}
-
-FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Mat3& k) {
-    // Gaussian elimination with complete pivoting (math/full_pivot_lu.hpp): K is singular only when neither
-    // body can translate, and nearly so for long lever arms, where the largest pivot first keeps it accurate.
-    return {k, FullPivotLu3(k)};
-}
-
 FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& factored, const Vec3& contact_velocity,
                              double desired_delta_velocity, double friction, SlidingFriction sliding) {
     FrictionSolve s;
@@ -57,7 +47,7 @@ Impulse calculate_impulse(const Basis& basis, const FactoredDeltaVelocityMatrix*
                           SlidingFriction sliding) {
     Impulse g;
     g.impulse_model = ImpulseModel::frictionless;
-    g.impulse = frictionless_impulse(desired_delta_velocity, delta_velocity_per_unit_impulse);
+    g.impulse = {desired_delta_velocity / delta_velocity_per_unit_impulse, 0.0, 0.0};  // g = v / d  (14.3), normal only
     if (friction != 0.0) {
         g.friction_solve = friction_solve(*k, contact_velocity, desired_delta_velocity, friction, sliding);
         const FrictionSolve& s = *g.friction_solve;

@@ -57,9 +57,6 @@ struct Impulse {
     bool operator==(const Impulse&) const = default;
 };
 
-// g = v / d  (14.3), along the contact normal only.
-Vec3 frictionless_impulse(double desired_delta_velocity, double delta_velocity_per_unit_impulse);
-
 // K = C^T (sum_i m_i^-1 1 - [q_rel_i]x I_i^-1 [q_rel_i]x) C: the change of contact velocity per unit impulse,
 // both in contact coordinates (step 3 for every direction at once; K00 is d up to rounding). In world coordinates
 // an impulse g at the contact changes body i's point velocity by m^-1 g + (I^-1 (q_rel x g)) x q_rel =
@@ -92,13 +89,15 @@ IMPULSE_KERNEL Mat3 delta_velocity_matrix(const Basis& basis, const std::array<V
 
 // K with its LU factors: everything the friction solve needs of the contact's geometry and masses. Both depend
 // only on what preparation fixed, so a contact resolved again in the same frame can reuse them
-// (PreparedContact keeps them once the first impulse has computed them).
+// (methods/solver_common.hpp's FrictionMatrices keeps them once the first impulse has computed them). Gaussian
+// elimination with complete pivoting (math/full_pivot_lu.hpp): K is singular only when neither body can translate,
+// and nearly so for long lever arms, where the largest pivot first keeps it accurate.
 struct FactoredDeltaVelocityMatrix {
+    explicit FactoredDeltaVelocityMatrix(const Mat3& k) : matrix(k), factors(k) {}
+
     Mat3 matrix;           // K
     FullPivotLu3 factors;  // P K Q = L U
 };
-
-FactoredDeltaVelocityMatrix factored_delta_velocity_matrix(const Mat3& k);
 
 FrictionSolve friction_solve(const FactoredDeltaVelocityMatrix& k, const Vec3& contact_velocity,
                              double desired_delta_velocity, double friction,

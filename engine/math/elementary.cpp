@@ -119,14 +119,6 @@ SinCos sin_cos(double x) {
     }
 }
 
-double sin(double x) {
-    return sin_cos(x).sin;
-}
-
-double cos(double x) {
-    return sin_cos(x).cos;
-}
-
 double tan(double x) {
     if (!std::isfinite(x)) return nan;
     if (x == 0.0) return x;

@@ -13,9 +13,7 @@
 
 namespace impulse::elementary {
 
-double sin(double x);
-double cos(double x);
-// Both at once, sharing the argument's reduction.
+// sin x and cos x at once, sharing the argument's reduction.
 struct SinCos {
     double sin;
     double cos;

@@ -55,12 +55,6 @@ std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key, std::ptrdiff_t hint
     return slot_of(key);
 }
 
-std::optional<Vec3> ContactMemory::recall(const ContactKey& key) const {
-    const std::ptrdiff_t slot = slot_of(key);
-    if (slot < 0) return std::nullopt;
-    return impulse_at(slot);
-}
-
 void ContactMemory::index_entries() {
     std::size_t size = 16;
     while (size < 2 * entries_.size()) size *= 2;

@@ -28,17 +28,16 @@ ContactKey key_of(const Contact& contact);
 
 class ContactMemory {
 public:
-    // Last frame's accumulated impulse of the contact with this key (world coordinates, so a basis that
-    // turned a little between frames still receives the same push), or nothing for a new contact.
-    std::optional<Vec3> recall(const ContactKey& key) const;
-
-    // The same as an index into what was remembered (below size()), or -1: a solver that must warm start each
-    // remembered impulse once can mark the ones it took.
+    // Where last frame's accumulated impulse of the contact with this key is: an index into what was remembered
+    // (below size()), or -1 for a new contact. A solver that must warm start each remembered impulse once can mark
+    // the ones it took.
     std::ptrdiff_t slot_of(const ContactKey& key) const;
     // The same, trying `hint` first: a solver that looks its contacts up in the order it remembered them (the
     // detection's order, which changes little from frame to frame) passes the slot after the last one it found,
     // and most lookups read the next entry instead of a scattered index slot and entry.
     std::ptrdiff_t slot_of(const ContactKey& key, std::ptrdiff_t hint) const;
+    // The impulse remembered at `slot` (world coordinates, so a basis that turned a little between frames still
+    // receives the same push).
     const Vec3& impulse_at(std::ptrdiff_t slot) const { return entries_[static_cast<std::size_t>(slot)].second; }
 
     // Replaces what was remembered with this frame's totals, impulse(k) for the contact with keys[k]. When two

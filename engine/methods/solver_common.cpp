@@ -10,8 +10,8 @@ const FactoredDeltaVelocityMatrix& FrictionMatrices::of(const PreparedContact& c
     int& slot = slot_[static_cast<std::size_t>(contact.contact)];
     if (slot < 0) {
         slot = static_cast<int>(matrices_.size());
-        matrices_.push_back(factored_delta_velocity_matrix(
-            delta_velocity_matrix(contact.basis, contact.relative_position, contact_mass(contact, mass))));
+        matrices_.emplace_back(
+            delta_velocity_matrix(contact.basis, contact.relative_position, contact_mass(contact, mass)));
     }
     return matrices_[static_cast<std::size_t>(slot)];
 }

@@ -39,19 +39,22 @@ double worst(const std::function<double(double)>& ours, const std::function<doub
     return most;
 }
 
+// The engine's sine and cosine: sin_cos computes both.
+const auto our_sin = [](double x) { return elementary::sin_cos(x).sin; };
+const auto our_cos = [](double x) { return elementary::sin_cos(x).cos; };
 const auto c_sin = [](double x) { return std::sin(x); };
 const auto c_cos = [](double x) { return std::cos(x); };
 
 }  // namespace
 
 TEST_CASE("the engine's sine and cosine stay within 1.5 ulp of the C library's, also far from zero") {
-    CHECK(worst(elementary::sin, c_sin, -10.0, 10.0) <= 1.5);
-    CHECK(worst(elementary::cos, c_cos, -10.0, 10.0) <= 1.5);
-    CHECK(worst(elementary::sin, c_sin, -1e5, 1e5) <= 1.5);
-    CHECK(worst(elementary::cos, c_cos, -1e5, 1e5) <= 1.5);
+    CHECK(worst(our_sin, c_sin, -10.0, 10.0) <= 1.5);
+    CHECK(worst(our_cos, c_cos, -10.0, 10.0) <= 1.5);
+    CHECK(worst(our_sin, c_sin, -1e5, 1e5) <= 1.5);
+    CHECK(worst(our_cos, c_cos, -1e5, 1e5) <= 1.5);
     // Small angles, where the sine is the angle itself to many digits.
-    CHECK(worst(elementary::sin, c_sin, -1e-3, 1e-3) <= 1.5);
-    CHECK(worst(elementary::cos, c_cos, -1e-3, 1e-3) <= 1.5);
+    CHECK(worst(our_sin, c_sin, -1e-3, 1e-3) <= 1.5);
+    CHECK(worst(our_cos, c_cos, -1e-3, 1e-3) <= 1.5);
 }
 
 TEST_CASE("the engine's tangent and arctangent stay within 3 ulp of the C library's") {
@@ -84,9 +87,9 @@ TEST_CASE("the engine's exponential, logarithm, power and hypot stay within 2 ul
 
 TEST_CASE("the engine's elementary functions give the exact values at their special arguments") {
     constexpr double inf = std::numeric_limits<double>::infinity();
-    CHECK(elementary::sin(0.0) == 0.0);
-    CHECK(std::signbit(elementary::sin(-0.0)));
-    CHECK(elementary::cos(0.0) == 1.0);
+    CHECK(our_sin(0.0) == 0.0);
+    CHECK(std::signbit(our_sin(-0.0)));
+    CHECK(our_cos(0.0) == 1.0);
     CHECK(elementary::tan(0.0) == 0.0);
     CHECK(elementary::atan(1.0) == std::numbers::pi / 4);
     CHECK(elementary::atan(inf) == std::numbers::pi / 2);
@@ -105,15 +108,13 @@ TEST_CASE("the engine's elementary functions give the exact values at their spec
     CHECK(elementary::hypot(0.0, 0.0) == 0.0);
     CHECK(elementary::hypot(-3e300, 4e300) == doctest::Approx(5e300));  // no overflow in the squares
     CHECK(elementary::hypot(3e-300, 4e-300) == doctest::Approx(5e-300));
-    CHECK(std::isnan(elementary::sin(inf)));
-    CHECK(std::isnan(elementary::cos(std::numeric_limits<double>::quiet_NaN())));
+    CHECK(std::isnan(our_sin(inf)));
+    CHECK(std::isnan(our_cos(std::numeric_limits<double>::quiet_NaN())));
 }
 
 TEST_CASE("the engine's sine and cosine keep sin^2 + cos^2 = 1 and the quadrants' signs") {
     for (double x = -20.0; x <= 20.0; x += 0.013) {
         const elementary::SinCos sc = elementary::sin_cos(x);
-        CHECK(sc.sin == elementary::sin(x));
-        CHECK(sc.cos == elementary::cos(x));
         CHECK(sc.sin * sc.sin + sc.cos * sc.cos == doctest::Approx(1.0).epsilon(1e-15));
         CHECK(std::signbit(sc.sin) == std::signbit(std::sin(x)));
         CHECK(std::signbit(sc.cos) == std::signbit(std::cos(x)));

@@ -17,7 +17,7 @@ inline Impulse calculate_impulse(const Basis& basis, const PerBody<Vec3>& relati
     ContactMass m{nullptr, nullptr};
     for (int i = 0; i < 2; ++i)
         if (relative_position[i]) q_rel[i] = *relative_position[i], m[i] = &*mass[i];
-    const FactoredDeltaVelocityMatrix k = factored_delta_velocity_matrix(delta_velocity_matrix(basis, q_rel, m));
+    const FactoredDeltaVelocityMatrix k(delta_velocity_matrix(basis, q_rel, m));
     return calculate_impulse(basis, &k, contact_velocity, desired_delta_velocity, delta_velocity_per_unit_impulse,
                              friction, sliding);
 }

@@ -163,7 +163,7 @@ void lean_setup(const std::vector<RigidBody>& rigid, std::span<const PreparedCon
     }
     std::vector<ContactRow> rows;
     for (const PreparedContact& c : prepared)
-        if (!fill_contact_row(rows.emplace_back(), c, solver.data())) rows.pop_back();
+        if (can_move(c)) fill_contact_row(rows.emplace_back(), c, solver.data());
     RememberedTotals remembered(memory, std::pmr::new_delete_resource());
     contacts.clear();
     for (std::size_t r = 0; r < rows.size(); ++r) {

@@ -88,8 +88,6 @@ public:
     bool empty() const { return count_ == 0; }
     const T* begin() const { return items_.data(); }
     const T* end() const { return items_.data() + count_; }
-    T* begin() { return items_.data(); }
-    T* end() { return items_.data() + count_; }
 
 private:
     std::array<T, N> items_;  // only the first count_ are set

@@ -23,7 +23,7 @@ void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>
     }
 }
 
-bool fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBody* bodies, bool friction_rows) {
+void fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBody* bodies, bool friction_rows) {
     row.contact = d.contact;
     row.body = row_bodies(d);
     ContactMass mass{nullptr, nullptr};
@@ -36,7 +36,6 @@ bool fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBod
     // K_nn is step 3's d, so a rigid normal row visited alone gives the chapter's impulse g = v / d (14.3); the
     // friction rows read the rest of K (derivation/impulse.hpp), as the book's friction solve does.
     const double k_nn = d.delta_velocity_per_unit_impulse;
-    if (!can_move(d)) return false;  // inert: never visited
     row.normal_response = k_nn;
     row.normal_mass = 1.0 / k_nn;
     if (row.friction != 0.0) {
@@ -54,21 +53,6 @@ bool fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBod
             row.tangent_mass = {k_11 > 0.0 ? 1.0 / k_11 : 0.0, 0.0, k_22 > 0.0 ? 1.0 / k_22 : 0.0};
         }
     }
-    return true;
-}
-
-ActiveRows::ActiveRows(std::size_t capacity, std::pmr::memory_resource* scratch) : rows(scratch), keys(scratch) {
-    rows.reserve(capacity);
-    keys.reserve(capacity);
-}
-
-ContactRow* ActiveRows::add(const PreparedContact& contact, const SolverBody* bodies) {
-    if (!fill_contact_row(rows.emplace_back(), contact, bodies)) {
-        rows.pop_back();
-        return nullptr;
-    }
-    keys.push_back(contact_key(contact));
-    return &rows.back();
 }
 
 PlacedRows::PlacedRows(std::size_t count, std::pmr::memory_resource* scratch)

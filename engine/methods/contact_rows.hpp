@@ -107,28 +107,16 @@ inline bool can_move(const PreparedContact& contact) {
     return contact.delta_velocity_per_unit_impulse > 0.0;
 }
 
-// Fills `row` with the rows of a prepared contact, with its bodies' mass from `bodies` (K_nn = d of step 3, the
-// other entries derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split impulse's pushes)
-// only the normal row is filled. Returns whether an impulse can move the contact at all (K_nn > 0); a contact that
-// cannot is never visited. (In place: a row is 264 bytes, and a frame builds one per contact.)
-bool fill_contact_row(ContactRow& row, const PreparedContact& contact, const SolverBody* bodies,
+// Fills `row` with the rows of a prepared contact that can_move, with its bodies' mass from `bodies` (K_nn = d of
+// step 3, the other entries derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split
+// impulse's pushes) only the normal row is filled. (In place: a row is 264 bytes, and a frame builds one per contact.)
+void fill_contact_row(ContactRow& row, const PreparedContact& contact, const SolverBody* bodies,
                       bool friction_rows = true);
 
-// The rows of the frame's contacts that an impulse can move, each with its contact's key in the contact memory
-// (RememberedTotals, remember_totals): what the warm-started methods build first, in the frame's scratch
-// (FrameContext::scratch).
-struct ActiveRows {
-    ActiveRows(std::size_t capacity, std::pmr::memory_resource* scratch);
-    // Adds the row of `contact`, or nothing when no impulse can move it: the row, or null.
-    ContactRow* add(const PreparedContact& contact, const SolverBody* bodies);
-
-    std::pmr::vector<ContactRow> rows;  // in contact order
-    std::pmr::vector<ContactKey> keys;  // each row's contact's key in the ContactMemory
-};
-
-// The same rows built in the order a method visits them (soft step's colours): each placed in its slot as it is
-// filled, in storage from the frame's scratch that nothing writes before (a vector's resize would write every row
-// once more: 16 MB a frame on Box3D's large pyramid). Every slot below `count` must be placed before it is read.
+// The rows of the contacts that can_move built in the order a method visits them (soft step's colours): each placed in
+// its slot as it is filled, in storage from the frame's scratch that nothing writes before (a vector's resize would
+// write every row once more: 16 MB a frame on Box3D's large pyramid). Every slot below `count` must be placed before it
+// is read.
 class PlacedRows {
 public:
     PlacedRows(std::size_t count, std::pmr::memory_resource* scratch);

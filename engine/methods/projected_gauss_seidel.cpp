@@ -43,44 +43,64 @@ class ProjectedGaussSeidel {
 public:
     explicit ProjectedGaussSeidel(FrameContext& frame)
         : frame_(frame),
+          settings_(frame.settings),
           bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          active_(frame.contacts.size(), frame.scratch),
+          rows_(frame.scratch),
+          keys_(frame.scratch),
           targets_(frame.scratch),
           kept_(frame.scratch) {
+        rows_.reserve(frame.contacts.size());
+        keys_.reserve(frame.contacts.size());
         targets_.reserve(frame.contacts.size());
         for (const PreparedContact& c : frame.contacts) {
-            ContactRow* row = active_.add(c, bodies_.data());
-            if (!row) continue;                                     // nothing can move it: no visits
-            row->slip_offset = c.tangential_acceleration_velocity;  // step 4's term: 0 with the refinement off
+            if (!can_move(c)) continue;  // nothing can move it: no rows, no visits
+            ContactRow& row = rows_.emplace_back();
+            fill_contact_row(row, c, bodies_.data());
+            row.slip_offset = c.tangential_acceleration_velocity;  // step 4's term: 0 with the refinement off
+            keys_.push_back(contact_key(c));
             targets_.push_back(prepared_normal_velocity(c));
         }
-        if (frame.keeping) kept_.resize(active_.rows.size());
+        if (frame.keeping) kept_.resize(rows_.size());
     }
 
-    int active_count() const { return static_cast<int>(active_.rows.size()); }
+    // Warm start, then sweeps until one changes no contact's velocity by more than the epsilon; then the velocities
+    // written back and the totals remembered.
+    PhaseOutcome run() {
+        if (settings_.warm_start && frame_.memory) warm_start(*frame_.memory);
+        PhaseOutcome outcome;
+        outcome.iteration_limit = iterations_ + std::max(settings_.sweeps, 0) * static_cast<int>(rows_.size());
+        const double epsilon_squared = settings_.velocity_epsilon * settings_.velocity_epsilon;
+        bool converged = rows_.empty();
+        for (int pass = 0; pass < settings_.sweeps && !converged && !frame_.stop_requested(); ++pass)
+            converged = sweep(pass) <= epsilon_squared;
+        finish();
+        outcome.iterations_used = iterations_;
+        outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
+        frame_.recorder.end_phase(Phase::velocity, outcome);
+        return outcome;
+    }
 
-    // Last frame's totals, re-projected and clamped, applied before the first sweep. Returns how many.
-    int warm_start(const ContactMemory& memory) {
+private:
+    // Last frame's totals, re-projected and clamped, applied before the first sweep.
+    void warm_start(const ContactMemory& memory) {
         RememberedTotals remembered(memory, frame_.scratch);
-        for (std::size_t r = 0; r < active_.rows.size(); ++r) {
-            const std::optional<RowVisit> total = remembered.of(active_.rows[r], active_.keys[r]);
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
+            const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]);
             if (!total) continue;
             // The warm start has no target; the recorder is shown the velocity it started from.
             if (frame_.keeping)
-                report(r, row_velocity(active_.rows[r], bodies_.data()), *total,
-                       SweepPlace{0, 0, SolverStage::warm_start});
-            apply(active_.rows[r], bodies_.data(), *total);
+                report(r, row_velocity(rows_[r], bodies_.data()), *total, SweepPlace{0, 0, SolverStage::warm_start});
+            apply(rows_[r], bodies_.data(), *total);
             ++iterations_;
         }
-        return iterations_;
     }
 
     // One sweep over every active contact in index order; returns the largest |K (after - before)|^2 a visit
     // made at its own contact. The loop reads its data through locals and keeps its visits for the recorder in a
     // buffer (KeptVisit), so that recording or not, it makes no call.
     double sweep(int pass) {
-        ContactRow* const rows = active_.rows.data();
-        const std::size_t count = active_.rows.size();
+        ContactRow* const rows = rows_.data();
+        const std::size_t count = rows_.size();
         SolverBody* const bodies = bodies_.data();
         const double* const targets = targets_.data();
         KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
@@ -106,16 +126,13 @@ public:
     // Writes the velocities back to the bodies, remembers the totals. Every sweep visits every active contact in
     // index order, so the last visit of each contact is the last sweep's (or the warm start's, without sweeps): they
     // are stamped for LastTouch once, here, in that order.
-    void finish(ContactMemory* memory) {
+    void finish() {
         store_velocities(bodies_, frame_.bodies);
-        if (memory) remember_totals(active_.rows, active_.keys, *memory);
+        if (frame_.memory) remember_totals(rows_, keys_, *frame_.memory);
         if (frame_.touch)
-            for (const ContactRow& row : active_.rows) frame_.touch->touched(row.contact);
+            for (const ContactRow& row : rows_) frame_.touch->touched(row.contact);
     }
 
-    int iterations() const { return iterations_; }
-
-private:
     // Applies the change of the row's total, v.after - v.before, to the bodies, and keeps the total.
     [[gnu::always_inline]] static void apply(ContactRow& row, SolverBody* bodies, const RowVisit& v) {
         apply_impulse(row, bodies, world_impulse(row, v.increment()));
@@ -123,15 +140,15 @@ private:
     }
 
     void report(std::size_t r, const Axes& velocity, const RowVisit& totals, const SweepPlace& place) {
-        const ContactRow& row = active_.rows[r];
+        const ContactRow& row = rows_[r];
         const PreparedContact& c = frame_.contacts[static_cast<std::size_t>(row.contact)];
         VelocityVisit visit{.contact = row.contact,
                             .sweep = place,
-                            .epsilon = frame_.settings.velocity_epsilon,
+                            .epsilon = settings_.velocity_epsilon,
                             .updates = DesiredFollows::row_target,
                             .resolution = nullptr,
                             .contact_velocity = vector_of(velocity),
-                            .desired_terms = desired_again(c, velocity_refinements(frame_.settings)),
+                            .desired_terms = desired_again(c, velocity_refinements(settings_)),
                             .accumulated = totals.accumulated(),
                             .friction_rows = row.friction != 0.0};
         visit.desired_terms.separating_velocity = velocity.n;
@@ -140,31 +157,20 @@ private:
     }
 
     FrameContext& frame_;
+    const ResolverSettings& settings_;
     // Every buffer in the frame's scratch (FrameContext::scratch).
     std::pmr::vector<SolverBody> bodies_;
-    ActiveRows active_;                 // the rows, in contact order, with their contacts and keys
-    std::pmr::vector<double> targets_;  // per row: the normal velocity it asks for (m/s)
-    std::pmr::vector<KeptVisit> kept_;  // per row: its visit in the sweep under way, when the frame is recorded
+    std::pmr::vector<ContactRow> rows_;  // the contacts an impulse can move, in contact order
+    std::pmr::vector<ContactKey> keys_;  // per row: its contact's key in the ContactMemory
+    std::pmr::vector<double> targets_;   // per row: the normal velocity it asks for (m/s)
+    std::pmr::vector<KeptVisit> kept_;   // per row: its visit in the sweep under way, when the frame is recorded
     int iterations_ = 0;
 };
 
 }  // namespace
 
 PhaseOutcome projected_gauss_seidel_velocities(FrameContext& frame) {
-    const ResolverSettings& settings = frame.settings;
-    ProjectedGaussSeidel pgs(frame);
-    const int warm_started = settings.warm_start && frame.memory ? pgs.warm_start(*frame.memory) : 0;
-    PhaseOutcome outcome;
-    outcome.iteration_limit = warm_started + std::max(settings.sweeps, 0) * pgs.active_count();
-    const double epsilon_squared = settings.velocity_epsilon * settings.velocity_epsilon;
-    bool converged = pgs.active_count() == 0;
-    for (int sweeps = 0; sweeps < settings.sweeps && !converged && !frame.stop_requested(); ++sweeps)
-        converged = pgs.sweep(sweeps) <= epsilon_squared;
-    pgs.finish(frame.memory);
-    outcome.iterations_used = pgs.iterations();
-    outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
-    frame.recorder.end_phase(Phase::velocity, outcome);
-    return outcome;
+    return ProjectedGaussSeidel(frame).run();
 }
 
 }  // namespace impulse

@@ -44,10 +44,8 @@ PhaseOutcome split_impulse_positions(FrameContext& frame) {
     std::pmr::vector<ContactRow> rows(frame.scratch);
     std::pmr::vector<double> targets(frame.scratch);
     for (const PreparedContact& c : frame.contacts) {
-        if (!fill_contact_row(rows.emplace_back(), c, pseudo.data(), false)) {  // nothing can push it
-            rows.pop_back();
-            continue;
-        }
+        if (!can_move(c)) continue;  // nothing can push it
+        fill_contact_row(rows.emplace_back(), c, pseudo.data(), false);
         targets.push_back(position_bias(c.penetration, settings.position_bias, h));
     }
 

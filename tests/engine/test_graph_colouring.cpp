@@ -119,10 +119,12 @@ TEST_CASE("on a pyramid a colour's pairs share no moving body, each row is visit
     for (std::size_t b = 0; b < bodies.size(); ++b) bodies[b].mass = mass[b];
     std::vector<ContactRow> rows;
     for (const PreparedContact& p : prepared) {
+        if (!can_move(p)) continue;
         ContactRow row;
         row.basis = Mat3::Identity();
         row.anchor = {Vec3::Zero(), Vec3::Zero()};
-        if (fill_contact_row(row, p, bodies.data())) rows.push_back(row);
+        fill_contact_row(row, p, bodies.data());
+        rows.push_back(row);
     }
     REQUIRE(rows.size() > 100);
     const std::vector<int> colours = colours_of(rows, bodies);

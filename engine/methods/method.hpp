@@ -2,8 +2,8 @@
 // One signature for every resolution method, as solver2d gives every solver one (s2Solve_X(world, context)):
 // a method receives the frame (its bodies, its contacts prepared by steps 1-5, the settings, the forces, the
 // recorder and the contact memory), does its work, stamps every visit's contact (FrameContext::touched),
-// reports every visit to the recorder when it keeps the frame (record/visits.hpp), ends its phase
-// (recorder.end_phase) and says how the phase ended. Each method is one file in engine/methods/ defining one
+// reports every visit to the recorder when it keeps the frame (record/visits.hpp) and says how the phase ended (the
+// resolver tells the recorder: recorder.end_phase). Each method is one file in engine/methods/ defining one
 // MethodFunction, declared beside its row of engine/methods/method_table.hpp, which maps each settings value to its
 // function, its scope and the settings it reads. Nothing else names a method: adding one is its file, its
 // enumerator in settings/settings.hpp, its declaration and row in the table, and its section in docs/methods.md.

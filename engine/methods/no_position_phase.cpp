@@ -8,11 +8,9 @@
 
 namespace impulse {
 
-PhaseOutcome no_positions(FrameContext& frame) {
+PhaseOutcome no_positions(FrameContext& /*frame*/) {
     // Nothing to do and nothing left undone.
-    const PhaseOutcome outcome{.iteration_limit = 0, .iterations_used = 0, .stop = StopReason::resolved};
-    frame.recorder.end_phase(Phase::position, outcome);
-    return outcome;
+    return {.iteration_limit = 0, .iterations_used = 0, .stop = StopReason::resolved};
 }
 
 }  // namespace impulse

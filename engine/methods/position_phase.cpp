@@ -52,7 +52,6 @@ PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, M
     outcome.stop = selector.worst(settings.position_epsilon)                              ? StopReason::iteration_limit
                    : any_above(frame.contacts, settings.position_epsilon, penetration_of) ? StopReason::unmovable_left
                                                                                           : StopReason::resolved;
-    frame.recorder.end_phase(Phase::position, outcome);
     return outcome;
 }
 

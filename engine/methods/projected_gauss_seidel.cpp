@@ -76,7 +76,6 @@ public:
         finish();
         outcome.iterations_used = iterations_;
         outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
-        frame_.recorder.end_phase(Phase::velocity, outcome);
         return outcome;
     }
 

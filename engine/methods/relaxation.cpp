@@ -54,7 +54,6 @@ PhaseOutcome relaxation_positions(FrameContext& frame) {
     outcome.stop = !remaining  ? StopReason::resolved
                    : cut_short ? StopReason::iteration_limit
                                : StopReason::passes_complete;
-    frame.recorder.end_phase(Phase::position, outcome);
     return outcome;
 }
 

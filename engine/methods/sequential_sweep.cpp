@@ -48,7 +48,6 @@ PhaseOutcome sequential_sweep_velocities(FrameContext& frame) {
     }
     outcome.stop =
         any_above(contacts, settings.velocity_epsilon, desired_of) ? StopReason::sweeps_complete : StopReason::resolved;
-    frame.recorder.end_phase(Phase::velocity, outcome);
     return outcome;
 }
 

@@ -72,9 +72,7 @@ PhaseOutcome whole_step(FrameContext& frame) {
         step.remember(*frame.memory);
     else if (frame.memory)
         frame.memory->clear();
-    const PhaseOutcome outcome{step.visit_limit(), step.visits(), StopReason::sweeps_complete};
-    frame.recorder.end_phase(Phase::velocity, outcome);
-    return outcome;
+    return {step.visit_limit(), step.visits(), StopReason::sweeps_complete};
 }
 
 }  // namespace impulse

@@ -99,7 +99,6 @@ PhaseOutcome split_impulse_positions(FrameContext& frame) {
     if (frame.touch && outcome.iterations_used > 0)
         for (const ContactRow& row : rows) frame.touch->touched(row.contact);
     outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
-    frame.recorder.end_phase(Phase::position, outcome);
     return outcome;
 }
 

@@ -33,7 +33,6 @@ PhaseOutcome worst_first_velocities(FrameContext& frame) {
         ++outcome.iterations_used;
     }
     outcome.stop = selector.worst(settings.velocity_epsilon) ? StopReason::iteration_limit : StopReason::resolved;
-    frame.recorder.end_phase(Phase::velocity, outcome);
     return outcome;
 }
 

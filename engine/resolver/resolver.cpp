@@ -23,20 +23,21 @@ ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<con
                          setup.touch, setup.memory, setup.forces, setup.scratch, setup.stop};
     const MethodRow<VelocityMethod>& velocities = method_row(settings.velocity_method);
     const MethodRow<PositionMethod>& positions = method_row(position_method_in_effect(settings));
-    const auto run = [&](const auto& method, double& seconds) {
+    const auto run = [&](const auto& method, Phase phase, double& seconds) {
         start = Clock::now();
         const PhaseOutcome outcome = method.solve(context);
         seconds = seconds_since(start);
+        recorder.end_phase(phase, outcome);
         return outcome;
     };
     ResolutionSummary summary;
     // A method that owns the whole step runs after an empty position phase, whatever the phase order.
     if (settings.phase_order == PhaseOrder::positions_first || velocities.scope == MethodScope::whole_step) {
-        summary.position = run(positions, times.position);
-        if (!context.cut_short) summary.velocity = run(velocities, times.velocity);
+        summary.position = run(positions, Phase::position, times.position);
+        if (!context.cut_short) summary.velocity = run(velocities, Phase::velocity, times.velocity);
     } else {
-        summary.velocity = run(velocities, times.velocity);
-        if (!context.cut_short) summary.position = run(positions, times.position);
+        summary.velocity = run(velocities, Phase::velocity, times.velocity);
+        if (!context.cut_short) summary.position = run(positions, Phase::position, times.position);
     }
     summary.cut_short = context.cut_short;
     recorder.end_frame(bodies);

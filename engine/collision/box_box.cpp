@@ -60,12 +60,6 @@ struct Axis {
     return projected_radius(a, direction) + projected_radius(b, direction) - std::abs(between.dot(direction));
 }
 
-Feature edge_feature(int along, const std::array<int, 3>& negative) {
-    const int first = along == 0 ? 1 : 0, second = along == 2 ? 1 : 2;
-    return {FeatureKind::edge,
-            4 * along + negative[static_cast<std::size_t>(first)] + 2 * negative[static_cast<std::size_t>(second)]};
-}
-
 struct ClipPoint {
     Vec3 position;
     Feature feature;  // of the incident box: a vertex, or the edge (or face) the point lies on
@@ -204,7 +198,7 @@ void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
         // The side from this corner to the next runs along u (k = 0, 2) or v (k = 1, 3).
         polygon.push_back({incident.centre + incident.axes * box_vertex(incident.half, vertex),
                            {FeatureKind::vertex, vertex},
-                           edge_feature(k % 2 == 0 ? u : v, negative)});
+                           {FeatureKind::edge, box_edge(k % 2 == 0 ? u : v, negative)}});
     }
 
     // Clip against the four side planes of the reference face.
@@ -266,7 +260,7 @@ void edge_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
             local[k] = neg ? -box.half[k] : box.half[k];
         }
         start = box.centre + box.axes * local;  // the edge's midpoint
-        feature = edge_feature(along, negative);
+        feature = {FeatureKind::edge, box_edge(along, negative)};
     };
     Vec3 pa, pb;
     Feature fa, fb;

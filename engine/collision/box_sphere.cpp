@@ -28,9 +28,7 @@ Feature box_feature_at(const Vec3& local, const Vec3& h) {
     int along = 0;
     for (int axis = 0; axis < 3; ++axis)
         if (std::abs(local[axis]) < h[axis] * (1.0 - 1e-9)) along = axis;
-    const int first = along == 0 ? 1 : 0, second = along == 2 ? 1 : 2;
-    return {FeatureKind::edge,
-            4 * along + signs[static_cast<std::size_t>(first)] + 2 * signs[static_cast<std::size_t>(second)]};
+    return {FeatureKind::edge, box_edge(along, signs)};
 }
 
 }  // namespace

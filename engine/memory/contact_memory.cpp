@@ -5,10 +5,6 @@
 
 namespace impulse {
 
-ContactKey key_of(const Contact& contact) {
-    return {contact.bodies, contact.origin};
-}
-
 namespace {
 
 std::size_t hash_of(const ContactKey& key) {
@@ -37,7 +33,11 @@ bool same_key(const ContactKey& a, const ContactKey& b) {
 
 }  // namespace
 
-std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key) const {
+std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key, std::ptrdiff_t hint) const {
+    if (hint >= 0 && static_cast<std::size_t>(hint) < entries_.size()) {
+        const auto at = static_cast<std::size_t>(hint);
+        if (keeps_key_[at] && same_key(entries_[at].first, key)) return hint;
+    }
     if (index_.empty()) return -1;
     const std::size_t mask = index_.size() - 1;
     for (std::size_t at = hash_of(key) & mask;; at = (at + 1) & mask) {
@@ -45,14 +45,6 @@ std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key) const {
         if (entry < 0) return -1;
         if (same_key(entries_[static_cast<std::size_t>(entry)].first, key)) return entry;
     }
-}
-
-std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key, std::ptrdiff_t hint) const {
-    if (hint >= 0 && static_cast<std::size_t>(hint) < entries_.size()) {
-        const auto at = static_cast<std::size_t>(hint);
-        if (keeps_key_[at] && same_key(entries_[at].first, key)) return hint;
-    }
-    return slot_of(key);
 }
 
 void ContactMemory::index_entries() {

@@ -24,18 +24,14 @@ struct ContactKey {
     bool operator==(const ContactKey&) const = default;
 };
 
-ContactKey key_of(const Contact& contact);
-
 class ContactMemory {
 public:
     // Where last frame's accumulated impulse of the contact with this key is: an index into what was remembered
     // (below size()), or -1 for a new contact. A solver that must warm start each remembered impulse once can mark
-    // the ones it took.
-    std::ptrdiff_t slot_of(const ContactKey& key) const;
-    // The same, trying `hint` first: a solver that looks its contacts up in the order it remembered them (the
-    // detection's order, which changes little from frame to frame) passes the slot after the last one it found,
-    // and most lookups read the next entry instead of a scattered index slot and entry.
-    std::ptrdiff_t slot_of(const ContactKey& key, std::ptrdiff_t hint) const;
+    // the ones it took. `hint` is tried first: a solver that looks its contacts up in the order it remembered them
+    // (the detection's order, which changes little from frame to frame) passes the slot after the last one it
+    // found, and most lookups read the next entry instead of a scattered index slot and entry.
+    std::ptrdiff_t slot_of(const ContactKey& key, std::ptrdiff_t hint = -1) const;
     // The impulse remembered at `slot` (world coordinates, so a basis that turned a little between frames still
     // receives the same push).
     const Vec3& impulse_at(std::ptrdiff_t slot) const { return entries_[static_cast<std::size_t>(slot)].second; }

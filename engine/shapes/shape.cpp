@@ -33,4 +33,9 @@ int box_face(int axis, bool negative) {
     return 2 * axis + (negative ? 1 : 0);
 }
 
+int box_edge(int axis, const std::array<int, 3>& negative) {
+    const int first = axis == 0 ? 1 : 0, second = axis == 2 ? 1 : 2;  // the other two axes, in axis order
+    return 4 * axis + negative[static_cast<std::size_t>(first)] + 2 * negative[static_cast<std::size_t>(second)];
+}
+
 }  // namespace impulse

@@ -3,6 +3,8 @@
 
 #include "math/types.hpp"
 
+#include <array>
+
 #include <variant>
 
 namespace impulse {
@@ -47,5 +49,7 @@ double bounding_radius(const Shape& shape);
 //             of e % 4, in axis order (for an x edge: bit 0 gives y, bit 1 gives z).
 Vec3 box_vertex(const Vec3& half_size, int vertex);
 int box_face(int axis, bool negative);
+// The edge along `axis` whose other coordinates are negative where `negative` (per axis, 0 or 1) says.
+int box_edge(int axis, const std::array<int, 3>& negative);
 
 }  // namespace impulse

@@ -15,10 +15,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-Placement placement_of(const RigidBody& body) {
-    return {body.position, body.orientation.toRotationMatrix()};
-}
-
 // Gives the contacts a pair test just appended (from `first` on) the combined material of the two surfaces.
 void stamp_material(std::vector<Contact>& contacts, std::size_t first, const Material& a, const Material& b) {
     if (first == contacts.size()) return;  // no contact: nothing to combine
@@ -47,7 +43,7 @@ void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Dete
 
     std::vector<Placement> placements;
     placements.reserve(bodies.size());
-    for (const RigidBody& body : bodies) placements.push_back(placement_of(body));
+    for (const RigidBody& body : bodies) placements.push_back({body.position, body.orientation.toRotationMatrix()});
     // Each body's material looked up by name once, not once per pair tested.
     std::vector<const Material*> materials;
     materials.reserve(bodies.size());

@@ -71,7 +71,6 @@ public:
           h_(frame.settings.duration),
           contacts_(frame.scratch),
           keys_(frame.scratch),
-          bounce_(frame.scratch),
           target_(frame.bodies.size(), frame.scratch),
           displacement_(frame.bodies.size(), frame.scratch),
           velocity_(frame.bodies.size(), frame.scratch),
@@ -138,12 +137,6 @@ private:
         Vec3 angular = Vec3::Zero();
     };
 
-    // Restitution's inputs, read before anything moves: only a contact that may bounce needs them.
-    struct Bounce {
-        double separating_velocity = 0.0;  // v_n when the frame began (step 4)
-        double restitution = 0.0;          // c
-    };
-
     void prepare_bodies() {
         const Forces& f = frame_.forces;
         for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
@@ -192,9 +185,6 @@ private:
                 }
             }
             c.dual = warm_start(remembered, c.friction, avbd_, c.penalty);  // (Eq. 19)
-            Bounce& bounce = bounce_.emplace_back();
-            bounce.restitution = row.restitution;
-            if (row.restitution != 0.0) bounce.separating_velocity = row.contact_velocity.x();
         }
     }
 
@@ -329,12 +319,10 @@ private:
     // Not AVBD's (implicit Euler ends a collision at rest): soft step's bounce, once, on the velocities.
     void restitution() {
         const double cutoff = settings_.restitution_cutoff;
-        for (std::size_t k = 0; k < contacts_.size(); ++k) {
-            const Bounce& bounce = bounce_[k];
-            const AvbdContact& c = contacts_[k];
-            if (bounce.restitution == 0.0 || bounce.separating_velocity >= -cutoff || !(c.dual.lambda.x() > 0.0))
-                continue;
+        for (const AvbdContact& c : contacts_) {
+            // Step 4's v_n when the frame began, as prepared (nothing updates it), is the one that bounces.
             const PreparedContact& row = frame_.contacts[static_cast<std::size_t>(c.contact)];
+            if (row.restitution == 0.0 || row.contact_velocity.x() >= -cutoff || !(c.dual.lambda.x() > 0.0)) continue;
             const double d = row.delta_velocity_per_unit_impulse;  // step 3 (the frame's mass, as prepared)
             if (!(d > 0.0)) continue;                              // no impulse can move it
             const PerBody<Vec3> relative = relative_positions(row);
@@ -342,9 +330,9 @@ private:
             const Vec3 velocity =
                 contact_velocity(row.basis, relative, contact_motion(row.bodies, frame_.bodies), h_, false)
                     .contact_velocity;
-            const double impulse = (-bounce.restitution * bounce.separating_velocity - velocity.x()) / d;
+            const double impulse = (-row.restitution * row.contact_velocity.x() - velocity.x()) / d;
             if (!(impulse > 0.0)) continue;
-            if (frame_.keeping) report_bounce(c.contact, bounce, velocity, impulse);
+            if (frame_.keeping) report_bounce(row, velocity, impulse);
             apply_velocity_change(
                 frame_.bodies, c.bodies,
                 velocity_change(row.basis.normal() * impulse, relative, impulse::mass_of(row, frame_.mass)));  // step 7
@@ -353,20 +341,20 @@ private:
     }
 
     // A bounce as the recorder takes it: an impulse along the normal, as soft step's restitution visit.
-    void report_bounce(int contact, const Bounce& bounce, const Vec3& velocity, double impulse) const {
-        const double desired = -bounce.restitution * bounce.separating_velocity - velocity.x();
+    void report_bounce(const PreparedContact& row, const Vec3& velocity, double impulse) const {
+        const double desired = -row.restitution * row.contact_velocity.x() - velocity.x();
         frame_.recorder.velocity_visit(
-            {.contact = contact,
+            {.contact = row.contact,
              .sweep = SweepPlace{0, 0, SolverStage::restitution},
              .epsilon = 0.0,
              .updates = DesiredFollows::nothing,
              .resolution = nullptr,
              .contact_velocity = velocity,
              .desired_terms = {.separating_velocity = velocity.x(),
-                               .restitution = bounce.restitution,
+                               .restitution = row.restitution,
                                .restitution_cutoff = settings_.restitution_cutoff,
                                .restitution_cutoff_applied = false,
-                               .restitution_used = bounce.restitution,
+                               .restitution_used = row.restitution,
                                .velocity_from_acceleration_applied = false,
                                .velocity_from_acceleration = 0.0,
                                .position_bias = std::nullopt,
@@ -396,7 +384,6 @@ private:
     // Every buffer in the frame's scratch (FrameContext::scratch).
     std::pmr::vector<AvbdContact> contacts_;
     std::pmr::vector<ContactKey> keys_;            // beside each contact
-    std::pmr::vector<Bounce> bounce_;              // beside each contact
     std::pmr::vector<Displacement> target_;        // per body: y - x-
     std::pmr::vector<Displacement> displacement_;  // per body: x - x-, the iterations' unknown
     std::pmr::vector<Velocities> velocity_;        // per body

@@ -61,19 +61,11 @@ void TraceRecorder::contacts_prepared(const PreparedFrame& frame) {
     count(contact_bytes * record.contacts.size());
 }
 
-template <typename Update>
-std::vector<Update> TraceRecorder::kept_updates(const std::vector<Update>& updates) const {
-    std::vector<Update> kept;
-    for (const Update& u : updates)
-        if (trace_.recording.records_contact(u.contact)) kept.push_back(u);
-    return kept;
-}
-
 void TraceRecorder::position_visit(const PositionVisit& visit) {
     if (!recording_) return;
     PositionIteration& kept = trace_.frames.back().position.iterations.emplace_back(visits_.position_iteration(visit));
     if (!trace_.recording.records_contact(kept.contact)) kept.resolution.reset();
-    if (trace_.recording.contacts) kept.updates = kept_updates(kept.updates);
+    if (trace_.recording.contacts) keep_recorded(kept.updates);
     count((kept.resolution ? position_iteration_bytes : iteration_line_bytes) +
           position_update_bytes * kept.updates.size());
 }
@@ -84,7 +76,7 @@ void TraceRecorder::velocity_visit(const VelocityVisit& visit) {
     VelocityIteration& kept = iterations.emplace_back(visits_.velocity_iteration(visit));
     kept.iteration = static_cast<int>(iterations.size()) - 1;  // AVBD's body visits and dual updates count too
     if (!trace_.recording.records_contact(kept.contact)) kept.resolution.reset();
-    if (trace_.recording.contacts) kept.updates = kept_updates(kept.updates);
+    if (trace_.recording.contacts) keep_recorded(kept.updates);
     // A full record's size is an average over the methods; a line is mostly its sweep fields, when it has them.
     const std::size_t line_bytes =
         iteration_line_bytes + (kept.sweep ? sweep_place_bytes : 0) + (kept.accumulated ? accumulated_bytes : 0);
@@ -102,9 +94,7 @@ void TraceRecorder::body_visit(const SweepPlace& place, const BodyVisitRecord& v
     kept.contact = visit.gathered.empty() ? 0 : visit.gathered.front().contact;
     kept.sweep = place;
     std::vector<AvbdContactRows>& gathered = kept.body_visit.emplace(visit).gathered;
-    if (trace_.recording.contacts)
-        std::erase_if(gathered,
-                      [this](const AvbdContactRows& c) { return !trace_.recording.records_contact(c.contact); });
+    if (trace_.recording.contacts) keep_recorded(gathered);
     count(iteration_line_bytes + sweep_place_bytes + body_visit_bytes + gathered_bytes * gathered.size());
 }
 

@@ -45,8 +45,10 @@ private:
     // Adds a record's estimated size; past the budget, drops the frame in progress and stops recording.
     void count(std::size_t bytes);
 
-    template <typename Update>
-    std::vector<Update> kept_updates(const std::vector<Update>& updates) const;
+    // Drops what `records` holds of the contacts the recording leaves out (updates, a body visit's contacts).
+    void keep_recorded(auto& records) const {
+        std::erase_if(records, [this](const auto& r) { return !trace_.recording.records_contact(r.contact); });
+    }
 
     Trace& trace_;
     VisitRecords visits_;  // the frame's iterations, from the methods' visits

@@ -137,11 +137,16 @@ double hull_area(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s, con
                      triangle(p, r, s), triangle(q, r, s)});
 }
 
-// Of more than four points, keep the deepest, the one farthest from it, the one making the largest triangle
-// with those two, and the one adding the most area to that triangle: the quadrilateral that best keeps the
-// support area.
+// The points to keep, ascending: all of them when there are at most four; of more, the deepest, the one farthest
+// from it, the one making the largest triangle with those two, and the one adding the most area to that triangle:
+// the quadrilateral that best keeps the support area.
 Few<std::size_t, 4> reduce_to_four(const Few<Vec3, most_points>& points, const Few<double, most_points>& depth,
                                    const Vec3& normal) {
+    Few<std::size_t, 4> keep;
+    if (points.size() <= 4) {
+        for (std::size_t k = 0; k < points.size(); ++k) keep.push_back(k);
+        return keep;
+    }
     const std::size_t first = static_cast<std::size_t>(std::max_element(depth.begin(), depth.end()) - depth.begin());
     const auto best = [&points](auto score) {
         std::size_t chosen = 0;
@@ -158,7 +163,6 @@ Few<std::size_t, 4> reduce_to_four(const Few<Vec3, most_points>& points, const F
     const std::size_t fourth = best([&](const Vec3& q) { return hull_area(p1, p2, p3, q, normal); });
     std::array<std::size_t, 4> sorted{first, second, third, fourth};
     std::sort(sorted.begin(), sorted.end());
-    Few<std::size_t, 4> keep;
     for (std::size_t k = 0; k < sorted.size(); ++k)
         if (k == 0 || sorted[k] != sorted[k - 1]) keep.push_back(sorted[k]);
     return keep;
@@ -226,14 +230,7 @@ void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
         depth.push_back(d);
         features.push_back(p.feature);
     }
-    Few<std::size_t, most_points> chosen;
-    if (points.size() > 4) {
-        for (const std::size_t k : reduce_to_four(points, depth, ref_normal)) chosen.push_back(k);
-    } else {
-        for (std::size_t k = 0; k < points.size(); ++k) chosen.push_back(k);
-    }
-
-    for (std::size_t k : chosen) {
+    for (const std::size_t k : reduce_to_four(points, depth, ref_normal)) {
         Contact c;
         c.bodies = {ia, ib};
         c.normal = axis.direction;

@@ -38,7 +38,8 @@ void resolve_penetration(FrameContext& frame, Projection projection, PositionPha
 PhaseOutcome worst_first_positions(FrameContext& frame, Projection projection, Movable movable) {
     const ResolverSettings& settings = frame.settings;
     PhaseOutcome outcome;
-    outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(frame.contacts.size()));
+    outcome.iteration_limit =
+        iteration_limit(settings.position_iterations, settings, static_cast<int>(frame.contacts.size()));
     PositionPhaseState state{std::vector<double>(frame.bodies.size(), 0.0)};
     WorstFirstSelector selector = penetration_selector(frame, movable);
     while (outcome.iterations_used < outcome.iteration_limit) {

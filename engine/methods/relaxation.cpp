@@ -28,7 +28,8 @@ PhaseOutcome relaxation_positions(FrameContext& frame) {
     const ResolverSettings& settings = frame.settings;
     std::span<PreparedContact> contacts = frame.contacts;
     PhaseOutcome outcome;
-    outcome.iteration_limit = position_iteration_limit(settings, static_cast<int>(contacts.size()));
+    outcome.iteration_limit =
+        iteration_limit(settings.position_iterations, settings, static_cast<int>(contacts.size()));
     PositionPhaseState state{std::vector<double>(frame.bodies.size(), 0.0)};
     WorstFirstSelector selector = penetration_selector(frame, nullptr);
     bool cut_short = false;  // the iteration limit stopped a pass with a contact still waiting for its turn

@@ -14,7 +14,8 @@ PhaseOutcome worst_first_velocities(FrameContext& frame) {
     std::span<PreparedContact> contacts = frame.contacts;
     const ResolverSettings& settings = frame.settings;
     PhaseOutcome outcome;
-    outcome.iteration_limit = velocity_iteration_limit(settings, static_cast<int>(contacts.size()));
+    outcome.iteration_limit =
+        iteration_limit(settings.velocity_iterations, settings, static_cast<int>(contacts.size()));
     std::vector<char> eligible(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i) eligible[i] = !contacts[i].inert;
     WorstFirstSelector selector(settings.worst_first_search, contacts, frame.bodies.size(), desired_of,

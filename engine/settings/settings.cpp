@@ -5,14 +5,6 @@
 
 namespace impulse {
 
-int position_iteration_limit(const ResolverSettings& settings, int contact_count) {
-    return settings.position_iterations.value_or(settings.iterations_per_contact * contact_count);
-}
-
-int velocity_iteration_limit(const ResolverSettings& settings, int contact_count) {
-    return settings.velocity_iterations.value_or(settings.iterations_per_contact * contact_count);
-}
-
 namespace {
 constexpr std::array<std::string_view, 9> names{
     "book", "chapter", "sweep", "pgs", "pgs_split", "soft_step", "soft_step_recycled", "soft_step_coloured", "avbd"};

@@ -144,8 +144,11 @@ inline VelocityRefinements velocity_refinements(const ResolverSettings& s) {
     return {s.restitution_cutoff, s.velocity_from_acceleration, s.tangential_acceleration_velocity};
 }
 
-int position_iteration_limit(const ResolverSettings& settings, int contact_count);
-int velocity_iteration_limit(const ResolverSettings& settings, int contact_count);
+// A phase's iteration limit: its `fixed` limit (position_iterations, velocity_iterations) when set, else
+// iterations_per_contact x the contacts.
+inline int iteration_limit(std::optional<int> fixed, const ResolverSettings& settings, int contact_count) {
+    return fixed.value_or(settings.iterations_per_contact * contact_count);
+}
 
 // The named presets:
 //   book     the reference engine: positions then velocities, worst-first, epsilons 0.01, lever-arm limit

@@ -57,8 +57,8 @@ TEST_CASE("the book preset is the reference engine's configuration") {
     CHECK(s.angular_limit.factor == 0.2);
     CHECK(s.position_epsilon == 0.01);
     CHECK(s.velocity_epsilon == 0.01);
-    CHECK(position_iteration_limit(s, 7) == 28);
-    CHECK(velocity_iteration_limit(s, 7) == 28);
+    CHECK(iteration_limit(s.position_iterations, s, 7) == 28);
+    CHECK(iteration_limit(s.velocity_iterations, s, 7) == 28);
     CHECK(s.restitution_cutoff == 0.25);
     CHECK(s.velocity_from_acceleration);
     CHECK(s.tangential_acceleration_velocity);

@@ -37,18 +37,15 @@ PositionResolution velocity_based(const PreparedContact& contact, const PerBody<
                       ? std::min(contact.penetration / rewind.closing_velocity, rewind.time_limit)
                       : 0.0;
     rewind.removed_penetration = rewind.closing_velocity * rewind.time;
-    for (int i = 0; i < 2; ++i) {
-        if (!mass[i]) continue;
-        rewind.linear_change[i] = -*path_velocity[i] * rewind.time;
-        rewind.angular_change[i] = -*path_rotation[i] * rewind.time;
-    }
 
-    // The rest, if any, by nonlinear projection.
+    // The rest, if any, by nonlinear projection; each body's move is the rewind's and the projection's.
     PositionResolution r = nonlinear_projection(contact, mass, contact.penetration - rewind.removed_penetration, limit,
                                                 orientation_update);
     r.method = PositionMethod::velocity_based;
     for (int i = 0; i < 2; ++i) {
         if (!mass[i]) continue;
+        rewind.linear_change[i] = -*path_velocity[i] * rewind.time;
+        rewind.angular_change[i] = -*path_rotation[i] * rewind.time;
         *r.change.linear_change[i] += *rewind.linear_change[i];
         *r.change.angular_change[i] += *rewind.angular_change[i];
     }

@@ -63,7 +63,9 @@ void TraceRecorder::contacts_prepared(const PreparedFrame& frame) {
 
 void TraceRecorder::position_visit(const PositionVisit& visit) {
     if (!recording_) return;
-    PositionIteration& kept = trace_.frames.back().position.iterations.emplace_back(visits_.position_iteration(visit));
+    std::vector<PositionIteration>& iterations = trace_.frames.back().position.iterations;
+    PositionIteration& kept = iterations.emplace_back(visits_.position_iteration(visit));
+    kept.iteration = static_cast<int>(iterations.size()) - 1;  // numbered from 0 in each phase
     if (!trace_.recording.records_contact(kept.contact)) kept.resolution.reset();
     if (trace_.recording.contacts) keep_recorded(kept.updates);
     count((kept.resolution ? position_iteration_bytes : iteration_line_bytes) +
@@ -111,7 +113,6 @@ void TraceRecorder::dual_visit(const SweepPlace& place, const DualUpdateRecord& 
 
 void TraceRecorder::end_phase(Phase phase, const PhaseOutcome& outcome) {
     if (!recording_) return;
-    visits_.end_phase();
     FrameRecord& frame = trace_.frames.back();
     (phase == Phase::position ? frame.position.outcome : frame.velocity.outcome) = outcome;
 }

@@ -11,7 +11,6 @@ void VisitRecords::begin(const PreparedFrame& frame) {
     // v_s + step 5's desired delta v: the bounce and the position bias on top of the velocity it was judged on.
     for (const PreparedContact& c : contacts_)
         targets_.push_back(c.inert ? 0.0 : c.contact_velocity.x() + c.desired_delta_velocity);
-    iteration_ = 0;
 }
 
 PositionResolution VisitRecords::push_resolution(const PositionVisit& visit) const {
@@ -34,7 +33,7 @@ PositionResolution VisitRecords::push_resolution(const PositionVisit& visit) con
 
 PositionIteration VisitRecords::position_iteration(const PositionVisit& visit) {
     const PreparedContact& c = contacts_[static_cast<std::size_t>(visit.contact)];
-    PositionIteration it{iteration_++,
+    PositionIteration it{0,
                          visit.contact,
                          c.penetration,
                          visit.resolution ? visit.epsilon : 0.0,
@@ -64,7 +63,7 @@ VelocityResolution VisitRecords::row_resolution(const VelocityVisit& visit) cons
 
 VelocityIteration VisitRecords::velocity_iteration(const VelocityVisit& visit) {
     const bool accumulating = !visit.resolution;
-    VelocityIteration it{.iteration = iteration_++,
+    VelocityIteration it{.iteration = 0,
                          .contact = visit.contact,
                          .desired_delta_velocity = 0.0,
                          .epsilon = visit.epsilon,

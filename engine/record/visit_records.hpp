@@ -19,11 +19,9 @@ class VisitRecords {
 public:
     // A frame's start: its contacts as prepared are the bookkeeping's start.
     void begin(const PreparedFrame& frame);
-    // A visit as an iteration of its phase, numbered from 0; the bookkeeping follows it.
+    // A visit as an iteration of its phase (numbered by the trace recorder); the bookkeeping follows it.
     PositionIteration position_iteration(const PositionVisit& visit);
     VelocityIteration velocity_iteration(const VelocityVisit& visit);
-    // The phase ended: the next iteration is the next phase's first.
-    void end_phase() { iteration_ = 0; }
 
 private:
     // The split impulse's push as step 8's record: step 3's inertias, and how far it moved the contact's points.
@@ -40,7 +38,6 @@ private:
     VelocityRefinements refinements_{};
     std::optional<ContactsByBody> by_body_;
     std::vector<int> sharing_;
-    int iteration_ = 0;
 };
 
 }  // namespace impulse

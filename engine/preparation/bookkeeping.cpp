@@ -44,4 +44,9 @@ DesiredDeltaVelocity desired_again(const PreparedContact& contact, const Velocit
                                   refinements, contact.position_bias);
 }
 
+template void update_penetrations(std::span<PreparedContact>, std::span<const int>, const std::array<int, 2>&,
+                                  const PositionChange&, NotShown);
+template void update_contact_velocities(std::span<PreparedContact>, std::span<const int>, const std::array<int, 2>&,
+                                        const VelocityChange&, const VelocityRefinements&, NotShown);
+
 }  // namespace impulse

@@ -164,7 +164,11 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
         out["soft_step"]["order"] = name_of(solve_order_names, s.soft_step.order);
     if (s.recycling != RecyclingSettings{})
         out["recycling"] = {{"distance", s.recycling.distance}, {"angle", s.recycling.angle}};
-    if (s.speculative_margin != 0.0) out["speculative_margin"] = s.speculative_margin;
+    // Written when not 0 (the traces of the presets without a margin are unchanged) and whenever its preset has
+    // one, so a margin switched off under soft_step reads back as off, not as the preset's 2 cm.
+    const std::optional<ResolverSettings> named = preset(s.preset);
+    if (s.speculative_margin != 0.0 || (named && named->speculative_margin != 0.0))
+        out["speculative_margin"] = s.speculative_margin;
     if (s.velocity_method == VelocityMethod::avbd || s.avbd != AvbdSettings{})
         out["avbd"] = {{"iterations", s.avbd.iterations},
                        {"alpha", s.avbd.alpha},

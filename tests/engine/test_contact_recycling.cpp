@@ -227,12 +227,15 @@ TEST_CASE("recorded and unrecorded recycled runs are bit-identical") {
     CHECK(quiet.bodies() == traced.bodies());
 }
 
-TEST_CASE("soft_step_recycled is soft_step with recycling and a stiffer spring of the same push-out rate") {
+TEST_CASE(
+    "soft_step_recycled is soft_step with recycling, a stiffer spring of the same push-out rate and a 2 cm margin") {
     const ResolverSettings plain = *preset("soft_step");
     ResolverSettings recycled = *preset("soft_step_recycled");
     CHECK(recycled.recycling.distance == 0.05);
     CHECK(recycled.soft_step.contact_hertz == 36.0);
     CHECK(recycled.soft_step.damping_ratio == 12.0);
+    CHECK(recycled.speculative_margin == 0.02);  // Box3D's speculative distance; plain soft_step keeps 0
+    CHECK(plain.speculative_margin == 0.0);
     // Both scaled by 1.2: the soft contact's bias rate is soft_step's, its mass scale larger, at every sub-step count
     // from 3 (at 1 and 2 the cap of a quarter of the sub-step rate, 15 and 30 Hz, cuts the hertz).
     for (const int substeps : {3, 4, 8, 32}) {
@@ -247,6 +250,7 @@ TEST_CASE("soft_step_recycled is soft_step with recycling and a stiffer spring o
     recycled.recycling = plain.recycling;
     recycled.soft_step.contact_hertz = plain.soft_step.contact_hertz;
     recycled.soft_step.damping_ratio = plain.soft_step.damping_ratio;
+    recycled.speculative_margin = plain.speculative_margin;
     CHECK(recycled == plain);
 }
 

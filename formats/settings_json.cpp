@@ -155,19 +155,22 @@ json settings_json(const ResolverSettings& s, const WorldSettings& world) {
     };
     // Settings added after trace format 1 was fixed are written only when they differ from what older versions
     // did without them (no Baumgarte term in step 5 unless the old `baumgarte` position method was chosen, the
-    // reference sliding friction), so the traces older versions can read stay byte-identical and readable.
-    if (s.baumgarte) out["baumgarte"] = true;
-    if (s.sliding_friction != SlidingFriction::reference)
-        out["sliding_friction"] = name_of(sliding_friction_names, s.sliding_friction);
-    // Written only when not the default, so the traces of the runs before the setting are unchanged.
-    if (s.soft_step.order != SolveOrder::contacts)
-        out["soft_step"]["order"] = name_of(solve_order_names, s.soft_step.order);
-    if (s.recycling != RecyclingSettings{})
-        out["recycling"] = {{"distance", s.recycling.distance}, {"angle", s.recycling.angle}};
-    // Written when not 0 (the traces of the presets without a margin are unchanged) and whenever its preset has
-    // one, so a margin switched off under soft_step reads back as off, not as the preset's 2 cm.
+    // reference sliding friction, detection's order, no recycling, no margin), so the traces older versions can read
+    // stay byte-identical and readable; and whenever the run's preset sets them otherwise, since a reader starts from
+    // the preset: pgs with its Baumgarte term switched off, or soft_step_recycled without recycling, reads back so.
+    const ResolverSettings unset{};
     const std::optional<ResolverSettings> named = preset(s.preset);
-    if (s.speculative_margin != 0.0 || (named && named->speculative_margin != 0.0))
+    const auto needed = [&](const auto& field) {
+        return field(s) != field(unset) || (named && field(*named) != field(unset));
+    };
+    if (needed([](const ResolverSettings& r) { return r.baumgarte; })) out["baumgarte"] = s.baumgarte;
+    if (needed([](const ResolverSettings& r) { return r.sliding_friction; }))
+        out["sliding_friction"] = name_of(sliding_friction_names, s.sliding_friction);
+    if (needed([](const ResolverSettings& r) { return r.soft_step.order; }))
+        out["soft_step"]["order"] = name_of(solve_order_names, s.soft_step.order);
+    if (needed([](const ResolverSettings& r) { return r.recycling; }))
+        out["recycling"] = {{"distance", s.recycling.distance}, {"angle", s.recycling.angle}};
+    if (needed([](const ResolverSettings& r) { return r.speculative_margin; }))
         out["speculative_margin"] = s.speculative_margin;
     if (s.velocity_method == VelocityMethod::avbd || s.avbd != AvbdSettings{})
         out["avbd"] = {{"iterations", s.avbd.iterations},

@@ -163,7 +163,8 @@ inline int iteration_limit(std::optional<int> fixed, const ResolverSettings& set
 //   pgs_split   pgs with split impulse instead of Baumgarte (Bullet's split-impulse mode).
 //   soft_step   Box2D v3: 4 sub-steps of soft contacts, one relax sweep each, restitution after.
 //   soft_step_recycled  soft_step with Box3D's contact recycling: a pair's contacts kept while it moves less than
-//            5 cm (Box3D's 10 linear slops) and turns less than 10 degrees; contacts of 36 Hz, damping ratio 12.
+//            5 cm (Box3D's 10 linear slops) and turns less than 10 degrees; contacts of 36 Hz, damping ratio 12;
+//            box-box face points kept up to 2 cm outside as speculative points (Box3D's 4 linear slops).
 //   soft_step_coloured  soft_step_recycled with its contacts solved colour by colour (soft_step.order = colours).
 //   avbd        augmented vertex block descent: 10 iterations of block solves and dual updates (AvbdSettings).
 std::span<const std::string_view> preset_names();

@@ -1,6 +1,7 @@
 #include "methods/contact_rows.hpp"
 
-#include <new>
+#include "methods/graph_colouring.hpp"
+
 #include <type_traits>
 
 namespace impulse {
@@ -14,13 +15,6 @@ std::pmr::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, st
         solver[b].mass = mass[b];
     }
     return solver;
-}
-
-void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>& bodies) {
-    for (std::size_t b = 0; b < bodies.size(); ++b) {
-        bodies[b].velocity = solver[b].velocity;
-        bodies[b].angular_velocity = solver[b].angular_velocity;
-    }
 }
 
 void fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBody* bodies, bool friction_rows) {
@@ -55,18 +49,37 @@ void fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBod
     }
 }
 
-PlacedRows::PlacedRows(std::size_t count, std::pmr::memory_resource* scratch)
-    : rows(static_cast<ContactRow*>(scratch->allocate(count * sizeof(ContactRow), alignof(ContactRow))), count),
-      scratch_(scratch) {}
-
-PlacedRows::~PlacedRows() {
-    static_assert(std::is_trivially_destructible_v<ContactRow>);
-    scratch_->deallocate(rows.data(), rows.size() * sizeof(ContactRow), alignof(ContactRow));
+RowSolver::RowSolver(FrameContext& frame, bool in_colours)
+    : frame_(frame),
+      settings_(frame.settings),
+      bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
+      moving_(frame.scratch),
+      slots_(frame.scratch),
+      keys_(frame.scratch),
+      kept_(frame.scratch) {
+    std::pmr::vector<std::array<int, 2>> pairs(frame.scratch);  // each moving contact's bodies, for colour_slots
+    moving_.reserve(frame.contacts.size());
+    if (in_colours) pairs.reserve(frame.contacts.size());
+    for (std::size_t c = 0; c < frame.contacts.size(); ++c) {
+        if (!can_move(frame.contacts[c])) continue;
+        moving_.push_back(static_cast<std::uint32_t>(c));
+        if (in_colours) pairs.push_back(row_bodies(frame.contacts[c]));
+    }
+    const std::size_t count = moving_.size();
+    if (in_colours) {
+        slots_ = colour_slots(pairs, bodies_, frame.scratch);
+    } else {
+        slots_.resize(count);
+        for (std::size_t k = 0; k < count; ++k) slots_[k] = static_cast<std::uint32_t>(k);
+    }
+    rows_ = {static_cast<ContactRow*>(frame.scratch->allocate(count * sizeof(ContactRow), alignof(ContactRow))), count};
+    keys_.reserve(count);
+    if (frame.keeping) kept_.resize(count);
 }
 
-void PlacedRows::place(std::size_t slot, const PreparedContact& contact, const SolverBody* bodies) {
-    ContactRow* row = new (rows.data() + slot) ContactRow;  // the slot's row begins here
-    fill_contact_row(*row, contact, bodies);
+RowSolver::~RowSolver() {
+    static_assert(std::is_trivially_destructible_v<ContactRow>);
+    frame_.scratch->deallocate(rows_.data(), rows_.size() * sizeof(ContactRow), alignof(ContactRow));
 }
 
 std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const ContactKey& key) {
@@ -75,12 +88,20 @@ std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const Contac
     if (slot < 0 || taken_[static_cast<std::size_t>(slot)]) return std::nullopt;
     next_ = slot + 1;
     taken_[static_cast<std::size_t>(slot)] = 1;
-    const Vec3& g = memory_.impulse_at(slot);  // world; C^T g in this frame's basis
-    return within_limits(to_contact(row.basis, g), row.friction);
-}
-
-void remember_totals(std::span<const ContactRow> rows, std::span<const ContactKey> keys, ContactMemory& memory) {
-    memory.remember(keys, [&](std::size_t r) { return world_impulse(rows[r], rows[r].total_impulse); });
+    const Vec3 total = to_contact(row.basis, memory_.impulse_at(slot));  // C^T g: the world's g in this frame's basis
+    RowVisit v;
+    v.unclamped = v.after = {total.x(), total.y(), total.z()};
+    v.pushed_only = total.x() < 0.0;
+    if (v.pushed_only) v.after.n = 0.0;
+    const double limit = row.friction * v.after.n;
+    const double tangential = v.after.t1 * v.after.t1 + v.after.t2 * v.after.t2;
+    v.sliding = tangential > limit * limit;
+    if (v.sliding) {
+        const double scale = tangential > 0.0 ? limit / std::sqrt(tangential) : 0.0;
+        v.after.t1 *= scale;
+        v.after.t2 *= scale;
+    }
+    return v;
 }
 
 }  // namespace impulse

@@ -39,11 +39,14 @@
 #include "derivation/velocity_change.hpp"
 #include "math/products.hpp"
 #include "memory/contact_memory.hpp"
+#include "methods/method.hpp"
 #include "record/iteration_records.hpp"
 #include "preparation/prepared_contact.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <memory_resource>
+#include <new>
 #include <span>
 #include <vector>
 
@@ -60,9 +63,6 @@ struct Axes {
 inline Vec3 vector_of(const Axes& a) {
     return {a.n, a.t1, a.t2};
 }
-inline Axes axes_of(const Vec3& v) {
-    return {v.x(), v.y(), v.z()};
-}
 
 // A body as the solver loop sees it (Box2D's b2BodyState): its velocities and its mass for the frame.
 struct SolverBody {
@@ -75,9 +75,6 @@ struct SolverBody {
 // the frame's scratch, FrameContext::scratch).
 std::pmr::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, std::span<const MassProperties> mass,
                                            std::pmr::memory_resource* memory = std::pmr::new_delete_resource());
-
-// Copies the solver's velocities back to the bodies.
-void store_velocities(std::span<const SolverBody> solver, std::vector<RigidBody>& bodies);
 
 // One contact's rows: what a visit reads, fixed for the frame, and the total it accumulates.
 struct ContactRow {
@@ -112,26 +109,6 @@ inline bool can_move(const PreparedContact& contact) {
 // impulse's pushes) only the normal row is filled. (In place: a row is 264 bytes, and a frame builds one per contact.)
 void fill_contact_row(ContactRow& row, const PreparedContact& contact, const SolverBody* bodies,
                       bool friction_rows = true);
-
-// The rows of the contacts that can_move built in the order a method visits them (soft step's colours): each placed in
-// its slot as it is filled, in storage from the frame's scratch that nothing writes before (a vector's resize would
-// write every row once more: 16 MB a frame on Box3D's large pyramid). Every slot below `count` must be placed before it
-// is read.
-class PlacedRows {
-public:
-    PlacedRows(std::size_t count, std::pmr::memory_resource* scratch);
-    ~PlacedRows();
-    PlacedRows(const PlacedRows&) = delete;
-    PlacedRows& operator=(const PlacedRows&) = delete;
-
-    // Fills slot `slot` with the row of `contact`, which can_move.
-    void place(std::size_t slot, const PreparedContact& contact, const SolverBody* bodies);
-
-    std::span<ContactRow> rows;  // in the order of their slots
-
-private:
-    std::pmr::memory_resource* scratch_;
-};
 
 // What the normal row aims for in one visit.
 struct NormalTarget {
@@ -304,24 +281,6 @@ IMPULSE_KERNEL void keep_visit(KeptVisit& kept, const Axes& velocity, const Axes
     copy(kept.before, before);
 }
 
-// A total from elsewhere (last frame's, re-projected on this frame's basis) put inside the limits a total
-// obeys: lambda_n >= 0 and |lambda_t| <= mu lambda_n (scaled back: there is no slip to oppose yet).
-inline RowVisit within_limits(const Vec3& total, double friction) {
-    RowVisit v;
-    v.unclamped = v.after = axes_of(total);
-    v.pushed_only = total.x() < 0.0;
-    if (v.pushed_only) v.after.n = 0.0;
-    const double limit = friction * v.after.n;
-    const double tangential = v.after.t1 * v.after.t1 + v.after.t2 * v.after.t2;
-    v.sliding = tangential > limit * limit;
-    if (v.sliding) {
-        const double scale = tangential > 0.0 ? limit / std::sqrt(tangential) : 0.0;
-        v.after.t1 *= scale;
-        v.after.t2 *= scale;
-    }
-    return v;
-}
-
 // The impulse `a` (contact coordinates) in world coordinates, g = C a.
 IMPULSE_KERNEL Vec3 world_impulse(const ContactRow& row, const Axes& a) {
     return to_world(row.basis, vector_of(a));
@@ -373,7 +332,8 @@ public:
         : memory_(memory), taken_(memory.size(), 0, scratch) {}
 
     // The remembered total of the row whose contact has `key` (contact_key), re-projected on this frame's basis
-    // and put within the row's limits, or nothing.
+    // and put within the limits a total obeys, lambda_n >= 0 and |lambda_t| <= mu lambda_n (scaled back: there is no
+    // slip to oppose yet), or nothing.
     std::optional<RowVisit> of(const ContactRow& row, const ContactKey& key);
 
 private:
@@ -382,8 +342,91 @@ private:
     std::ptrdiff_t next_ = 0;  // the slot after the last one found: where the next row's contact most likely is
 };
 
-// Stores every row's total, in world coordinates, under its contact's key (keys[r] for rows[r]), as this
-// frame's memory.
-void remember_totals(std::span<const ContactRow> rows, std::span<const ContactKey> keys, ContactMemory& memory);
+// What the two row solvers, projected Gauss-Seidel and soft step, share: the frame's solver bodies; the rows of the
+// contacts that can_move, each placed in its slot in the order of the visits (contact order, or soft step's colours:
+// methods/graph_colouring.hpp) as it is filled, in storage from the frame's scratch that nothing writes before (a
+// vector's resize would write every row once more: 16 MB a frame on Box3D's large pyramid); their keys in detection's
+// order, in which the warm start looks last frame's totals up and the memory keeps this frame's (the memory gives a key
+// two contacts share to the first; most look-ups find their entry next to the last one found); the visits kept for the
+// recorder (KeptVisit).
+class RowSolver {
+public:
+    RowSolver(const RowSolver&) = delete;
+    RowSolver& operator=(const RowSolver&) = delete;
+
+    // Stores every row's total, in world coordinates, under its contact's key, as this frame's memory.
+    void remember(ContactMemory& memory) const {
+        memory.remember(keys_, [this](std::size_t k) {
+            const ContactRow& row = rows_[slots_[k]];
+            return world_impulse(row, row.total_impulse);
+        });
+    }
+
+protected:
+    RowSolver(FrameContext& frame, bool in_colours);
+    ~RowSolver();
+
+    // Fills every row, in detection's order, and calls fill(row, slot, contact) for what the method adds beside it.
+    template <typename Fill>
+    void place_rows(Fill fill) {
+        for (std::size_t k = 0; k < moving_.size(); ++k) {
+            const PreparedContact& contact = frame_.contacts[moving_[k]];
+            ContactRow* row = new (rows_.data() + slots_[k]) ContactRow;  // the slot's row begins here
+            fill_contact_row(*row, contact, bodies_.data());
+            keys_.push_back(contact_key(contact));
+            fill(*row, std::size_t{slots_[k]}, contact);
+        }
+    }
+
+    // When warm starting: calls take(slot, total) for each row that has a total remembered from last frame, in
+    // detection's order.
+    template <typename Take>
+    void recall(Take take) {
+        if (!settings_.warm_start || !frame_.memory) return;
+        RememberedTotals remembered(*frame_.memory, frame_.scratch);
+        for (std::size_t k = 0; k < keys_.size(); ++k)
+            if (const std::optional<RowVisit> total = remembered.of(rows_[slots_[k]], keys_[k]))
+                take(std::size_t{slots_[k]}, *total);
+    }
+
+    // Shows the recorder a visit to row r at `place`: the velocity it read, step 5 as the method judged it (`terms`,
+    // against `epsilon`), its totals.
+    void report_visit(std::size_t r, const SweepPlace& place, const Axes& velocity, const RowVisit& visit,
+                      const DesiredDeltaVelocity& terms, double epsilon, DesiredFollows updates,
+                      bool friction_rows = true) const {
+        frame_.recorder.velocity_visit({.contact = rows_[r].contact,
+                                        .sweep = place,
+                                        .epsilon = epsilon,
+                                        .updates = updates,
+                                        .contact_velocity = vector_of(velocity),
+                                        .desired_terms = terms,
+                                        .accumulated = visit.accumulated(),
+                                        .friction_rows = friction_rows && rows_[r].friction != 0.0});
+    }
+
+    // Copies the solver's velocities back to the bodies.
+    void store_velocities() const {
+        for (std::size_t b = 0; b < bodies_.size(); ++b) {
+            frame_.bodies[b].velocity = bodies_[b].velocity;
+            frame_.bodies[b].angular_velocity = bodies_[b].angular_velocity;
+        }
+    }
+
+    // Stamps every row's contact for LastTouch, in the order of the visits.
+    void stamp() const {
+        if (frame_.touch)
+            for (const ContactRow& row : rows_) frame_.touch->touched(row.contact);
+    }
+
+    FrameContext& frame_;
+    const ResolverSettings& settings_;
+    // Every buffer in the frame's scratch (FrameContext::scratch).
+    std::pmr::vector<SolverBody> bodies_;
+    std::pmr::vector<std::uint32_t> moving_;  // the contacts that can_move, by index, in detection's order
+    std::pmr::vector<std::uint32_t> slots_;   // per moving contact: its row's slot in rows_
+    std::span<ContactRow> rows_;              // in the order of the visits; each valid once placed
+    std::pmr::vector<ContactKey> keys_;       // per moving contact: its key in the ContactMemory
+    std::pmr::vector<KeptVisit> kept_;        // per row: its visit in the sweep under way, when the frame is recorded
+};
 
 }  // namespace impulse

@@ -39,61 +39,45 @@ namespace impulse {
 
 namespace {
 
-class ProjectedGaussSeidel {
+class ProjectedGaussSeidel : RowSolver {
 public:
     explicit ProjectedGaussSeidel(FrameContext& frame)
-        : frame_(frame),
-          settings_(frame.settings),
-          bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          rows_(frame.scratch),
-          keys_(frame.scratch),
-          targets_(frame.scratch),
-          kept_(frame.scratch) {
-        rows_.reserve(frame.contacts.size());
-        keys_.reserve(frame.contacts.size());
-        targets_.reserve(frame.contacts.size());
-        for (const PreparedContact& c : frame.contacts) {
-            if (!can_move(c)) continue;  // nothing can move it: no rows, no visits
-            ContactRow& row = rows_.emplace_back();
-            fill_contact_row(row, c, bodies_.data());
+        : RowSolver(frame, false), targets_(rows_.size(), frame.scratch) {
+        place_rows([this](ContactRow& row, std::size_t r, const PreparedContact& c) {
             row.slip_offset = c.tangential_acceleration_velocity;  // step 4's term: 0 with the refinement off
-            keys_.push_back(contact_key(c));
-            targets_.push_back(prepared_normal_velocity(c));
-        }
-        if (frame.keeping) kept_.resize(rows_.size());
+            targets_[r] = prepared_normal_velocity(c);
+        });
     }
 
     // Warm start, then sweeps until one changes no contact's velocity by more than the epsilon; then the velocities
     // written back and the totals remembered.
     PhaseOutcome run() {
-        if (settings_.warm_start && frame_.memory) warm_start(*frame_.memory);
+        // Last frame's totals, re-projected and clamped, applied before the first sweep. The warm start has no target;
+        // the recorder is shown the velocity it started from.
+        recall([this](std::size_t r, const RowVisit& total) {
+            if (frame_.keeping)
+                report(r, row_velocity(rows_[r], bodies_.data()), total, SweepPlace{0, 0, SolverStage::warm_start});
+            apply(rows_[r], bodies_.data(), total);
+            ++iterations_;
+        });
         PhaseOutcome outcome;
         outcome.iteration_limit = iterations_ + std::max(settings_.sweeps, 0) * static_cast<int>(rows_.size());
         const double epsilon_squared = settings_.velocity_epsilon * settings_.velocity_epsilon;
         bool converged = rows_.empty();
         for (int pass = 0; pass < settings_.sweeps && !converged && !frame_.stop_requested(); ++pass)
             converged = sweep(pass) <= epsilon_squared;
-        finish();
+        // The velocities written back, the totals remembered. Every sweep visits every active contact in index order,
+        // so the last visit of each contact is the last sweep's (or the warm start's, without sweeps): they are
+        // stamped for LastTouch once, here, in that order.
+        store_velocities();
+        if (frame_.memory) remember(*frame_.memory);
+        stamp();
         outcome.iterations_used = iterations_;
         outcome.stop = converged ? StopReason::resolved : StopReason::sweeps_complete;
         return outcome;
     }
 
 private:
-    // Last frame's totals, re-projected and clamped, applied before the first sweep.
-    void warm_start(const ContactMemory& memory) {
-        RememberedTotals remembered(memory, frame_.scratch);
-        for (std::size_t r = 0; r < rows_.size(); ++r) {
-            const std::optional<RowVisit> total = remembered.of(rows_[r], keys_[r]);
-            if (!total) continue;
-            // The warm start has no target; the recorder is shown the velocity it started from.
-            if (frame_.keeping)
-                report(r, row_velocity(rows_[r], bodies_.data()), *total, SweepPlace{0, 0, SolverStage::warm_start});
-            apply(rows_[r], bodies_.data(), *total);
-            ++iterations_;
-        }
-    }
-
     // One sweep over every active contact in index order; returns the largest |K (after - before)|^2 a visit
     // made at its own contact. The loop reads its data through locals and keeps its visits for the recorder in a
     // buffer (KeptVisit), so that recording or not, it makes no call.
@@ -122,47 +106,21 @@ private:
         return largest;
     }
 
-    // Writes the velocities back to the bodies, remembers the totals. Every sweep visits every active contact in
-    // index order, so the last visit of each contact is the last sweep's (or the warm start's, without sweeps): they
-    // are stamped for LastTouch once, here, in that order.
-    void finish() {
-        store_velocities(bodies_, frame_.bodies);
-        if (frame_.memory) remember_totals(rows_, keys_, *frame_.memory);
-        if (frame_.touch)
-            for (const ContactRow& row : rows_) frame_.touch->touched(row.contact);
-    }
-
     // Applies the change of the row's total, v.after - v.before, to the bodies, and keeps the total.
     [[gnu::always_inline]] static void apply(ContactRow& row, SolverBody* bodies, const RowVisit& v) {
         apply_impulse(row, bodies, world_impulse(row, v.increment()));
         keep_total(row, v.after);
     }
 
-    void report(std::size_t r, const Axes& velocity, const RowVisit& totals, const SweepPlace& place) {
-        const ContactRow& row = rows_[r];
-        const PreparedContact& c = frame_.contacts[static_cast<std::size_t>(row.contact)];
-        VelocityVisit visit{.contact = row.contact,
-                            .sweep = place,
-                            .epsilon = settings_.velocity_epsilon,
-                            .updates = DesiredFollows::row_target,
-                            .resolution = nullptr,
-                            .contact_velocity = vector_of(velocity),
-                            .desired_terms = desired_again(c, velocity_refinements(settings_)),
-                            .accumulated = totals.accumulated(),
-                            .friction_rows = row.friction != 0.0};
-        visit.desired_terms.separating_velocity = velocity.n;
-        visit.desired_terms.desired_delta_velocity = targets_[r] - velocity.n;
-        frame_.recorder.velocity_visit(visit);
+    void report(std::size_t r, const Axes& velocity, const RowVisit& totals, const SweepPlace& place) const {
+        const PreparedContact& c = frame_.contacts[static_cast<std::size_t>(rows_[r].contact)];
+        DesiredDeltaVelocity terms = desired_again(c, velocity_refinements(settings_));
+        terms.separating_velocity = velocity.n;
+        terms.desired_delta_velocity = targets_[r] - velocity.n;
+        report_visit(r, place, velocity, totals, terms, settings_.velocity_epsilon, DesiredFollows::row_target);
     }
 
-    FrameContext& frame_;
-    const ResolverSettings& settings_;
-    // Every buffer in the frame's scratch (FrameContext::scratch).
-    std::pmr::vector<SolverBody> bodies_;
-    std::pmr::vector<ContactRow> rows_;  // the contacts an impulse can move, in contact order
-    std::pmr::vector<ContactKey> keys_;  // per row: its contact's key in the ContactMemory
-    std::pmr::vector<double> targets_;   // per row: the normal velocity it asks for (m/s)
-    std::pmr::vector<KeptVisit> kept_;   // per row: its visit in the sweep under way, when the frame is recorded
+    std::pmr::vector<double> targets_;  // per row: the normal velocity it asks for (m/s)
     int iterations_ = 0;
 };
 

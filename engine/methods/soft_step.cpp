@@ -6,7 +6,6 @@
 
 #include "body/integrate.hpp"
 #include "methods/contact_rows.hpp"
-#include "methods/graph_colouring.hpp"
 #include "methods/solver_common.hpp"
 
 #include <algorithm>
@@ -33,23 +32,6 @@ Softness soft_step_softness(const ResolverSettings& settings) {
 
 namespace {
 
-// The contacts an impulse can move (can_move), by their index, in detection's order: the ones that get rows; and,
-// for a solve in colours, each one's bodies (ContactRow::body), read in the same pass over the contacts.
-struct MovingContacts {
-    std::pmr::vector<std::uint32_t> index;
-    std::pmr::vector<std::array<int, 2>> bodies;  // empty unless asked for
-
-    MovingContacts(const FrameContext& frame, bool with_bodies) : index(frame.scratch), bodies(frame.scratch) {
-        index.reserve(frame.contacts.size());
-        if (with_bodies) bodies.reserve(frame.contacts.size());
-        for (std::size_t c = 0; c < frame.contacts.size(); ++c) {
-            if (!can_move(frame.contacts[c])) continue;
-            index.push_back(static_cast<std::uint32_t>(c));
-            if (with_bodies) bodies.push_back(row_bodies(frame.contacts[c]));
-        }
-    }
-};
-
 // What soft step keeps per contact beside its rows, read on every visit. (Small: the rows and these are read
 // through once per sweep, and together they must stay in the core's cache.)
 struct SoftContact {
@@ -68,25 +50,18 @@ struct SoftBounce {
     bool bounces = false;            // c > 0 and it closed faster than the cut-off
 };
 
-class SoftStep {
+class SoftStep : public RowSolver {
 public:
     explicit SoftStep(FrameContext& frame)
-        : frame_(frame),
-          settings_(frame.settings),
+        : RowSolver(frame, frame.settings.soft_step.order == SolveOrder::colours),
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
-          bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
-          moving_(frame, frame.settings.soft_step.order == SolveOrder::colours),
-          active_(moving_.index.size(), frame.scratch),
-          slots_(frame.scratch),
-          keys_(frame.scratch),
-          soft_(frame.scratch),
-          bounce_(frame.scratch),
+          soft_(rows_.size(), frame.scratch),
+          bounce_(rows_.size(), frame.scratch),
           start_position_(frame.scratch),
           start_orientation_(frame.scratch),
           moved_(frame.scratch),
-          turned_(frame.scratch),
-          kept_(frame.scratch) {
+          turned_(frame.scratch) {
         start_position_.reserve(frame.bodies.size());
         start_orientation_.reserve(frame.bodies.size());
         for (const RigidBody& body : frame.bodies) {
@@ -95,20 +70,34 @@ public:
         }
         moved_.assign(frame.bodies.size(), Vec3::Zero());
         turned_.assign(frame.bodies.size(), Mat3::Identity());
-        place_rows();
-        if (frame.keeping) kept_.resize(active_.rows.size());
+        place_rows([this](const ContactRow&, std::size_t r, const PreparedContact& d) {
+            SoftContact& c = soft_[r];
+            c.prepared_penetration = d.penetration;
+            aim_at(c, d.penetration);
+            // Step 4's v_s, which restitution reverses, judged once against the cut-off.
+            SoftBounce& bounce = bounce_[r];
+            bounce.restitution = d.restitution;
+            if (d.restitution == 0.0) return;
+            bounce.relative_velocity = d.contact_velocity.x();
+            bounce.cutoff_applied = !(bounce.relative_velocity < -settings_.restitution_cutoff);
+            bounce.bounces = !bounce.cutoff_applied;
+        });
+        recall([this](std::size_t r, const RowVisit& total) { rows_[r].total_impulse = total.after; });
     }
 
     void run() {
         const Forces& f = frame_.forces;
         const int substeps = settings_.soft_step.substeps;
         for (int substep = 0; substep < substeps && !frame_.stop_requested(); ++substep) {
-            for (RigidBody& body : frame_.bodies) integrate_velocity(body, f.gravity, substep_, f.damping);
-            load_velocities();
+            for (std::size_t b = 0; b < bodies_.size(); ++b) {  // integrated, then loaded into the solver's bodies
+                integrate_velocity(frame_.bodies[b], f.gravity, substep_, f.damping);
+                bodies_[b].velocity = frame_.bodies[b].velocity;
+                bodies_[b].angular_velocity = frame_.bodies[b].angular_velocity;
+            }
             warm_start(substep);
             for (int pass = 0; pass < settings_.sweeps && (pass % 64 != 0 || !frame_.stop_requested()); ++pass)
                 sweep<true>({substep, pass, SolverStage::solve});
-            store_velocities(bodies_, frame_.bodies);
+            store_velocities();
             for (RigidBody& body : frame_.bodies) integrate_position(body, substep_, settings_.orientation_update);
             track_moves();
             // The first relax sweep finds each contact's p as it visits it (the bodies move only here).
@@ -117,77 +106,21 @@ public:
                     sweep<false, true>({substep, pass, SolverStage::relax});
                 else
                     sweep<false>({substep, pass, SolverStage::relax});
-            store_velocities(bodies_, frame_.bodies);
+            store_velocities();
         }
         // Every sweep visits every row in order, so the last sub-step's last sweep holds each contact's last visit
         // before restitution: stamped for LastTouch once, here (restitution stamps its own).
-        if (frame_.touch)
-            for (const ContactRow& row : active_.rows) frame_.touch->touched(row.contact);
-        for (std::size_t r = 0; r < active_.rows.size(); ++r)
+        stamp();
+        for (std::size_t r = 0; r < rows_.size(); ++r)
             if (bounce_[r].bounces && soft_[r].most_pushed > 0.0)
                 restitution(r, {substeps - 1, 0, SolverStage::restitution});
-        store_velocities(bodies_, frame_.bodies);
-    }
-
-    void remember(ContactMemory& memory) const {
-        memory.remember(keys_, [this](std::size_t k) {
-            const ContactRow& row = active_.rows[slots_[k]];
-            return world_impulse(row, row.total_impulse);
-        });
+        store_velocities();
     }
 
     int visits() const { return visits_; }
     int visit_limit() const { return visits_; }  // the schedule is fixed: it always runs to its end
 
 private:
-    // The rows of the contacts an impulse can move, each list kept per row built in the order of the visits (for
-    // soft_step.order = colours, colour by colour: methods/graph_colouring.hpp), in place; their keys in detection's
-    // order, in which the warm start looks last frame's totals up and the memory keeps this frame's (the memory gives
-    // a key two contacts share to the first; most look-ups find their entry next to the last one found).
-    void place_rows() {
-        const std::size_t count = moving_.index.size();
-        if (settings_.soft_step.order == SolveOrder::colours) {
-            slots_ = colour_slots(moving_.bodies, bodies_, frame_.scratch);
-        } else {
-            slots_.resize(count);
-            for (std::size_t k = 0; k < count; ++k) slots_[k] = static_cast<std::uint32_t>(k);
-        }
-        keys_.reserve(count);
-        soft_.resize(count);
-        bounce_.resize(count);
-        for (std::size_t k = 0; k < count; ++k) {
-            const PreparedContact& d = frame_.contacts[moving_.index[k]];
-            const std::size_t r = slots_[k];
-            active_.place(r, d, bodies_.data());
-            keys_.push_back(contact_key(d));
-            SoftContact& c = soft_[r];
-            c.prepared_penetration = d.penetration;
-            aim_at(c, d.penetration);
-            // Step 4's v_s, which restitution reverses, judged once against the cut-off.
-            SoftBounce& bounce = bounce_[r];
-            bounce.restitution = d.restitution;
-            if (d.restitution == 0.0) continue;
-            bounce.relative_velocity = d.contact_velocity.x();
-            bounce.cutoff_applied = !(bounce.relative_velocity < -settings_.restitution_cutoff);
-            bounce.bounces = !bounce.cutoff_applied;
-        }
-        if (settings_.warm_start && frame_.memory) {
-            RememberedTotals remembered(*frame_.memory, frame_.scratch);
-            for (std::size_t k = 0; k < count; ++k) {
-                ContactRow& row = active_.rows[slots_[k]];
-                if (const std::optional<RowVisit> total = remembered.of(row, keys_[k]))
-                    row.total_impulse = total->after;
-            }
-        }
-    }
-
-    void load_velocities() {
-        for (std::size_t b = 0; b < bodies_.size(); ++b) {
-            bodies_[b].velocity = frame_.bodies[b].velocity;
-            bodies_[b].angular_velocity = frame_.bodies[b].angular_velocity;
-        }
-    }
-
     // After the positions moved: each body's move and turn since the frame began.
     void track_moves() {
         for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
@@ -199,7 +132,7 @@ private:
 
     // p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)]: the anchors turn with their bodies.
     [[gnu::always_inline]] double penetration(std::size_t r) const {
-        const ContactRow& row = active_.rows[r];
+        const ContactRow& row = rows_[r];
         Vec3 separated = Vec3::Zero();  // how far body 0's anchor moved away from body 1's
         for (int i = 0; i < 2; ++i) {
             if (row.body[i] < 0) continue;
@@ -234,8 +167,8 @@ private:
     // Every contact's lambda applied again: the sub-step's velocities start without any contact impulse.
     void warm_start(int substep) {
         KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
-        for (std::size_t r = 0; r < active_.rows.size(); ++r) {
-            const ContactRow& row = active_.rows[r];
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
+            const ContactRow& row = rows_[r];
             RowVisit v;  // from 0: the total counts what this sub-step has applied
             v.unclamped = v.after = row.total_impulse;
             if (kept) [[unlikely]]
@@ -244,8 +177,8 @@ private:
         }
         // The warm start has no target: the recorder is shown the normal velocity change it makes, (K lambda)_n.
         if (kept)
-            for (std::size_t r = 0; r < active_.rows.size(); ++r) {
-                const ContactRow& row = active_.rows[r];
+            for (std::size_t r = 0; r < rows_.size(); ++r) {
+                const ContactRow& row = rows_[r];
                 const Axes& total = row.total_impulse;  // the warm start's total after, unchanged since
                 RowVisit v;
                 v.unclamped = v.after = total;
@@ -263,9 +196,9 @@ private:
     template <bool biased, bool moved = false>
     void sweep(const SweepPlace& place) {
         KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
-        for (std::size_t r = 0; r < active_.rows.size(); ++r) {
+        for (std::size_t r = 0; r < rows_.size(); ++r) {
             if constexpr (moved) aim_at(soft_[r], penetration(r));
-            const ContactRow& row = active_.rows[r];
+            const ContactRow& row = rows_[r];
             const Axes velocity = row_velocity(row, bodies_.data());
             const Axes before = row.total_impulse;
             if (kept) [[unlikely]]
@@ -274,16 +207,16 @@ private:
             apply(r, v);
         }
         if (kept)
-            for (std::size_t r = 0; r < active_.rows.size(); ++r) {
+            for (std::size_t r = 0; r < rows_.size(); ++r) {
                 const NormalTarget target = target_of<biased>(r);
                 const Axes& velocity = kept[r].velocity;
-                report(r, place, velocity, solve_rows(active_.rows[r], kept[r].before, velocity, target),
+                report(r, place, velocity, solve_rows(rows_[r], kept[r].before, velocity, target),
                        target.velocity - velocity.n, target.velocity);
             }
     }
 
     void restitution(std::size_t r, const SweepPlace& place) {
-        const ContactRow& row = active_.rows[r];
+        const ContactRow& row = rows_[r];
         const double c_used = bounce_[r].restitution;
         const Axes velocity = row_velocity(row, bodies_.data());
         // The target is -c v_n(before): delta lambda_n = -m_n (v_n + c v_n(before)), total kept >= 0.
@@ -296,7 +229,7 @@ private:
 
     // Applies after - before to the bodies by step 7 and keeps the total.
     [[gnu::always_inline]] void apply(std::size_t r, const RowVisit& v) {
-        ContactRow& row = active_.rows[r];
+        ContactRow& row = rows_[r];
         const Vec3 impulse = world_impulse(row, v.increment());
         keep_total(row, v.after);
         soft_[r].most_pushed = std::max(soft_[r].most_pushed, v.after.n);
@@ -307,46 +240,31 @@ private:
     // The visit as the recorder takes it: the velocity it read, what it aimed at (desired delta v = target - v_n,
     // and the soft bias as step 5's position bias), its totals.
     void report(std::size_t r, const SweepPlace& place, const Axes& velocity, const RowVisit& visit,
-                double desired_delta_velocity, std::optional<double> position_bias) {
-        const ContactRow& row = active_.rows[r];
+                double desired_delta_velocity, std::optional<double> position_bias) const {
         const SoftBounce& bounce = bounce_[r];
         const bool bouncing = place.stage == SolverStage::restitution;
-        frame_.recorder.velocity_visit({.contact = row.contact,
-                                        .sweep = place,
-                                        .epsilon = 0.0,
-                                        .updates = DesiredFollows::nothing,
-                                        .resolution = nullptr,
-                                        .contact_velocity = vector_of(velocity),
-                                        .desired_terms = {.separating_velocity = velocity.n,
-                                                          .restitution = bounce.restitution,
-                                                          .restitution_cutoff = settings_.restitution_cutoff,
-                                                          .restitution_cutoff_applied = bounce.cutoff_applied,
-                                                          .restitution_used = bouncing ? bounce.restitution : 0.0,
-                                                          .velocity_from_acceleration_applied = false,
-                                                          .velocity_from_acceleration = 0.0,
-                                                          .position_bias = position_bias,
-                                                          .desired_delta_velocity = desired_delta_velocity},
-                                        .accumulated = visit.accumulated(),
-                                        .friction_rows = row.friction != 0.0 && !bouncing});
+        report_visit(r, place, velocity, visit,
+                     {.separating_velocity = velocity.n,
+                      .restitution = bounce.restitution,
+                      .restitution_cutoff = settings_.restitution_cutoff,
+                      .restitution_cutoff_applied = bounce.cutoff_applied,
+                      .restitution_used = bouncing ? bounce.restitution : 0.0,
+                      .velocity_from_acceleration_applied = false,
+                      .velocity_from_acceleration = 0.0,
+                      .position_bias = position_bias,
+                      .desired_delta_velocity = desired_delta_velocity},
+                     0.0, DesiredFollows::nothing, !bouncing);
     }
 
-    FrameContext& frame_;
-    const ResolverSettings& settings_;
     double substep_;
     Softness softness_;
-    // Every buffer in the frame's scratch (FrameContext::scratch).
-    std::pmr::vector<SolverBody> bodies_;
-    MovingContacts moving_;
-    PlacedRows active_;                      // the rows, in the order of the visits
-    std::pmr::vector<std::uint32_t> slots_;  // per moving contact (detection's order): its row's slot in active_
-    std::pmr::vector<ContactKey> keys_;      // per moving contact: its key in the ContactMemory
-    std::pmr::vector<SoftContact> soft_;     // beside each row
-    std::pmr::vector<SoftBounce> bounce_;    // beside each row
+    // Every buffer in the frame's scratch (FrameContext::scratch), as the rows'.
+    std::pmr::vector<SoftContact> soft_;   // beside each row
+    std::pmr::vector<SoftBounce> bounce_;  // beside each row
     std::pmr::vector<Vec3> start_position_;
     std::pmr::vector<Quat> start_orientation_;
-    std::pmr::vector<Vec3> moved_;      // per body: its move since the frame began
-    std::pmr::vector<Mat3> turned_;     // per body: its turn since the frame began, R = q q0^-1
-    std::pmr::vector<KeptVisit> kept_;  // per row: its visit in the sweep under way, when the frame is recorded
+    std::pmr::vector<Vec3> moved_;   // per body: its move since the frame began
+    std::pmr::vector<Mat3> turned_;  // per body: its turn since the frame began, R = q q0^-1
     int visits_ = 0;
 };
 

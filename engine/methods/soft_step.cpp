@@ -60,16 +60,14 @@ public:
           bounce_(rows_.size(), frame.scratch),
           start_position_(frame.scratch),
           start_orientation_(frame.scratch),
-          moved_(frame.scratch),
-          turned_(frame.scratch) {
+          moved_(frame.bodies.size(), Vec3::Zero(), frame.scratch),
+          turned_(frame.bodies.size(), Mat3::Identity(), frame.scratch) {
         start_position_.reserve(frame.bodies.size());
         start_orientation_.reserve(frame.bodies.size());
         for (const RigidBody& body : frame.bodies) {
             start_position_.push_back(body.position);
             start_orientation_.push_back(body.orientation);
         }
-        moved_.assign(frame.bodies.size(), Vec3::Zero());
-        turned_.assign(frame.bodies.size(), Mat3::Identity());
         place_rows([this](const ContactRow&, std::size_t r, const PreparedContact& d) {
             SoftContact& c = soft_[r];
             c.prepared_penetration = d.penetration;

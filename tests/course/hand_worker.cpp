@@ -154,6 +154,22 @@ private:
         return at(at(frame_, "contacts"), contact.get<std::size_t>());
     }
 
+    // The u-th update of an iteration's table: its path, the other contact (as numbered), the slot the moved body
+    // has in it, which of the visited contact's `bodies` moved, and the other contact's path.
+    struct Update {
+        std::string path;
+        formats::json other;
+        std::size_t slot;
+        std::size_t moved;
+        std::string contact;
+    };
+    Update update_at(const std::string& updates, std::size_t u, const formats::json& bodies) const {
+        const std::string update = at(updates, u);
+        const formats::json& other = k(at(update, "contact"));
+        return {update, other, k(at(update, "slot")).get<std::size_t>(),
+                bodies[0] == k(at(update, "body")) ? std::size_t{0} : std::size_t{1}, contact_path(other)};
+    }
+
     MassProperties mass(const formats::json& body) const {
         const auto b = body.get<std::size_t>();
         return {number(at(at("scene.bodies", b), "inverse_mass")),
@@ -435,11 +451,7 @@ private:
         } else if (step == "updates") {
             const std::string updates = at(p, "updates");
             for (std::size_t u = 0; has(at(at(updates, u), "contact")); ++u) {
-                const std::string update = at(updates, u);
-                const formats::json& other = k(at(update, "contact"));
-                const auto slot = k(at(update, "slot")).get<std::size_t>();
-                const std::size_t moved = bodies[0] == k(at(update, "body")) ? 0 : 1;
-                const std::string o = contact_path(other);
+                const auto [update, other, slot, moved, o] = update_at(updates, u, bodies);
                 const double before = number(current(phase, iteration, u, other, "penetration", "after"));
                 // The moved point of the other contact along its normal: (Δp + Δθ × q_rel) · n.
                 const Vec3 q = vec(k(at(at(o, "relative_position"), slot)));
@@ -527,11 +539,7 @@ private:
         } else if (step == "updates") {
             const std::string updates = at(v, "updates");
             for (std::size_t u = 0; has(at(at(updates, u), "contact")); ++u) {
-                const std::string update = at(updates, u);
-                const formats::json& other = k(at(update, "contact"));
-                const auto slot = k(at(update, "slot")).get<std::size_t>();
-                const std::size_t moved = bodies[0] == k(at(update, "body")) ? 0 : 1;
-                const std::string o = contact_path(other);
+                const auto [update, other, slot, moved, o] = update_at(updates, u, bodies);
                 const Vec3 before = vec(k(current(phase, iteration, u, other, "contact_velocity", "after")));
                 // The changed point of the other contact, in its contact coordinates (9.5): ±Cᵀ(Δṗ + Δθ̇ × q_rel).
                 const Basis b = basis_of(k(at(o, "basis")));

@@ -6,6 +6,7 @@
 #include "body/integrate.hpp"
 
 #include <algorithm>
+#include <cassert>
 #include <chrono>
 #include <utility>
 
@@ -33,8 +34,15 @@ Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies,
     return detection;
 }
 
+std::vector<Material> body_materials(const Scene& scene) {
+    std::vector<Material> materials;
+    materials.reserve(scene.body_materials.size());
+    for (const std::string& name : scene.body_materials) materials.push_back(scene.materials.at(name));
+    return materials;
+}
+
 void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Detection& detection, StageTimes* times,
-                     ContactRecycling* recycling) {
+                     ContactRecycling* recycling, std::span<const Material> materials) {
     std::vector<Contact>& out = detection.contacts;
     out.clear();
     detection.pairs_recycled = 0;
@@ -44,10 +52,14 @@ void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Dete
     std::vector<Placement> placements;
     placements.reserve(bodies.size());
     for (const RigidBody& body : bodies) placements.push_back({body.position, body.orientation.toRotationMatrix()});
-    // Each body's material looked up by name once, not once per pair tested.
-    std::vector<const Material*> materials;
-    materials.reserve(bodies.size());
-    for (std::size_t i = 0; i < bodies.size(); ++i) materials.push_back(&scene.materials.at(scene.body_materials[i]));
+    // Each body's material looked up by name once, not once per pair tested (a world looks them up once for all its
+    // frames and hands them in).
+    std::vector<Material> looked_up;
+    if (materials.empty()) {
+        looked_up = body_materials(scene);
+        materials = looked_up;
+    }
+    assert(materials.size() >= bodies.size());
     // Room for four contacts a body on the ground (a box resting on a face), so the list rarely regrows.
     out.reserve(4 * bodies.size());
 
@@ -59,7 +71,7 @@ void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Dete
             if (recycling && recycling->recycle(pair, out)) continue;
             const std::size_t first = out.size();
             collide_with_ground(*scene.shapes[i], placements[i], static_cast<int>(i), scene.ground->plane, out);
-            stamp_material(out, first, *materials[i], ground);
+            stamp_material(out, first, materials[i], ground);
             if (recycling) recycling->keep(pair, std::span<const Contact>(out).subspan(first));
         }
     }
@@ -87,7 +99,7 @@ void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Dete
         const std::size_t first = out.size();
         collide(*scene.shapes[ui], placements[ui], i, *scene.shapes[uj], placements[uj], j, out,
                 scene.settings.speculative_margin);
-        stamp_material(out, first, *materials[ui], *materials[uj]);
+        stamp_material(out, first, materials[ui], materials[uj]);
         if (recycling) recycling->keep({i, j}, std::span<const Contact>(out).subspan(first));
     }
     if (recycling) {
@@ -110,7 +122,7 @@ std::size_t highest_body(const Scene& scene) {
     return top;
 }
 
-World::World(Scene scene) : scene_(std::move(scene)), bodies_(scene_.bodies) {
+World::World(Scene scene) : scene_(std::move(scene)), bodies_(scene_.bodies), materials_(body_materials(scene_)) {
     principal_.reserve(bodies_.size());
     for (const RigidBody& body : bodies_) principal_.push_back(principal_inertia(body));
 }
@@ -142,7 +154,8 @@ StepReport World::step(Recorder& recorder) {
             integrate(body, scene_.world.gravity, dt, damping, scene_.settings.orientation_update);
     report.times.integrate = seconds_since(start);
 
-    detect_contacts(scene_, bodies_, detection_, &report.times, scene_.settings.recycling.on() ? &recycling_ : nullptr);
+    detect_contacts(scene_, bodies_, detection_, &report.times, scene_.settings.recycling.on() ? &recycling_ : nullptr,
+                    materials_);
     const Detection& detection = detection_;
     report.pairs_tested = detection.pairs_tested;
     report.pairs_recycled = detection.pairs_recycled;

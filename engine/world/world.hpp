@@ -44,9 +44,14 @@ struct Detection {
 Detection detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, StageTimes* times = nullptr);
 // The same into `detection`, whose list keeps its room (a world detects every frame). With `recycling` (a world's,
 // when its settings switch recycling on), a pair kept from earlier frames that has moved little since is not
-// tested: its kept contacts are used, brought up to date (memory/contact_recycling.hpp).
+// tested: its kept contacts are used, brought up to date (memory/contact_recycling.hpp). `materials`: each body's,
+// as body_materials gives them, from a caller that detects every frame (a world); empty: looked up here.
 void detect_contacts(const Scene& scene, std::span<const RigidBody> bodies, Detection& detection,
-                     StageTimes* times = nullptr, ContactRecycling* recycling = nullptr);
+                     StageTimes* times = nullptr, ContactRecycling* recycling = nullptr,
+                     std::span<const Material> materials = {});
+
+// Each body's material, looked up by the name the scene gives it.
+std::vector<Material> body_materials(const Scene& scene);
 
 // What one step did.
 struct StepReport {
@@ -104,6 +109,7 @@ private:
     std::vector<PrincipalInertia> principal_;  // per body, for the step report's kinetic energy
     FrameArena arena_;                         // the resolution's buffers, kept from frame to frame
     const std::atomic<bool>* stop_ = nullptr;  // set_stop_flag
+    std::vector<Material> materials_;          // per body, looked up by name once (detection needs them every frame)
     Detection detection_;  // the last step's contacts; their list's room is kept from frame to frame
 };
 

@@ -230,16 +230,16 @@ void face_contact(const Oriented& a, const Oriented& b, int ia, int ib, const Ax
         depth.push_back(d);
         features.push_back(p.feature);
     }
+    // Each contact made whole where it goes (not made empty and then assigned: a face contact gives most of the
+    // points of a stack or a pyramid).
     for (const std::size_t k : reduce_to_four(points, depth, ref_normal)) {
-        Contact c;
-        c.bodies = {ia, ib};
-        c.normal = axis.direction;
-        c.penetration = depth[k];
-        c.point = points[k] + ref_normal * (0.5 * depth[k]);  // midway between the incident point and the face
-        c.origin.test = CollisionTest::box_box;
-        c.origin.features = reference_is_a ? std::array<Feature, 2>{ref_face, features[k]}
-                                           : std::array<Feature, 2>{features[k], ref_face};
-        out.push_back(c);
+        out.push_back({.bodies = {ia, ib},
+                       .point = points[k] + ref_normal * (0.5 * depth[k]),  // midway between incident point and face
+                       .normal = axis.direction,
+                       .penetration = depth[k],
+                       .origin = {.test = CollisionTest::box_box,
+                                  .features = reference_is_a ? std::array<Feature, 2>{ref_face, features[k]}
+                                                             : std::array<Feature, 2>{features[k], ref_face}}});
     }
 }
 

@@ -134,7 +134,7 @@ TEST_CASE("the screened separating-axis test gives the contacts of the test on e
         10000);
 }
 
-TEST_CASE("sort and sweep finds exactly the pairs whose bounds overlap") {
+TEST_CASE("the broad phase finds exactly the pairs whose bounds overlap, for boxes and spheres turned any way") {
     check_property("broad phase", [] {
         const int count = *rc::gen::inRange(0, 40);
         std::vector<std::optional<Bounds>> bounds;

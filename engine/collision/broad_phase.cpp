@@ -186,6 +186,7 @@ void append_in_order(int body, std::vector<int>& found, std::vector<std::pair<in
 std::vector<std::pair<int, int>> overlapping_bounds(std::span<const std::optional<Bounds>> bounds) {
     std::vector<Role> roles(bounds.size(), Role::none);
     std::vector<double> sides;
+    sides.reserve(bounds.size());
     for (std::size_t k = 0; k < bounds.size(); ++k)
         if (const auto& b = bounds[k]; b && b->low.allFinite() && b->high.allFinite()) {
             roles[k] = Role::grid;
@@ -202,6 +203,7 @@ std::vector<std::pair<int, int>> overlapping_bounds(std::span<const std::optiona
 
     // Body by body in index order, the bodies after it that overlap it, in order: the pairs come out sorted.
     std::vector<std::pair<int, int>> pairs;
+    pairs.reserve(4 * bounds.size());  // a box resting among boxes touches about six: half of them after it
     std::vector<int> found;
     for (int i = 0; i < static_cast<int>(bounds.size()); ++i) {
         const Role role = roles[static_cast<std::size_t>(i)];

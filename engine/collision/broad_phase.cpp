@@ -144,7 +144,7 @@ private:
     // One counting sort of the grid's bodies by group, in index order within each group.
     void list(const std::vector<Role>& roles, std::size_t listed) {
         const double cells = double(extent_[0]) * extent_[1] * extent_[2];
-        dense_ = cells <= 4.0 * double(listed) + 4096.0;
+        dense_ = cells <= 4.0 * double(listed) + 64.0;
         groups_ = 16;
         while (groups_ < 2 * listed) groups_ *= 2;
         if (dense_) groups_ = static_cast<std::size_t>(cells);

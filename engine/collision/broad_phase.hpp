@@ -4,18 +4,20 @@
 // those whose boxes overlap, so how it finds them can change without changing one bit of any run.
 //
 // How: a uniform grid, rebuilt each frame (broad_phase.cpp). We used to sort the boxes on their low x and sweep
-// along x (sort and prune: Baraff's 1992 thesis, I-COLLIDE's sweep and prune, Cohen et al. 1995). A sweep costs the
-// boxes that overlap along its one axis, and a scene spread over two axes defeats it: on Box3D's large pyramid
-// (5050 cubes, 100 layers in the x-y plane) every cube's x-interval meets two or three cubes in every layer, so
-// the sweep tested about 300 candidates a cube to find six neighbours (1.9 ms a frame, Box3D 0.35 ms). Box2D v3
-// and Box3D keep a dynamic bounding-volume tree whose boxes are enlarged so most bodies stay inside theirs, query
-// only the bodies that left theirs, and keep the pairs found in earlier steps; that is cheap because it remembers.
-// Ours finds every pair afresh from this frame's boxes, with nothing kept between frames to fall out of step: a
-// grid whose cells are as big as the bodies puts each box in at most two cells along each axis, and a pair need
-// only be tested where both boxes are, so the work is a few candidates a body whatever the scene's layout. Each
-// pair is reported in one cell only, the cell holding the low corner of the two boxes' intersection (both boxes
-// cover it), so no pair comes out twice. Bodies much larger than the rest (a ground slab, a long plank) would
-// fill many cells; they are tested against every body directly instead, and the cell sizes follow the others.
+// along x (sort and sweep, or sweep and prune: Baraff's 1992 thesis; I-COLLIDE, Cohen et al. 1995). A sweep tests
+// every pair whose intervals overlap along its one axis, and a scene spread over two axes defeats it: on Box3D's
+// large pyramid (5050 cubes, 100 layers in the x-y plane) a cube's x-interval meets one or two cubes of every layer,
+// so the sweep made 420,000 tests a frame (83 a cube) to find 14,737 pairs. Box2D v3 and Box3D keep a dynamic
+// bounding-volume tree whose boxes are enlarged, so that most bodies stay inside theirs from step to step; they
+// query the tree only for the bodies that left theirs, and keep the pairs found in earlier steps. That is cheap
+// because it remembers, and so it needs the bookkeeping of what changed. Ours finds every pair afresh from this
+// frame's boxes, with nothing kept between frames to fall out of step: a grid whose cells are a little longer than
+// the longest side lists each body once, in the cell of its box's low corner, and any body whose box meets it has
+// its low corner in one of the 27 cells around that one. On the pyramid that is about nine bodies to look at, half
+// of them before it in the index order and so skipped: a few tests a body, whatever the scene's layout. The
+// bodies much larger than the rest (a ground slab, a long plank) would force cells of their size; they are tested
+// against every body instead, and the cells follow the others. Each body's pairs are collected in index order, so
+// the list comes out sorted without sorting it.
 
 #include "shapes/shape.hpp"
 

@@ -1,7 +1,6 @@
-// Contact generation over random boxes: swap symmetry, soundness of every contact, and the broad phase
-// against brute force (rapidcheck, 1000+ cases each).
+// Contact generation over random boxes: swap symmetry and soundness of every contact
+// (rapidcheck, 1000+ cases each; the broad phase against brute force is test_broad_phase.cpp).
 
-#include "collision/broad_phase.hpp"
 #include "collision/collision.hpp"
 #include "support/property.hpp"
 #include "support/random_contacts.hpp"
@@ -132,32 +131,4 @@ TEST_CASE("the screened separating-axis test gives the contacts of the test on e
             }
         },
         10000);
-}
-
-TEST_CASE("the broad phase finds exactly the pairs whose bounds overlap, for boxes and spheres turned any way") {
-    check_property("broad phase", [] {
-        const int count = *rc::gen::inRange(0, 40);
-        std::vector<std::optional<Bounds>> bounds;
-        for (int k = 0; k < count; ++k) {
-            if (*rc::gen::inRange(0, 10) == 0) {
-                bounds.emplace_back();  // a body without a shape
-                continue;
-            }
-            const Shape shape = *rc::gen::arbitrary<bool>()
-                                    ? Shape(Sphere{*in_range(0.1, 1.0)})
-                                    : Shape(Box{Vec3(*in_range(0.1, 1.0), *in_range(0.1, 1.0), *in_range(0.1, 1.0))});
-            bounds.push_back(world_bounds(shape, any_vector(4.0), any_orientation().toRotationMatrix()));
-        }
-        const auto pairs =
-            overlapping_pairs(std::span<const std::optional<Bounds>>(bounds), [](int, int) { return false; });
-        std::vector<std::pair<int, int>> expected;
-        for (int i = 0; i < count; ++i)
-            for (int j = i + 1; j < count; ++j) {
-                const auto& a = bounds[static_cast<std::size_t>(i)];
-                const auto& b = bounds[static_cast<std::size_t>(j)];
-                if (a && b && (a->low.array() <= b->high.array()).all() && (b->low.array() <= a->high.array()).all())
-                    expected.emplace_back(i, j);
-            }
-        RC_ASSERT(pairs == expected);
-    });
 }

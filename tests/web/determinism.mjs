@@ -1,5 +1,6 @@
-// The determinism test: the WebAssembly engine, run by node, writes every shipped case's trace and the first 10
-// frames of every shipped scene's under every preset byte-identical to the native build.
+// The determinism test: the WebAssembly engine, run by node, resolves every shipped case and runs the first 10
+// frames of every shipped scene under every preset to the native build's bits (every body's state after every
+// frame), and writes the same trace of them byte for byte (recorded up to 16 MB; trace_sums.cpp says why).
 //
 //   node determinism.mjs --native NATIVE_PROGRAM --wasm PROGRAM.js --scenes SCENES_FOLDER
 //
@@ -71,8 +72,8 @@ for (const [name, digest] of expected) {
   else if (got.get(name) !== digest) differing.push(name);
 }
 const same = expected.size - differing.length - missing.length;
-console.log(`determinism: ${expected.size} traces (every shipped case, and 10 frames of every shipped scene, under ` +
-            `every preset) in ${((Date.now() - started) / 1000).toFixed(0)} s`);
+console.log(`determinism: ${expected.size} runs (every shipped case, and 10 frames of every shipped scene, under ` +
+            `every preset: states after every frame, traces to 16 MB) in ${((Date.now() - started) / 1000).toFixed(0)} s`);
 if (expected.size === 0) {
   console.log('determinism: the native program listed no trace');
   process.exit(1);

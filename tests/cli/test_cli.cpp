@@ -2,6 +2,7 @@
 // with exit code 2 for bad flags.
 
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -16,7 +17,7 @@ using namespace impulse::test;
 
 namespace {
 
-const std::string cases = IMPULSE_SOURCE_DIR "/scenes/cases/";
+using impulse::test::cases;
 
 std::size_t count_of(const std::string& text, const std::string& what) {
     std::size_t n = 0;

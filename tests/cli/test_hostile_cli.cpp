@@ -2,8 +2,10 @@
 // before it was held.
 
 #include "support/capped_run.hpp"
+#include "support/program.hpp"
 #include "support/read_text.hpp"
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 #include "support/terminal.hpp"
 
@@ -25,8 +27,8 @@ using impulse::test::TempDir;
 
 namespace {
 
-const std::string program = IMPULSE_LAB_PROGRAM;
-const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
+using impulse::test::program;
+using impulse::test::ruler;
 
 }  // namespace
 
@@ -230,14 +232,19 @@ TEST_CASE("a long run's trace and states are written as they go: its memory does
     };
     // Under AddressSanitizer the peaks mean nothing (its shadow memory and quarantine), so the runs there have a fifth
     // of the frames or fewer and check only that the outputs grow with them.
+    struct Runs {
+        const char *states_short, *states_long, *trace_short, *trace_long;  // frames
+        unsigned states_growth_mib, trace_growth_mib;                       // at least, from short to long
+    };
     const bool sanitized = impulse::test::address_sanitized;
-    const auto [states_short, states_short_peak] = peak("stack_3.json", sanitized ? "2000" : "10000", "--states");
-    const auto [states_long, states_long_peak] = peak("stack_3.json", sanitized ? "10000" : "50000", "--states");
-    CHECK(states_long - states_short > (sanitized ? 5u : 25u) << 20);
+    const Runs runs = sanitized ? Runs{"2000", "10000", "1", "6", 5, 5} : Runs{"10000", "50000", "4", "20", 25, 30};
+    const auto [states_short, states_short_peak] = peak("stack_3.json", runs.states_short, "--states");
+    const auto [states_long, states_long_peak] = peak("stack_3.json", runs.states_long, "--states");
+    CHECK(states_long - states_short > runs.states_growth_mib << 20);
     if (!sanitized) CHECK(states_long_peak - states_short_peak < 8 << 20);
-    const auto [trace_short, trace_short_peak] = peak("stack_10.json", sanitized ? "1" : "4", "--trace");
-    const auto [trace_long, trace_long_peak] = peak("stack_10.json", sanitized ? "6" : "20", "--trace");
-    CHECK(trace_long - trace_short > (sanitized ? 5u : 30u) << 20);
+    const auto [trace_short, trace_short_peak] = peak("stack_10.json", runs.trace_short, "--trace");
+    const auto [trace_long, trace_long_peak] = peak("stack_10.json", runs.trace_long, "--trace");
+    CHECK(trace_long - trace_short > runs.trace_growth_mib << 20);
     if (!sanitized) CHECK(trace_long_peak - trace_short_peak < 16 << 20);
 }
 

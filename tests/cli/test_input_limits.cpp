@@ -6,6 +6,7 @@
 
 #include "formats/input_limits.hpp"
 #include "support/capped_run.hpp"
+#include "support/program.hpp"
 #include "support/read_text.hpp"
 #include "support/temp_dir.hpp"
 
@@ -19,7 +20,7 @@ using impulse::test::TempDir;
 
 namespace {
 
-const std::string program = IMPULSE_LAB_PROGRAM;
+using impulse::test::program;
 // The limits' own memory (a document's estimate) and the text read whole, with room for the program itself.
 constexpr std::size_t memory_cap =
     impulse::formats::max_json_memory_bytes + impulse::formats::max_input_bytes + (256u << 20);
@@ -104,9 +105,14 @@ TEST_CASE("a file at the input limit of each kind is read or refused in words wi
     CHECK(r.err.empty());
 
     // Text a person writes has its own, smaller limit: a lesson of 4 MiB, its last step a long read, is valid.
+    // It sits where the shipped lesson does, next to a copy of the scene it names ("../scenes/cases/...").
     const std::string lesson_text =
         impulse::test::read_text(IMPULSE_SOURCE_DIR "/lessons/01-impulse-is-a-velocity-change.md");
-    const auto lesson = fill(dir.file("01-impulse-is-a-velocity-change.md"), lesson_text,
+    std::filesystem::create_directories(dir.file("lessons"));
+    std::filesystem::create_directories(dir.file("scenes/cases"));
+    std::filesystem::copy_file(IMPULSE_SOURCE_DIR "/scenes/cases/sphere_ground.json",
+                               dir.file("scenes/cases/sphere_ground.json"));
+    const auto lesson = fill(dir.file("lessons/01-impulse-is-a-velocity-change.md"), lesson_text,
                              "The impulse changes the velocity by its size over the mass. ", "\n",
                              impulse::formats::max_text_input_bytes);
     r = run({"validate", lesson.string()});

@@ -4,6 +4,7 @@
 // students and minutes of benchmarks; their own tests cover them). Each runs in a fresh folder that links the
 // checkout's scenes/ and lessons/, without a display or a terminal, as a shell would run it.
 
+#include "support/program.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -18,7 +19,7 @@ namespace impulse::test {
 
 namespace {
 
-const std::string program = IMPULSE_LAB_PROGRAM;
+using impulse::test::program;
 
 std::string read(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);

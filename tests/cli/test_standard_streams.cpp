@@ -3,6 +3,7 @@
 
 #include "formats/json_text.hpp"
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/standard_input.hpp"
 #include "support/temp_dir.hpp"
 
@@ -17,7 +18,7 @@ using namespace impulse::test;
 
 namespace {
 
-const std::string cases = IMPULSE_SOURCE_DIR "/scenes/cases/";
+using impulse::test::cases;
 const std::string scenes = IMPULSE_SOURCE_DIR "/scenes/";
 
 std::string file_text(const std::filesystem::path& path) {

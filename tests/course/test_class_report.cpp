@@ -14,6 +14,7 @@
 #include "support/opened.hpp"
 #include "support/read_text.hpp"
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -31,7 +32,7 @@ using impulse::test::TempDir;
 
 namespace {
 
-const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
+using impulse::test::ruler;
 const std::string lesson_7 = IMPULSE_SOURCE_DIR "/lessons/07-calculating-and-applying-the-impulse.md";
 
 std::vector<formats::CsvRow> read_csv(const std::filesystem::path& file) {

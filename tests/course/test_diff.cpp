@@ -12,6 +12,7 @@
 #include "support/opened.hpp"
 #include "support/read_text.hpp"
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -30,8 +31,8 @@ using impulse::test::TempDir;
 
 namespace {
 
-const std::string cases = IMPULSE_SOURCE_DIR "/scenes/cases/";
-const std::string ruler = cases + "ruler.json";
+using impulse::test::cases;
+using impulse::test::ruler;
 
 formats::json read_json(const std::filesystem::path& file) {
     return formats::parse_json_text(read_text(file));

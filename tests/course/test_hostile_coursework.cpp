@@ -13,6 +13,7 @@
 #include "support/opened.hpp"
 #include "support/read_text.hpp"
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -31,7 +32,7 @@ using impulse::test::TempDir;
 
 namespace {
 
-const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
+using impulse::test::ruler;
 
 // The ruler's CSV worksheet with every cell's value set by `fill` (from the reference value at its path).
 std::string ruler_sheet(const std::function<std::string(const formats::json&)>& fill) {

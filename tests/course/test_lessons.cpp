@@ -8,6 +8,7 @@
 #include "course/lesson_run.hpp"
 #include "course/progress.hpp"
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -21,7 +22,7 @@ namespace impulse::test {
 
 namespace {
 
-const std::filesystem::path course = IMPULSE_SOURCE_DIR "/lessons";
+using impulse::test::shipped_lessons;
 const std::string sphere_ground = IMPULSE_SOURCE_DIR "/scenes/cases/sphere_ground.json";
 
 // A small lesson over the sphere meeting the ground; `steps` and `sections` replace its parts.
@@ -60,7 +61,7 @@ bool mentions(const std::string& text, const std::string& word) {
 TEST_CASE(
     "the course has fourteen lessons that run with the engine, name what each step shows, and take the engine's "
     "answers") {
-    const std::vector<std::filesystem::path> files = course::lesson_files(course);
+    const std::vector<std::filesystem::path> files = course::lesson_files(shipped_lessons);
     REQUIRE(files.size() == 14);
     for (std::size_t n = 0; n < files.size(); ++n) {
         const std::string name = files[n].filename().string();
@@ -379,7 +380,7 @@ namespace impulse::test {
 
 TEST_CASE("lesson 14's velocity phase reads as sweeps over the bodies, each followed by the contacts' dual updates") {
     const course::PreparedLesson lesson =
-        course::prepare_lesson(course::read_lesson(course / "14-avbd-beside-the-book.md"));
+        course::prepare_lesson(course::read_lesson(shipped_lessons / "14-avbd-beside-the-book.md"));
     const Trace& trace = lesson.session.trace();
     const course::Mask none;
     // Frame 1 (the trace's first): body 0 gathers 8 contacts, body 1 (the heavy box) 4; then contacts 0..7.

@@ -7,6 +7,7 @@
 #include "course/lesson_run.hpp"
 #include "course/mask.hpp"
 #include "model/replay.hpp"
+#include "support/shipped.hpp"
 
 #include <doctest/doctest.h>
 
@@ -22,10 +23,10 @@ namespace {
 using model::Cursor;
 using model::Stage;
 
-const std::filesystem::path course = IMPULSE_SOURCE_DIR "/lessons";
+using impulse::test::shipped_lessons;
 
 course::PreparedLesson lesson_number(int n) {
-    for (const std::filesystem::path& file : course::lesson_files(course))
+    for (const std::filesystem::path& file : course::lesson_files(shipped_lessons))
         if (std::atoi(file.filename().string().c_str()) == n) return course::prepare_lesson(course::read_lesson(file));
     FAIL("no lesson " << n);
     throw std::logic_error("unreachable");
@@ -163,7 +164,7 @@ void for_each_shown(const Cells& cells, const course::Mask& mask, Visit visit) {
 }  // namespace
 
 TEST_CASE("at every step of every lesson no value shown anywhere equals an open question's answer, but its inputs") {
-    for (const std::filesystem::path& file : course::lesson_files(course)) {
+    for (const std::filesystem::path& file : course::lesson_files(shipped_lessons)) {
         const course::PreparedLesson prepared = course::prepare_lesson(course::read_lesson(file));
         const Trace& trace = prepared.session.trace();
         const auto reaches = course::question_reaches(prepared, trace);

@@ -5,6 +5,7 @@
 #include "course/lesson.hpp"
 #include "course/progress.hpp"
 #include "explain/text_table.hpp"
+#include "support/program.hpp"
 #include "support/run_cli.hpp"
 #include "support/temp_dir.hpp"
 #include "support/terminal.hpp"
@@ -19,7 +20,7 @@ namespace impulse::test {
 
 namespace {
 
-const std::string program = IMPULSE_LAB_PROGRAM;
+using impulse::test::program;
 
 // Three steps over the ball meeting the ground (2 kg at 5 m/s, c = 0.5): a step without a question, then
 // the desired Δv (1.5 × 5 = 7.5 m/s) and the impulse (g = Δv / d = 7.5 / 0.5 = 15 N·s).

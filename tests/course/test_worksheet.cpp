@@ -15,6 +15,7 @@
 #include "support/opened.hpp"
 #include "support/read_text.hpp"
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -32,7 +33,7 @@ using impulse::test::read_text;
 
 namespace {
 
-const std::string cases = IMPULSE_SOURCE_DIR "/scenes/cases/";
+using impulse::test::cases;
 
 // Every key of an item object in StepKey's form: nested keys joined by '.', "[]" after an array of objects.
 void collect_keys(const formats::json& object, const std::string& prefix, std::set<std::string>& keys) {

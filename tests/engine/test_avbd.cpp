@@ -13,6 +13,7 @@
 #include "resolver/resolver.hpp"
 #include "support/approx.hpp"
 #include "support/bodies.hpp"
+#include "support/gravity_and_frame.hpp"
 #include "support/shipped.hpp"
 #include "world/world.hpp"
 
@@ -25,8 +26,8 @@ using namespace impulse;
 
 namespace {
 
-constexpr double g = 9.81;
-constexpr double h = 1.0 / 60.0;
+using impulse::test::g;
+using impulse::test::h;
 
 // A cube of `mass` and side 1 m on the ground, its four lower corners `penetration` into it, under `preset`.
 Scene cube_on_ground(double mass, double penetration, const std::vector<std::string>& settings = {}) {

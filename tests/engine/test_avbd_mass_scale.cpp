@@ -5,6 +5,7 @@
 #include "derivation/avbd/mass_scaled_penalty.hpp"
 #include "formats/settings_json.hpp"
 #include "support/bodies.hpp"
+#include "support/gravity_and_frame.hpp"
 #include "support/shipped.hpp"
 #include "world/world.hpp"
 
@@ -16,8 +17,8 @@ using namespace impulse;
 
 namespace {
 
-constexpr double g = 9.81;
-constexpr double h = 1.0 / 60.0;
+using impulse::test::g;
+using impulse::test::h;
 
 // `scene` with every body's mass and inertia multiplied by `factor`; gravity, shapes and materials as they were.
 Scene heavier(Scene scene, double factor) {

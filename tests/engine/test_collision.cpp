@@ -14,7 +14,7 @@ using namespace impulse::test;
 namespace {
 
 const HalfSpace ground{Vec3::UnitY(), 0.0};
-const Box cube{Vec3(0.5, 0.5, 0.5)};
+using impulse::test::cube;
 
 Placement at(const Vec3& position, const Quat& orientation = Quat::Identity()) {
     return {position, orientation.toRotationMatrix()};

@@ -9,6 +9,7 @@
 #include "record/contact_record.hpp"
 #include "record/trace_recorder.hpp"
 #include "support/shipped.hpp"
+#include "support/simulate.hpp"
 #include "world/world.hpp"
 
 #include <doctest/doctest.h>
@@ -22,12 +23,6 @@
 using namespace impulse;
 
 namespace {
-
-Scene scene_with(const std::string& name, const std::string& preset) {
-    Scene scene = test::shipped(name);
-    formats::apply_setting(scene, "preset=" + preset, "--set");
-    return scene;
-}
 
 // A frame's detection with `recycling` (which keeps what it finds for the next call).
 Detection detect(const Scene& scene, const std::vector<RigidBody>& bodies, ContactRecycling& recycling) {
@@ -43,7 +38,7 @@ Quat turned_about_z(double degrees) {
 }  // namespace
 
 TEST_CASE("a resting box's contacts are kept across frames with the same features, normal and anchors") {
-    const Scene scene = scene_with("box_resting", "soft_step_recycled");
+    const Scene scene = test::shipped_under("box_resting", "soft_step_recycled");
     REQUIRE(scene.settings.recycling.distance == 0.05);
     std::vector<RigidBody> bodies = scene.bodies;
     ContactRecycling recycling;
@@ -97,7 +92,7 @@ TEST_CASE("a resting box's contacts are kept across frames with the same feature
 TEST_CASE("a recycled pair of boxes pushes each body at its own anchor") {
     // Two boxes of stack_3 touching face to face; the upper one moved 1 cm sideways: its anchors went with it, the
     // lower box's stayed, so preparation takes a different point for each body, each at its own anchor.
-    const Scene scene = scene_with("stack_3", "soft_step_recycled");
+    const Scene scene = test::shipped_under("stack_3", "soft_step_recycled");
     std::vector<RigidBody> bodies = scene.bodies;
     ContactRecycling recycling;
     const Detection first = detect(scene, bodies, recycling);
@@ -144,7 +139,7 @@ TEST_CASE("a recycled pair of boxes pushes each body at its own anchor") {
 }
 
 TEST_CASE("a pair that moves or turns past the recycling settings is tested afresh") {
-    const Scene scene = scene_with("box_resting", "soft_step_recycled");
+    const Scene scene = test::shipped_under("box_resting", "soft_step_recycled");
     const auto after_move = [&scene](const Vec3& move, double degrees) {
         std::vector<RigidBody> bodies = scene.bodies;
         ContactRecycling recycling;
@@ -181,7 +176,7 @@ TEST_CASE("kept pairs recycle the same contacts however often the store of kept 
     // is tested afresh and keeps new contacts, leaving the old ones behind in the store, which is compacted every few
     // frames. On the frames between, nothing moves and every pair is recycled: what they give must be what a fresh
     // recycler gives for the same bodies, a detection and then a recycling, wherever the contacts now lie.
-    const Scene scene = scene_with("stack_3", "soft_step_recycled");
+    const Scene scene = test::shipped_under("stack_3", "soft_step_recycled");
     const std::size_t top = highest_body(scene);
     std::vector<RigidBody> bodies = scene.bodies;
     ContactRecycling recycling;
@@ -209,7 +204,7 @@ TEST_CASE("recycling is off unless switched on, and then every frame detects afr
         CHECK(preset(name)->recycling.on() == (name == "soft_step_recycled" || name == "soft_step_coloured"));
     }
     // A world under soft_step keeps nothing: each frame's contacts are a fresh test's.
-    const Scene scene = scene_with("stack_3", "soft_step");
+    const Scene scene = test::shipped_under("stack_3", "soft_step");
     World world(scene);
     for (int frame = 0; frame < 10; ++frame) {
         const std::vector<RigidBody> before = world.bodies();
@@ -219,13 +214,13 @@ TEST_CASE("recycling is off unless switched on, and then every frame detects afr
     }
     CHECK(world.contact_recycling().kept_pairs() == 0);
     // The same scene recycled from its second frame on.
-    World recycled(scene_with("stack_3", "soft_step_recycled"));
+    World recycled(test::shipped_under("stack_3", "soft_step_recycled"));
     CHECK(recycled.step().pairs_recycled == 0);
     CHECK(recycled.step().pairs_recycled > 0);
 }
 
 TEST_CASE("reset forgets the kept contacts, and the recycled run follows again bit for bit") {
-    World world(scene_with("stack_20", "soft_step_recycled"));
+    World world(test::shipped_under("stack_20", "soft_step_recycled"));
     for (int frame = 0; frame < 30; ++frame) world.step();
     const std::vector<RigidBody> first = world.bodies();
     CHECK(world.contact_recycling().kept_pairs() > 0);
@@ -238,7 +233,7 @@ TEST_CASE("reset forgets the kept contacts, and the recycled run follows again b
 
 TEST_CASE("recorded and unrecorded recycled runs are bit-identical") {
     // Recycling is the world's detection; the recorder sees the frames it resolves and changes nothing.
-    const Scene scene = scene_with("stack_20", "soft_step_recycled");
+    const Scene scene = test::shipped_under("stack_20", "soft_step_recycled");
     World quiet(scene), traced(scene);
     Trace trace;
     trace.scene = scene;
@@ -282,7 +277,7 @@ TEST_CASE(
 TEST_CASE("stack_20 stands 10 s under soft_step_recycled, its top box within 5 cm sideways once settled") {
     // Issue 28's target, as the bench judges stack_20 (top_sideways_drift from 2 s). Measured: 4.55 cm at N = 4
     // (the preset's), 3.33 cm at N = 8; with Box3D's 30 Hz and damping ratio 10 it leans 6.1 and 5.3 cm.
-    const Scene scene = scene_with("stack_20", "soft_step_recycled");
+    const Scene scene = test::shipped_under("stack_20", "soft_step_recycled");
     World world(scene);
     const std::size_t top = scene.bodies.size() - 1;
     const Vec3 up(0, 1, 0);

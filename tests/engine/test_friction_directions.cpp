@@ -8,6 +8,7 @@
 // (reference) is the reference engine's and fails these on purpose (docs/methods.md measures it).
 
 #if IMPULSE_HAVE_RAPIDCHECK  // property tests need rapidcheck (not in the engine-only build)
+#include "support/gravity_and_frame.hpp"
 #include "support/property.hpp"
 #endif
 #include "support/sliding_box.hpp"
@@ -23,7 +24,7 @@ using namespace impulse;
 
 namespace {
 
-constexpr double g = 9.81;
+using impulse::test::g;
 constexpr double mu = test::sliding_box_friction;
 constexpr double degree = std::numbers::pi / 180.0;
 

@@ -9,6 +9,7 @@
 #include "record/trace_recorder.hpp"
 #include "resolver/resolver.hpp"
 #include "support/bodies.hpp"
+#include "support/gravity_and_frame.hpp"
 #include "support/shipped.hpp"
 #include "support/sliding_box.hpp"
 #include "world/world.hpp"
@@ -23,8 +24,8 @@ using namespace impulse;
 
 namespace {
 
-constexpr double g = 9.81;
-constexpr double h = 1.0 / 60.0;
+using impulse::test::g;
+using impulse::test::h;
 
 ResolverSettings settings_of(std::string_view name) {
     ResolverSettings s = *preset(name);

@@ -8,6 +8,7 @@
 #include "formats/scene_file.hpp"
 #include "formats/settings_json.hpp"
 #include "support/approx.hpp"
+#include "support/bodies.hpp"
 #include "support/shipped.hpp"
 #include "world/world.hpp"
 
@@ -23,7 +24,7 @@ using namespace impulse;
 
 namespace {
 
-const Box cube{Vec3(0.5, 0.5, 0.5)};
+using impulse::test::cube;
 const double degree = std::numbers::pi / 180.0;
 
 // Box 0 turned 1 degree about x over box 1 at the origin, its low edge (z = +0.5 before the turn) `depth` into

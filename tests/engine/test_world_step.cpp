@@ -6,6 +6,7 @@
 #include "methods/method_table.hpp"
 #include "record/trace_recorder.hpp"
 #include "support/shipped.hpp"
+#include "support/simulate.hpp"
 #include "body/integrate.hpp"
 #include "world/world.hpp"
 
@@ -18,12 +19,6 @@
 using namespace impulse;
 
 namespace {
-
-Scene scene_with(const std::string& name, const std::string& preset) {
-    Scene scene = test::shipped(name);
-    formats::apply_setting(scene, "preset=" + preset, "--set");
-    return scene;
-}
 
 // One frame written out by hand, as every caller wrote it before the world owned its step: integrate (unless
 // the velocity method owns the whole step and integrates in its sub-steps), detect, resolve with the memory the
@@ -48,7 +43,7 @@ TEST_CASE("a world's step is integrate, detect and resolve with one contact memo
     // Three boxes stacked: contacts from the first frame on, so the warm-starting presets recall every frame.
     for (const std::string_view preset : preset_names()) {
         CAPTURE(preset);
-        const Scene scene = scene_with("stack_3", std::string(preset));
+        const Scene scene = test::shipped_under("stack_3", std::string(preset));
         World world(scene);
         Trace by_world, by_hand;
         by_world.scene = by_hand.scene = scene;
@@ -78,7 +73,7 @@ TEST_CASE("a world's step is integrate, detect and resolve with one contact memo
 TEST_CASE("a world warm starts its second frame from the first frame's totals without being asked") {
     // A box resting on the ground under pgs: four contacts. The first frame has nothing to recall; the world
     // remembers its four totals, and the second frame opens with four warm-start visits.
-    const Scene scene = scene_with("box_resting", "pgs");
+    const Scene scene = test::shipped_under("box_resting", "pgs");
     World world(scene);
     Trace trace;
     trace.scene = scene;
@@ -108,7 +103,7 @@ TEST_CASE("a world warm starts its second frame from the first frame's totals wi
 TEST_CASE("warm_start=false makes a world's second frame the same as a cold one") {
     // The memory is still filled (the trace shows the totals), but nothing recalls it: the switch is the
     // settings', not the caller's.
-    Scene scene = scene_with("box_resting", "pgs");
+    Scene scene = test::shipped_under("box_resting", "pgs");
     formats::apply_setting(scene, "warm_start=false", "--set");
     World world(scene);
     std::vector<RigidBody> cold = scene.bodies;
@@ -122,7 +117,7 @@ TEST_CASE("warm_start=false makes a world's second frame the same as a cold one"
 
 TEST_CASE("reset returns a world to the scene's start and the same run follows bit for bit") {
     // Soft step: its sub-steps integrate the bodies and warm start from the memory, both of which reset clears.
-    const Scene scene = scene_with("stack_3", "soft_step");
+    const Scene scene = test::shipped_under("stack_3", "soft_step");
     World world(scene);
     for (int frame = 0; frame < 30; ++frame) world.step();
     const std::vector<RigidBody> first = world.bodies();
@@ -142,7 +137,7 @@ TEST_CASE("reset returns a world to the scene's start and the same run follows b
 TEST_CASE("a copy of a world goes on exactly as the world it was copied from") {
     // The bench times a window of frames again from a copy taken where the window starts: bodies, memory and
     // frame number all come along.
-    World world(scene_with("stack_3", "pgs"));
+    World world(test::shipped_under("stack_3", "pgs"));
     for (int frame = 0; frame < 10; ++frame) world.step();
     World copy = world;
     CHECK(copy.frame() == 10);
@@ -159,7 +154,7 @@ TEST_CASE("a stop flag set before a step cuts every preset's frame short, and a 
     for (const std::string_view name : preset_names()) {
         const std::string preset(name);
         CAPTURE(preset);
-        Scene scene = scene_with("pyramid_10", preset);
+        Scene scene = test::shipped_under("pyramid_10", preset);
         formats::apply_setting(scene, "velocity_iterations=100000000", "--set");
         formats::apply_setting(scene, "position_iterations=100000000", "--set");
         formats::apply_setting(scene, "sweeps=100000", "--set");
@@ -173,10 +168,10 @@ TEST_CASE("a stop flag set before a step cuts every preset's frame short, and a 
         CHECK(report.resolution.velocity.iterations_used + report.resolution.position.iterations_used <=
               static_cast<int>(2 * stop_check_visits));
     }
-    World unstoppable(scene_with("pyramid_10", "book"));
+    World unstoppable(test::shipped_under("pyramid_10", "book"));
     CHECK_FALSE(unstoppable.step().resolution.cut_short);
     std::atomic<bool> stop{false};
-    World free(scene_with("pyramid_10", "book"));
+    World free(test::shipped_under("pyramid_10", "book"));
     free.set_stop_flag(&stop);
     CHECK_FALSE(free.step().resolution.cut_short);
 }

@@ -9,6 +9,7 @@
 #include "model/runs.hpp"
 #include "support/png_image.hpp"
 #include "support/run_cli.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -23,7 +24,7 @@ namespace impulse::test {
 
 namespace {
 
-const std::string ruler = IMPULSE_SOURCE_DIR "/scenes/cases/ruler.json";
+using impulse::test::ruler;
 const std::string sliding_box = IMPULSE_SOURCE_DIR "/scenes/cases/sliding_box.json";
 
 std::string read(const std::filesystem::path& path) {

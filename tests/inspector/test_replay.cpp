@@ -7,6 +7,7 @@
 #include "model/replay.hpp"
 #include "model/session.hpp"
 
+#include "support/navigator_places.hpp"
 #include "support/opened.hpp"
 
 #include <doctest/doctest.h>
@@ -21,26 +22,13 @@ using namespace impulse::model;
 namespace {
 
 using test::opened;
+using test::relaxed;
+using test::stack_run;
 
 Trace with_settings(const std::string& name, std::vector<std::string> settings) {
     OpenOptions options;
     options.settings = std::move(settings);
     return opened(name, options);
-}
-
-Trace stack_run(std::vector<std::string> settings = {}) {
-    OpenOptions options;
-    options.frames = 3;
-    options.settings = std::move(settings);
-    return opened("stack_3", options);
-}
-
-// The deep plank's first frame with relaxation: 12 position iterations over 4 contacts sharing one body.
-Trace relaxed_plank() {
-    OpenOptions options;
-    options.frames = 1;
-    options.settings = {"position_method=relaxation"};
-    return opened("deep_plank", options);
 }
 
 // Every item of every stage, at its first step.
@@ -108,8 +96,9 @@ TEST_CASE("contact rows in the preparation and at the first phase's iteration 0 
 TEST_CASE("the chosen contact's row holds exactly the value its iteration compared with the epsilon") {
     // The resolver picks the contact by its bookkeeping value at that moment; the replay rebuilds that value
     // from the recorded updates alone, so the two are the same double.
-    for (const Trace& trace : {opened("cases/sliding_box"), opened("cases/three_objects"), stack_run(), relaxed_plank(),
-                               with_settings("cases/deep_corner", {"position_method=relaxation"})}) {
+    for (const Trace& trace :
+         {opened("cases/sliding_box"), opened("cases/three_objects"), stack_run(), relaxed("deep_plank"),
+          with_settings("cases/deep_corner", {"position_method=relaxation"})}) {
         for (int f = 0; f < static_cast<int>(trace.frames.size()); ++f) {
             const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
             for (const PositionIteration& it : frame.position.iterations) {
@@ -131,7 +120,7 @@ TEST_CASE("the chosen contact's row holds exactly the value its iteration compar
 TEST_CASE("every contact's row at an iteration is the value its first update in that iteration started from") {
     // An update records the value before and after; the first update of a contact within an iteration starts
     // from the bookkeeping as the earlier iterations left it, which is what the rows must show.
-    for (const Trace& trace : {opened("cases/sliding_box"), stack_run(), relaxed_plank()}) {
+    for (const Trace& trace : {opened("cases/sliding_box"), stack_run(), relaxed("deep_plank")}) {
         for (int f = 0; f < static_cast<int>(trace.frames.size()); ++f) {
             const FrameRecord& frame = trace.frames[static_cast<std::size_t>(f)];
             for (const PositionIteration& it : frame.position.iterations) {
@@ -185,7 +174,7 @@ TEST_CASE("exactly one contact is chosen at an iteration and none in the prepara
 }
 
 TEST_CASE("a contact waits while its value is above the phase's epsilon and is below ε at or under it") {
-    for (const Trace& trace : {opened("cases/sliding_box"), stack_run(), relaxed_plank()}) {
+    for (const Trace& trace : {opened("cases/sliding_box"), stack_run(), relaxed("deep_plank")}) {
         const ResolverSettings& s = trace.scene.settings;
         for (const Cursor& c : every_item(trace)) {
             // The preparation is judged against the phase that runs first: positions for the book preset.
@@ -237,7 +226,7 @@ TEST_CASE("a value equal to the epsilon is below ε, and the preparation is judg
 
 TEST_CASE("the bodies after a frame's last item are the frame's recorded end state, bit for bit") {
     for (const Trace& trace : {opened("cases/ruler"), opened("cases/sliding_box"), opened("cases/three_objects"),
-                               opened("cases/two_body_oblique"), stack_run(), relaxed_plank(),
+                               opened("cases/two_body_oblique"), stack_run(), relaxed("deep_plank"),
                                with_settings("cases/ruler", {"phase_order=velocities_first"}),
                                with_settings("cases/ruler", {"orientation_update=exact"}),
                                with_settings("cases/deep_corner", {"position_method=velocity_based"}),
@@ -264,7 +253,7 @@ TEST_CASE("in the preparation nothing has moved yet") {
 }
 
 TEST_CASE("each item starts from the state the item before it left, across the two phases") {
-    for (const Trace& trace : {opened("cases/ruler"), stack_run(), relaxed_plank()}) {
+    for (const Trace& trace : {opened("cases/ruler"), stack_run(), relaxed("deep_plank")}) {
         const std::vector<Cursor> items = every_item(trace);
         for (std::size_t i = 1; i < items.size(); ++i) {
             if (items[i].frame != items[i - 1].frame) continue;

@@ -31,11 +31,8 @@ using impulse::test::read_text;
 
 namespace {
 
-const std::string& scenes = test::shipped_scenes;
-
-Session opened(const std::string& name, const OpenOptions& options = {}) {
-    return test::opened_session(name, options);
-}
+using test::opened_session;
+using test::ruler;
 
 formats::InputError open_error(const std::string& path, const OpenOptions& options) {
     try {
@@ -100,16 +97,14 @@ struct RecordingHost : ActionHost {
     void quit() override { ++quits; }
 };
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+using impulse::test::contains;
 
 }  // namespace
 
 TEST_CASE("a case file opens as a case, resolved once, with the cursor at its first place") {
-    const Session s = opened("cases/ruler");
+    const Session s = opened_session("cases/ruler");
     CHECK(s.kind() == SourceKind::case_file);
-    CHECK(s.path() == scenes + "cases/ruler.json");
+    CHECK(s.path() == ruler);
     REQUIRE(s.trace().frames.size() == 1);
     CHECK(s.trace().frames[0].contact_count == 1);
     CHECK(s.cursor() == Cursor{0, Stage::preparation, 0, 0});
@@ -118,13 +113,13 @@ TEST_CASE("a case file opens as a case, resolved once, with the cursor at its fi
 
 TEST_CASE("a scene file opens as a scene, simulated for the first second or the frames asked for") {
     // stack_3 runs 600 frames; the inspector opens at most default_inspect_frames of them.
-    const Session whole = opened("stack_3");
+    const Session whole = opened_session("stack_3");
     CHECK(whole.kind() == SourceKind::scene_file);
     CHECK(whole.trace().frames.size() == static_cast<std::size_t>(default_inspect_frames));
     CHECK(whole.trace().scene.world.frames == default_inspect_frames);
     OpenOptions three;
     three.frames = 3;
-    const Session short_run = opened("stack_3", three);
+    const Session short_run = opened_session("stack_3", three);
     CHECK(short_run.kind() == SourceKind::scene_file);
     REQUIRE(short_run.trace().frames.size() == 3);
     CHECK(short_run.trace().frames[2].frame == 2);
@@ -134,7 +129,7 @@ TEST_CASE("a scene file opens as a scene, simulated for the first second or the 
     OpenOptions recorded;
     recorded.frames = 3;
     recorded.record = {"frames=1..2"};
-    const Session some = opened("stack_3", recorded);
+    const Session some = opened_session("stack_3", recorded);
     REQUIRE(some.trace().frames.size() == 2);
     CHECK(some.trace().frames[0].frame == 1);
     CHECK(some.cursor() == Cursor{0, Stage::preparation, 0, 0});
@@ -143,13 +138,13 @@ TEST_CASE("a scene file opens as a scene, simulated for the first second or the 
 TEST_CASE("a case is resolved once: --frames is refused") {
     OpenOptions options;
     options.frames = 3;
-    const formats::InputError e = open_error(scenes + "cases/ruler.json", options);
+    const formats::InputError e = open_error(ruler, options);
     CHECK(e.where() == "--frames");
 }
 
 TEST_CASE("a trace file opens as the trace it holds, equal value for value") {
     test::TempDir dir;
-    const Trace recorded = opened("cases/sliding_box").trace();
+    const Trace recorded = opened_session("cases/sliding_box").trace();
     const std::string path =
         dir.write("sliding_box.trace.json", formats::format_json(formats::trace_json(recorded))).string();
     const Session s = Session::open(path, {});
@@ -161,7 +156,7 @@ TEST_CASE("a trace file opens as the trace it holds, equal value for value") {
 TEST_CASE("a trace is shown as recorded: --set, --preset, --frames and --record are refused naming the flag") {
     test::TempDir dir;
     const std::string path =
-        dir.write("ruler.trace.json", formats::format_json(formats::trace_json(opened("cases/ruler").trace())))
+        dir.write("ruler.trace.json", formats::format_json(formats::trace_json(opened_session("cases/ruler").trace())))
             .string();
     OpenOptions set;
     set.settings = {"velocity_epsilon=0.5"};
@@ -198,14 +193,14 @@ TEST_CASE("a bad file is a file error naming the file and the JSON path of the p
 TEST_CASE("a bad --set or --record on a case is an input error naming the flag") {
     OpenOptions set;
     set.settings = {"velocity_epsilon"};
-    CHECK(open_error(scenes + "cases/ruler.json", set).where() == "--set");
+    CHECK(open_error(ruler, set).where() == "--set");
     OpenOptions record;
     record.record = {"contacts=4"};  // the ruler has one contact
-    CHECK(open_error(scenes + "cases/ruler.json", record).where() == "--record");
+    CHECK(open_error(ruler, record).where() == "--record");
 }
 
 TEST_CASE("a changed setting re-runs the case and keeps the cursor on the same contact and step") {
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     const Trace before = s.trace();
     s.move_to({0, Stage::velocity, 0, 3});  // the impulse
     s.set("position_method=linear_projection", "set");
@@ -225,7 +220,7 @@ TEST_CASE("a changed setting re-runs the case and keeps the cursor on the same c
 TEST_CASE("a changed setting keeps a phase's cursor on the same contact when an iteration still chooses it") {
     OpenOptions options;
     options.frames = 3;
-    Session s = opened("stack_3", options);
+    Session s = opened_session("stack_3", options);
     s.move_to({1, Stage::velocity, 4, 3});  // frame 1, iteration 4 chose contact 8; its impulse
     REQUIRE(contact_at(s.trace(), *s.cursor()) == 8);
     // Fewer iterations per contact change frame 0's outcome, so frame 1's iterations pick in another order;
@@ -241,7 +236,7 @@ TEST_CASE("a changed setting keeps a phase's cursor on the same contact when an 
 }
 
 TEST_CASE("a changed setting keeps a prepared contact's place by its contact number") {
-    Session s = opened("cases/three_objects");
+    Session s = opened_session("cases/three_objects");
     s.move_to({0, Stage::preparation, 2, 3});  // contact 2's contact_velocity
     s.set("restitution_cutoff=0.5", "set");
     CHECK(s.settings().restitution_cutoff == 0.5);
@@ -250,7 +245,7 @@ TEST_CASE("a changed setting keeps a prepared contact's place by its contact num
 }
 
 TEST_CASE("a bad setting changes nothing and names where it came from") {
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     s.move_to({0, Stage::velocity, 0, 2});
     const Trace before = s.trace();
     try {
@@ -364,7 +359,7 @@ TEST_CASE("a line that is not an action is an input error at its line number") {
 }
 
 TEST_CASE("move actions move the cursor as the navigator does, a count repeating the move") {
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     const Trace& t = s.trace();
     act(s, "next step 3");
     CHECK(s.cursor() == Cursor{0, Stage::preparation, 0, 3});
@@ -391,7 +386,7 @@ TEST_CASE("move actions move the cursor as the navigator does, a count repeating
 }
 
 TEST_CASE("a move past the end of the trace is an error and leaves the cursor where it was") {
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     // 16 tables in all (see the navigator's tests): 15 steps forward reach the last, 16 would leave the trace.
     act(s, "next step 4");
     const Cursor before = *s.cursor();
@@ -409,7 +404,7 @@ TEST_CASE("a move past the end of the trace is an error and leaves the cursor wh
 }
 
 TEST_CASE("a goto to a place the trace lacks is an error and leaves the cursor where it was") {
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     act(s, "next step 2");
     const Cursor before = *s.cursor();
     CHECK(perform_error(s, "goto frame=9").where() == "test action");
@@ -417,7 +412,7 @@ TEST_CASE("a goto to a place the trace lacks is an error and leaves the cursor w
 }
 
 TEST_CASE("a set action re-runs the scene with the setting") {
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     act(s, "set position_method linear_projection");
     CHECK(s.settings().position_method == PositionMethod::linear_projection);
     CHECK(perform_error(s, "set velocity_epsilon fast").where() == "test action velocity_epsilon");
@@ -426,7 +421,7 @@ TEST_CASE("a set action re-runs the scene with the setting") {
 
 TEST_CASE("export trace writes the session's trace, which reads back equal") {
     test::TempDir dir;
-    Session s = opened("cases/sliding_box");
+    Session s = opened_session("cases/sliding_box");
     const std::filesystem::path file = dir.file("out.trace.json");
     act(s, "export trace " + file.string());
     const std::string text = read_text(file);
@@ -441,7 +436,7 @@ TEST_CASE("export trace writes the session's trace, which reads back equal") {
 
 TEST_CASE("export table writes the CSV of the derivation table at the cursor") {
     test::TempDir dir;
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     act(s, "goto phase=velocity,step=impulse");
     const std::filesystem::path file = dir.file("impulse.csv");
     act(s, "export table " + file.string());
@@ -454,7 +449,7 @@ TEST_CASE("export table writes the CSV of the derivation table at the cursor") {
 
 TEST_CASE("an export to a directory that does not exist is an input error and writes nothing") {
     test::TempDir dir;
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     const std::string path = dir.file("missing").string() + "/out.csv";
     CHECK(perform_error(s, "export table " + path).where() == "test action");
     CHECK(perform_error(s, "export trace " + path).where() == "test action");
@@ -462,7 +457,7 @@ TEST_CASE("an export to a directory that does not exist is an input error and wr
 }
 
 TEST_CASE("a screenshot, view or quit without a window is an input error") {
-    Session s = opened("cases/ruler");
+    Session s = opened_session("cases/ruler");
     CHECK(perform_error(s, "screenshot shot.png").where() == "test action");
     CHECK(perform_error(s, "view front").where() == "test action");
     CHECK(perform_error(s, "quit").where() == "test action");
@@ -485,7 +480,7 @@ TEST_CASE("a screenshot, view or quit without a window is an input error") {
 
 TEST_CASE("moves and exports of a session with nothing recorded are input errors") {
     // A trace without frames, as a recording whose frame filter matched none of the run would be.
-    Trace empty = opened("cases/ruler").trace();
+    Trace empty = opened_session("cases/ruler").trace();
     empty.frames.clear();
     Session s = Session::from_trace(empty, SourceKind::trace_file, "empty.json");
     CHECK_FALSE(s.cursor().has_value());

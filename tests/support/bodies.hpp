@@ -12,6 +12,8 @@
 
 namespace impulse::test {
 
+inline const Box cube{Vec3(0.5, 0.5, 0.5)};  // a 1 m cube
+
 inline RigidBody sphere(double mass, double radius, const Vec3& position, const Vec3& velocity = Vec3::Zero()) {
     RigidBody b;
     b.position = position;

@@ -8,19 +8,23 @@
 #include "model/session.hpp"
 
 #include "support/opened.hpp"
+#include "support/read_text.hpp"
 
 #include <doctest/doctest.h>
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace impulse::test {
 
-// Three frames of the stack: enough for moves to cross frames, small enough to walk every step.
-inline Trace stack_run() {
+// Three frames of the stack, with `settings` as --set gives them: enough for moves to cross frames, small enough to
+// walk every step.
+inline Trace stack_run(std::vector<std::string> settings = {}) {
     model::OpenOptions options;
     options.frames = 3;
+    options.settings = std::move(settings);
     return opened("stack_3", options);
 }
 
@@ -95,10 +99,6 @@ inline formats::InputError goto_error(const Trace& trace, const std::string& tex
     }
     FAIL("--goto " << text << " was accepted");
     return formats::InputError("", "");
-}
-
-inline bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
 }
 
 }  // namespace impulse::test

@@ -2,12 +2,11 @@
 // A shipped case or scene ("cases/ruler", "stack_3") opened as the inspector opens it.
 
 #include "model/session.hpp"
+#include "support/shipped.hpp"
 
 #include <string>
 
 namespace impulse::test {
-
-inline const std::string shipped_scenes = IMPULSE_SOURCE_DIR "/scenes/";
 
 inline model::Session opened_session(const std::string& name, const model::OpenOptions& options = {}) {
     return model::Session::open(shipped_scenes + name + ".json", options);

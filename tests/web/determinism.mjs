@@ -1,6 +1,7 @@
 // The determinism test: the WebAssembly engine, run by node, resolves every shipped case and runs the first 10
 // frames of every shipped scene under every preset to the native build's bits (every body's state after every
-// frame), and writes the same trace of them byte for byte (recorded up to 16 MB; trace_sums.cpp says why).
+// frame), and writes the same trace of them byte for byte (recorded up to the budget trace_sums.cpp sets and
+// explains).
 //
 //   node determinism.mjs --native NATIVE_PROGRAM --wasm PROGRAM.js --scenes SCENES_FOLDER
 //
@@ -73,7 +74,7 @@ for (const [name, digest] of expected) {
 }
 const same = expected.size - differing.length - missing.length;
 console.log(`determinism: ${expected.size} runs (every shipped case, and 10 frames of every shipped scene, under ` +
-            `every preset: states after every frame, traces to 16 MB) in ${((Date.now() - started) / 1000).toFixed(0)} s`);
+            `every preset: states after every frame, traces to trace_sums.cpp's budget) in ${((Date.now() - started) / 1000).toFixed(0)} s`);
 if (expected.size === 0) {
   console.log('determinism: the native program listed no trace');
   process.exit(1);

@@ -8,6 +8,7 @@
 #include "support/capped_run.hpp"
 #include "support/program.hpp"
 #include "support/read_text.hpp"
+#include "support/shipped.hpp"
 #include "support/temp_dir.hpp"
 
 #include <doctest/doctest.h>
@@ -116,10 +117,10 @@ TEST_CASE("a lesson at the text limit is valid, and a file one byte over the inp
     // Text a person writes has its own, smaller limit: a lesson of 4 MiB, its last step a long read, is valid.
     // It sits where the shipped lesson does, next to a copy of the scene it names ("../scenes/cases/...").
     const std::string lesson_text =
-        impulse::test::read_text(IMPULSE_SOURCE_DIR "/lessons/01-impulse-is-a-velocity-change.md");
+        impulse::test::read_text(impulse::test::shipped_lessons / "01-impulse-is-a-velocity-change.md");
     std::filesystem::create_directories(dir.file("lessons"));
     std::filesystem::create_directories(dir.file("scenes/cases"));
-    std::filesystem::copy_file(IMPULSE_SOURCE_DIR "/scenes/cases/sphere_ground.json",
+    std::filesystem::copy_file(impulse::test::cases + "sphere_ground.json",
                                dir.file("scenes/cases/sphere_ground.json"));
     const auto lesson = fill(dir.file("lessons/01-impulse-is-a-velocity-change.md"), lesson_text,
                              "The impulse changes the velocity by its size over the mass. ", "\n",

@@ -2,6 +2,7 @@
 // carries a file nothing else goes there, and at most one argument of a command is "-" in each direction.
 
 #include "formats/json_text.hpp"
+#include "support/read_text.hpp"
 #include "support/run_cli.hpp"
 #include "support/shipped.hpp"
 #include "support/standard_input.hpp"
@@ -11,22 +12,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 using namespace impulse::test;
 
 namespace {
-
-using impulse::test::cases;
-const std::string scenes = IMPULSE_SOURCE_DIR "/scenes/";
-
-std::string file_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 std::size_t lines(const std::string& text) {
     return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
@@ -42,7 +31,7 @@ TEST_CASE("resolve - --trace - reads the case from standard input and prints onl
     const StandardInputFrom input(cases + "ruler.json");
     const CliResult r = run_cli({"resolve", "-", "--trace", "-"});
     CHECK(r.code == 0);
-    CHECK(r.out == file_text(trace));  // the same trace, and nothing else on standard output
+    CHECK(r.out == read_text(trace));  // the same trace, and nothing else on standard output
     CHECK(r.err.find("velocity phase: nothing left above") != std::string::npos);  // the summary moved here
     CHECK(r.err.find("trace written to") == std::string::npos);
     CHECK(dir.entries() == 1);  // no file named "-"
@@ -50,7 +39,7 @@ TEST_CASE("resolve - --trace - reads the case from standard input and prints onl
 
 TEST_CASE("run - --states - reads the scene from standard input and writes the states to standard output") {
     TempDir dir;
-    const StandardInputFrom input(scenes + "stack_3.json");
+    const StandardInputFrom input(shipped_scenes + "stack_3.json");
     const CliResult r = run_cli({"run", "-", "--frames", "4", "--states", "-", "--trace", dir.file("t.json").string()});
     CHECK(r.code == 0);
     CHECK(r.out.rfind("frame,time,body,name,", 0) == 0);
@@ -109,7 +98,7 @@ TEST_CASE("two arguments given as - in one direction, or a folder given as -, ar
     TempDir dir;
     const std::string ruler = cases + "ruler.json";
     const std::vector<std::pair<std::vector<std::string>, std::string>> table{
-        {{"run", scenes + "stack_3.json", "--trace", "-", "--states", "-"},
+        {{"run", shipped_scenes + "stack_3.json", "--trace", "-", "--states", "-"},
          "impulse-lab: --states: standard output (\"-\") already carries --trace; only one output can go there\n"},
         {{"diff", "-", "-"},
          "impulse-lab: OTHER: standard input (\"-\") is already read for REFERENCE; only one file can come from it\n"},

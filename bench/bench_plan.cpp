@@ -130,7 +130,8 @@ std::vector<std::string> default_methods() {
     // Every preset of ours but `chapter` (the book's velocities and pushes again, without the reference engine's
     // additions: it would repeat the book's row), then the other engines.
     std::vector<std::string> methods{
-        "book", "sweep", "pgs", "pgs_split", "soft_step", "soft_step_recycled", "soft_step_coloured", "avbd"};
+        "book",           "sweep", "pgs", "pgs_split", "soft_step", "soft_step_recycled", "soft_step_coloured",
+        "soft_step_wide", "avbd"};
     for (const EngineRow& e : built_engines()) methods.emplace_back(e.name);
     return methods;
 }

@@ -40,9 +40,10 @@ inline constexpr NameTable<SlidingFriction, 2> sliding_friction_names{{
     {SlidingFriction::reference, "reference"},
     {SlidingFriction::against_slip, "against_slip"},
 }};
-inline constexpr NameTable<SolveOrder, 2> solve_order_names{{
+inline constexpr NameTable<SolveOrder, 3> solve_order_names{{
     {SolveOrder::contacts, "contacts"},
     {SolveOrder::colours, "colours"},
+    {SolveOrder::wide, "wide"},
 }};
 inline constexpr NameTable<AngularLimitPolicy, 4> angular_limit_policy_names{{
     {AngularLimitPolicy::none, "none"},

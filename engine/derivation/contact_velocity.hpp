@@ -4,6 +4,7 @@
 // the sliding speeds that friction works on.
 
 #include "derivation/basis.hpp"
+#include "math/lanes.hpp"
 #include "math/products.hpp"
 #include "math/types.hpp"
 
@@ -31,9 +32,15 @@ struct ContactVelocityTerms {
 
 // A body's point velocity at q_rel from its centre, theta-dot x q_rel + p-dot  (9.5), world. Inline, in plain
 // doubles (math/products.hpp): the book's step 4 and every accumulating method's rows read velocities through it.
-IMPULSE_KERNEL Vec3 point_velocity(const Vec3& velocity, const Vec3& angular_velocity, const Vec3& relative_position) {
-    const Vec3 turning = cross(angular_velocity, relative_position);
+// Over a Vec3, or a Vec3x4 (math/lanes.hpp: four pairs of a wide record).
+template <typename V>
+IMPULSE_KERNEL V point_velocity_of(const V& velocity, const V& angular_velocity, const V& relative_position) {
+    const V turning = cross(angular_velocity, relative_position);
     return {turning.x() + velocity.x(), turning.y() + velocity.y(), turning.z() + velocity.z()};
+}
+
+IMPULSE_KERNEL Vec3 point_velocity(const Vec3& velocity, const Vec3& angular_velocity, const Vec3& relative_position) {
+    return point_velocity_of<Vec3>(velocity, angular_velocity, relative_position);
 }
 
 // One body's share of step 4: its point velocity, and with the refinement its tangential acceleration term, both

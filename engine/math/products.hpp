@@ -18,9 +18,40 @@
 
 namespace impulse {
 
+// Each product is written once over its vector type V (x(), y(), z(), built from three numbers) and matrix type M
+// (m(i, j)): a Vec3 and a Mat3 here, or four of each side by side (math/lanes.hpp: a wide record's lanes), so every
+// lane sums in the order a double does.
+
 // a x b
-IMPULSE_KERNEL Vec3 cross(const Vec3& a, const Vec3& b) {
+template <typename V>
+IMPULSE_KERNEL V cross_of(const V& a, const V& b) {
     return {a.y() * b.z() - a.z() * b.y(), a.z() * b.x() - a.x() * b.z(), a.x() * b.y() - a.y() * b.x()};
+}
+
+// a . b = a0 b0 + (a1 b1 + a2 b2)
+template <typename V>
+IMPULSE_KERNEL auto dot_of(const V& a, const V& b) {
+    return a.x() * b.x() + (a.y() * b.y() + a.z() * b.z());
+}
+
+// m v
+template <typename M, typename V>
+IMPULSE_KERNEL V times_of(const M& m, const V& v) {
+    return {m(0, 0) * v.x() + (m(0, 1) * v.y() + m(0, 2) * v.z()),
+            m(1, 0) * v.x() + (m(1, 1) * v.y() + m(1, 2) * v.z()),
+            m(2, 0) * v.x() + (m(2, 1) * v.y() + m(2, 2) * v.z())};
+}
+
+// m^T v: each column of m dotted with v
+template <typename M, typename V>
+IMPULSE_KERNEL V transposed_times_of(const M& m, const V& v) {
+    return {m(0, 0) * v.x() + (m(1, 0) * v.y() + m(2, 0) * v.z()),
+            m(0, 1) * v.x() + (m(1, 1) * v.y() + m(2, 1) * v.z()),
+            m(0, 2) * v.x() + (m(1, 2) * v.y() + m(2, 2) * v.z())};
+}
+
+IMPULSE_KERNEL Vec3 cross(const Vec3& a, const Vec3& b) {
+    return cross_of(a, b);
 }
 
 // [r]x, the matrix with [r]x g = r x g.
@@ -32,23 +63,16 @@ IMPULSE_KERNEL Mat3 skew(const Vec3& r) {
     return m;
 }
 
-// a . b = a0 b0 + (a1 b1 + a2 b2)
 IMPULSE_KERNEL double dot(const Vec3& a, const Vec3& b) {
-    return a.x() * b.x() + (a.y() * b.y() + a.z() * b.z());
+    return dot_of(a, b);
 }
 
-// m v
 IMPULSE_KERNEL Vec3 times(const Mat3& m, const Vec3& v) {
-    return {m(0, 0) * v.x() + (m(0, 1) * v.y() + m(0, 2) * v.z()),
-            m(1, 0) * v.x() + (m(1, 1) * v.y() + m(1, 2) * v.z()),
-            m(2, 0) * v.x() + (m(2, 1) * v.y() + m(2, 2) * v.z())};
+    return times_of(m, v);
 }
 
-// m^T v: each column of m dotted with v
 IMPULSE_KERNEL Vec3 transposed_times(const Mat3& m, const Vec3& v) {
-    return {m(0, 0) * v.x() + (m(1, 0) * v.y() + m(2, 0) * v.z()),
-            m(0, 1) * v.x() + (m(1, 1) * v.y() + m(2, 1) * v.z()),
-            m(0, 2) * v.x() + (m(1, 2) * v.y() + m(2, 2) * v.z())};
+    return transposed_times_of(m, v);
 }
 
 // a b (written entry by entry: a loop over the entries is not unrolled at -O2, and costs three times as much)

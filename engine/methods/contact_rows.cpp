@@ -56,7 +56,8 @@ RowSolver::RowSolver(FrameContext& frame, bool in_colours)
       moving_(frame.scratch),
       slots_(frame.scratch),
       keys_(frame.scratch),
-      kept_(frame.scratch) {
+      kept_(frame.scratch),
+      colours_(frame.scratch) {
     std::pmr::vector<std::array<int, 2>> pairs(frame.scratch);  // each moving contact's bodies, for colour_slots
     moving_.reserve(frame.contacts.size());
     if (in_colours) pairs.reserve(frame.contacts.size());
@@ -67,7 +68,8 @@ RowSolver::RowSolver(FrameContext& frame, bool in_colours)
     }
     const std::size_t count = moving_.size();
     if (in_colours) {
-        slots_ = colour_slots(pairs, bodies_, frame.scratch);
+        colours_ = pair_colours(pairs, bodies_, frame.scratch);
+        slots_ = slots_of_colours(colours_, frame.scratch);
     } else {
         slots_.resize(count);
         for (std::size_t k = 0; k < count; ++k) slots_[k] = static_cast<std::uint32_t>(k);

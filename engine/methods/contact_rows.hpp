@@ -37,6 +37,7 @@
 #include "derivation/contact_velocity.hpp"
 #include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
+#include "math/lanes.hpp"
 #include "math/products.hpp"
 #include "memory/contact_memory.hpp"
 #include "methods/method.hpp"
@@ -53,12 +54,15 @@
 namespace impulse {
 
 // Three numbers along a contact's axes, (normal, tangent 1, tangent 2): a velocity or an impulse in contact
-// coordinates, as the row functions carry them.
-struct Axes {
-    double n = 0.0;
-    double t1 = 0.0;
-    double t2 = 0.0;
+// coordinates, as the row functions carry them. Over a double (one visit), or four floats (a wide record's four
+// pairs side by side: math/lanes.hpp), the row functions below written once over either.
+template <typename Real>
+struct AxesOf {
+    Real n{};
+    Real t1{};
+    Real t2{};
 };
+using Axes = AxesOf<double>;
 
 inline Vec3 vector_of(const Axes& a) {
     return {a.n, a.t1, a.t2};
@@ -111,11 +115,13 @@ void fill_contact_row(ContactRow& row, const PreparedContact& contact, const Sol
                       bool friction_rows = true);
 
 // What the normal row aims for in one visit.
-struct NormalTarget {
-    double velocity = 0.0;       // the normal velocity the row asks for (m/s)
-    double mass_scale = 1.0;     // share of the rigid impulse applied (soft contact: < 1)
-    double impulse_scale = 0.0;  // share of the total given back per visit (soft contact: > 0)
+template <typename Real>
+struct NormalTargetOf {
+    Real velocity = splat<Real>(0.0);       // the normal velocity the row asks for (m/s)
+    Real mass_scale = splat<Real>(1.0);     // share of the rigid impulse applied (soft contact: < 1)
+    Real impulse_scale = splat<Real>(0.0);  // share of the total given back per visit (soft contact: > 0)
 };
+using NormalTarget = NormalTargetOf<double>;
 
 // The normal velocity a rigid row asks for all frame: step 5's desired delta v on top of the separating velocity
 // it was judged on, v_s + desired delta v (the bounce, and Baumgarte's term when it is on).
@@ -149,50 +155,81 @@ IMPULSE_KERNEL Axes row_velocity(const ContactRow& row, const SolverBody* bodies
     return {v.x(), v.y() + row.slip_offset[0], v.z() + row.slip_offset[1]};
 }
 
-// lambda_n after the normal row; `unclamped` receives the total before the push-only clamp.
-IMPULSE_KERNEL double normal_row(double total, double normal_velocity, double normal_mass, const NormalTarget& target,
-                                 double& unclamped) {
+// lambda_n after the normal row; `unclamped` receives the total before the push-only clamp. Over a double (one
+// visit) or four floats (a wide record's four pairs: math/lanes.hpp), lane by lane the same operations.
+template <typename Real>
+IMPULSE_KERNEL Real normal_row(Real total, Real normal_velocity, Real normal_mass, const NormalTargetOf<Real>& target,
+                               Real& unclamped) {
     unclamped =
         total + normal_mass * target.mass_scale * (target.velocity - normal_velocity) - target.impulse_scale * total;
-    return unclamped < 0.0 ? 0.0 : unclamped;
+    return select(unclamped < splat<Real>(0.0), splat<Real>(0.0), unclamped);
 }
 
 // The point of the disc |lambda_t| <= limit nearest (x, y) in K_tt's metric, for (x, y) outside it (see the
 // header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt (x, y), Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
-// `k` is K_tt as (11, 12, 22), `k_inverse` its inverse. Returns the point in (x, y).
-IMPULSE_KERNEL void project_on_cone(const std::array<double, 3>& k, const std::array<double, 3>& k_inverse, double& x,
-                                    double& y, double limit) {
-    const double wx = k[0] * x + k[1] * y, wy = k[1] * x + k[2] * y;  // w = K_tt free
-    const double inverse_limit = 1.0 / limit;
+// K_tt is the row's tangent_response (11, 12, 22), its inverse tangent_mass. Returns the point in (x, y), in the lanes
+// `project` sets.
+// In floats two guards keep Newton's numbers within range (docs/bench.md, "the wide record"): the projection scales
+// with (x, y, limit) and nu does not, so it is solved on them divided by max(|x|, |y|); and a cone smaller than
+// float's precision of the free point takes Newton's limit, nu -> infinity, lambda_t along w.
+template <typename Real, typename Row>
+IMPULSE_KERNEL void project_on_cone(const Row& row, Real& x, Real& y, Real limit, MaskOf<Real> project) {
+    const Real k11 = row.tangent_response[0], k12 = row.tangent_response[1], k22 = row.tangent_response[2];
+    constexpr bool single = !std::is_same_v<Real, double>;
+    const Real one = splat<Real>(1.0);
+    Real size0 = one;
+    if constexpr (single) {
+        const Real ax = select(x < splat<Real>(0.0), -x, x), ay = select(y < splat<Real>(0.0), -y, y);
+        size0 = select(project, select(ax > ay, ax, ay), one);
+        const Real inverse_size0 = one / size0;
+        x = x * inverse_size0;
+        y = y * inverse_size0;
+        limit = select(project, limit * inverse_size0, one);
+    }
+    const Real wx = k11 * x + k12 * y, wy = k12 * x + k22 * y;  // w = K_tt free
+    const Real inverse_limit = one / limit;
     // (K + nu 1)^-1 at nu = 0 is K^-1; after that, its adjugate [[k22 + nu, -k12], [-k12, k11 + nu]] / det.
-    double m00 = k_inverse[0], m01 = k_inverse[1], m11 = k_inverse[2];
-    double nu = 0.0;
+    Real m00 = row.tangent_mass[0], m01 = row.tangent_mass[1], m11 = row.tangent_mass[2];
+    Real nu = splat<Real>(0.0);
+    MaskOf<Real> stepping = project;
+    if constexpr (single) stepping = both(stepping, negated(limit < splat<Real>(0x1p-24)));
     for (int step = 0; step < 16; ++step) {
-        const double size_squared = x * x + y * y;
-        const double size = std::sqrt(size_squared);
-        if (size <= limit * (1.0 + 1e-13)) break;
+        const Real size_squared = x * x + y * y;
+        const Real size = square_root(size_squared);
+        stepping = both(stepping, negated(size <= limit * (one + splat<Real>(Lanes<Real>::projection_tolerance))));
+        if (!any(stepping)) break;
         // Newton on phi = 1/|lambda| - 1/limit, dphi/dnu = lambda . (K + nu 1)^-1 lambda / |lambda|^3:
         // nu += |lambda|^2 (|lambda| / limit - 1) / (lambda . (K + nu 1)^-1 lambda).
-        const double curvature = x * (m00 * x + m01 * y) + y * (m01 * x + m11 * y);
-        nu += size_squared * (size * inverse_limit - 1.0) / curvature;
-        const double a = k[0] + nu, b = k[1], c = k[2] + nu;
-        const double inverse_det = 1.0 / (a * c - b * b);
+        const Real curvature = x * (m00 * x + m01 * y) + y * (m01 * x + m11 * y);
+        nu = select(stepping, nu + size_squared * (size * inverse_limit - one) / curvature, nu);
+        const Real a = k11 + nu, b = k12, c = k22 + nu;
+        const Real inverse_det = one / (a * c - b * b);
         m00 = c * inverse_det, m01 = -b * inverse_det, m11 = a * inverse_det;
-        x = m00 * wx + m01 * wy;
-        y = m01 * wx + m11 * wy;
+        x = select(stepping, m00 * wx + m01 * wy, x);
+        y = select(stepping, m01 * wx + m11 * wy, y);
     }
-    const double scale = limit / std::sqrt(x * x + y * y);  // exactly on the circle
-    x *= scale;
-    y *= scale;
+    if constexpr (single) {
+        const MaskOf<Real> far = both(project, limit < splat<Real>(0x1p-24));
+        x = select(far, wx, x);
+        y = select(far, wy, y);
+    }
+    const Real scale = limit / square_root(x * x + y * y);  // exactly on the circle
+    x = select(project, x * scale, x);
+    y = select(project, y * scale, y);
+    if constexpr (single) {
+        x = x * size0;
+        y = y * size0;
+    }
 }
 
 // One visit's three rows, as plain numbers: the total before, unclamped and after, and the clamps that acted.
-struct RowVisit {
-    Axes before;
-    Axes unclamped;
-    Axes after;
-    bool pushed_only = false;  // the normal total would have pulled
-    bool sliding = false;      // the friction total left the cone
+template <typename Real>
+struct RowVisitOf {
+    AxesOf<Real> before;
+    AxesOf<Real> unclamped;
+    AxesOf<Real> after;
+    MaskOf<Real> pushed_only{};  // the normal total would have pulled
+    MaskOf<Real> sliding{};      // the friction total left the cone
 
     ImpulseClamp clamp() const {
         return pushed_only && sliding ? ImpulseClamp::both
@@ -200,62 +237,77 @@ struct RowVisit {
                : sliding              ? ImpulseClamp::friction
                                       : ImpulseClamp::none;
     }
-    Axes increment() const { return {after.n - before.n, after.t1 - before.t1, after.t2 - before.t2}; }
+    AxesOf<Real> increment() const { return {after.n - before.n, after.t1 - before.t1, after.t2 - before.t2}; }
     // As the trace records it.
     AccumulatedImpulse accumulated() const {
         return {vector_of(before), vector_of(unclamped), vector_of(after), clamp()};
     }
 };
+using RowVisit = RowVisitOf<double>;
 
 // The friction rows (see the header) on the slip (s1, s2) once the normal change acts, from the tangential total
 // (x, y) before, and the cone's radius mu lambda_n: (x, y) becomes lambda_t,free in (free_x, free_y) and the total
-// after in (x, y); returns whether the contact slides (the cone clamped). Plain doubles in and out, so the caller's
-// values stay in registers.
-IMPULSE_KERNEL bool friction_rows(const ContactRow& row, double s1, double s2, double limit, double& free_x,
-                                  double& free_y, double& x, double& y) {
-    const std::array<double, 3>& m = row.tangent_mass;
+// after in (x, y); returns whether the contact slides (the cone clamped). Plain numbers in and out, so the caller's
+// values stay in registers; the row's K_tt^-1 (or its diagonal's inverse) is its tangent_mass.
+template <typename Real, typename Row>
+IMPULSE_KERNEL MaskOf<Real> friction_rows(const Row& row, Real s1, Real s2, Real limit, Real& free_x, Real& free_y,
+                                          Real& x, Real& y) {
+    const auto& m = row.tangent_mass;
     free_x = x - (m[0] * s1 + m[1] * s2);  // lambda_t,free = lambda_t - K_tt^-1 v_t'
     free_y = y - (m[1] * s1 + m[2] * s2);
     x = free_x;
     y = free_y;
-    if (x * x + y * y <= limit * limit) return false;
-    if (limit <= 0.0) {
-        x = y = 0.0;
-    } else if (row.tangent_invertible) {
-        project_on_cone(row.tangent_response, row.tangent_mass, x, y, limit);
-    } else {
-        const double scale = limit / std::sqrt(x * x + y * y);
-        x *= scale;
-        y *= scale;
+    const MaskOf<Real> outside = negated(x * x + y * y <= limit * limit);
+    if (!any(outside)) return outside;
+    const MaskOf<Real> apex = both(outside, limit <= splat<Real>(0.0));  // a point that pushes nothing
+    const MaskOf<Real> on_circle = both(outside, negated(apex));
+    const MaskOf<Real> project = both(on_circle, row.tangent_invertible);
+    const MaskOf<Real> scaled = both(on_circle, negated(row.tangent_invertible));
+    if (any(project)) project_on_cone<Real>(row, x, y, limit, project);
+    if (any(scaled)) {
+        const Real scale = limit / square_root(select(scaled, x * x + y * y, splat<Real>(1.0)));
+        x = select(scaled, x * scale, x);
+        y = select(scaled, y * scale, y);
     }
-    return true;
+    x = select(apex, splat<Real>(0.0), x);
+    y = select(apex, splat<Real>(0.0), y);
+    return outside;
 }
 
 // One visit's three rows on the velocity `velocity` (row_velocity), from the total `before` (the row's, or a kept
-// visit's when the recorder is shown it). The row's total is not changed here.
-IMPULSE_KERNEL RowVisit solve_rows(const ContactRow& row, const Axes& before, const Axes& velocity,
-                                   const NormalTarget& target) {
-    double unclamped_n;
-    const double n = normal_row(before.n, velocity.n, row.normal_mass, target, unclamped_n);
-    double free_x = before.t1, free_y = before.t2, x = 0.0, y = 0.0;
-    bool sliding = false;
-    if (row.friction != 0.0) {
+// visit's when the recorder is shown it). The row's total is not changed here. `Row` is a ContactRow, or a wide
+// record's point (methods/wide_records.hpp: the same fields, four lanes each); a row without friction (mu = 0)
+// keeps no tangential total.
+template <typename Real, typename Row>
+IMPULSE_KERNEL RowVisitOf<Real> solve_rows(const Row& row, const AxesOf<Real>& before, const AxesOf<Real>& velocity,
+                                           const NormalTargetOf<Real>& target) {
+    const Real zero = splat<Real>(0.0);
+    Real unclamped_n;
+    const Real n = normal_row<Real>(before.n, velocity.n, row.normal_mass, target, unclamped_n);
+    Real free_x = before.t1, free_y = before.t2, x = zero, y = zero;
+    MaskOf<Real> sliding{};
+    const MaskOf<Real> has_friction = row.friction != zero;
+    if (any(has_friction)) {
         // The slip once the normal change acts: v_t' = v_t + K_tn (lambda_n after - before).
-        const double change = n - before.n;
-        x = before.t1;
-        y = before.t2;
-        sliding =
-            friction_rows(row, velocity.t1 + row.normal_to_tangent[0] * change,
-                          velocity.t2 + row.normal_to_tangent[1] * change, row.friction * n, free_x, free_y, x, y);
+        const Real change = n - before.n;
+        Real fx, fy, tx = before.t1, ty = before.t2;
+        const MaskOf<Real> slides =
+            friction_rows<Real>(row, velocity.t1 + row.normal_to_tangent[0] * change,
+                                velocity.t2 + row.normal_to_tangent[1] * change, row.friction * n, fx, fy, tx, ty);
+        free_x = select(has_friction, fx, free_x);
+        free_y = select(has_friction, fy, free_y);
+        x = select(has_friction, tx, zero);
+        y = select(has_friction, ty, zero);
+        sliding = both(has_friction, slides);
     }
-    return RowVisit{before, {unclamped_n, free_x, free_y}, {n, x, y}, unclamped_n < 0.0, sliding};
+    return {before, {unclamped_n, free_x, free_y}, {n, x, y}, unclamped_n < zero, sliding};
 }
 
 // The normal row alone (soft step's restitution, the split impulse's pushes): tangential totals unchanged.
 IMPULSE_KERNEL RowVisit solve_normal_row(const ContactRow& row, double normal_velocity, const NormalTarget& target) {
     RowVisit v;
     v.before = v.unclamped = v.after = row.total_impulse;
-    v.after.n = normal_row(v.before.n, normal_velocity, row.normal_mass, target, v.unclamped.n);
+    v.after.n = normal_row<double>(v.before.n, normal_velocity, row.normal_mass, target, v.unclamped.n);
     v.pushed_only = v.unclamped.n < 0.0;
     return v;
 }
@@ -427,6 +479,7 @@ protected:
     std::span<ContactRow> rows_;              // in the order of the visits; each valid once placed
     std::pmr::vector<ContactKey> keys_;       // per moving contact: its key in the ContactMemory
     std::pmr::vector<KeptVisit> kept_;        // per row: its visit in the sweep under way, when the frame is recorded
+    std::pmr::vector<int> colours_;           // per moving contact: its pair's colour (in colours)
 };
 
 }  // namespace impulse

@@ -65,13 +65,16 @@ std::pmr::vector<int> pair_colours(std::span<const Pair> pairs, std::span<const 
 
 std::pmr::vector<std::uint32_t> colour_slots(std::span<const Pair> pairs, std::span<const SolverBody> bodies,
                                              std::pmr::memory_resource* scratch) {
-    const std::pmr::vector<int> colours = pair_colours(pairs, bodies, scratch);
+    return slots_of_colours(pair_colours(pairs, bodies, scratch), scratch);
+}
+
+std::pmr::vector<std::uint32_t> slots_of_colours(std::span<const int> colours, std::pmr::memory_resource* scratch) {
     // A counting sort by colour, the overflow (-1) first: stable, so detection's order stays within a colour.
     std::array<std::uint32_t, colour_count + 1> start{};
     for (const int c : colours) ++start[static_cast<std::size_t>(c + 2)];
     for (std::size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-    std::pmr::vector<std::uint32_t> slots(pairs.size(), 0u, scratch);
-    for (std::size_t r = 0; r < pairs.size(); ++r) slots[r] = start[static_cast<std::size_t>(colours[r] + 1)]++;
+    std::pmr::vector<std::uint32_t> slots(colours.size(), 0u, scratch);
+    for (std::size_t r = 0; r < colours.size(); ++r) slots[r] = start[static_cast<std::size_t>(colours[r] + 1)]++;
     return slots;
 }
 

@@ -37,4 +37,7 @@ std::pmr::vector<int> pair_colours(std::span<const std::array<int, 2>> pairs, st
 std::pmr::vector<std::uint32_t> colour_slots(std::span<const std::array<int, 2>> pairs,
                                              std::span<const SolverBody> bodies, std::pmr::memory_resource* scratch);
 
+// The same from the rows' colours (pair_colours).
+std::pmr::vector<std::uint32_t> slots_of_colours(std::span<const int> colours, std::pmr::memory_resource* scratch);
+
 }  // namespace impulse

@@ -7,10 +7,12 @@
 #include "body/integrate.hpp"
 #include "methods/contact_rows.hpp"
 #include "methods/solver_common.hpp"
+#include "methods/wide_records.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace impulse {
 
@@ -53,7 +55,7 @@ struct SoftBounce {
 class SoftStep : public RowSolver {
 public:
     explicit SoftStep(FrameContext& frame)
-        : RowSolver(frame, frame.settings.soft_step.order == SolveOrder::colours),
+        : RowSolver(frame, frame.settings.soft_step.order != SolveOrder::contacts),
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
           soft_(rows_.size(), frame.scratch),
@@ -81,6 +83,16 @@ public:
             bounce.bounces = !bounce.cutoff_applied;
         });
         recall([this](std::size_t r, const RowVisit& total) { rows_[r].total_impulse = total.after; });
+        if (settings_.soft_step.order == SolveOrder::wide) {
+            // The rows, placed colour by colour, become the wide records (each row's colour from its contact's).
+            std::pmr::vector<int> colour(rows_.size(), 0, frame.scratch);
+            std::pmr::vector<double> p0(rows_.size(), 0.0, frame.scratch);
+            for (std::size_t k = 0; k < moving_.size(); ++k) colour[slots_[k]] = colours_[k];
+            for (std::size_t r = 0; r < rows_.size(); ++r) p0[r] = soft_[r].prepared_penetration;
+            wide_.emplace(rows_, colour, p0, bodies_,
+                          WideSoftness(softness_, settings_.soft_step.max_push_velocity, substep_), frame.scratch);
+            if (frame.keeping) wide_kept_.resize(rows_.size());
+        }
     }
 
     void run() {
@@ -92,9 +104,11 @@ public:
                 bodies_[b].velocity = frame_.bodies[b].velocity;
                 bodies_[b].angular_velocity = frame_.bodies[b].angular_velocity;
             }
+            if (wide_) wide_->load(bodies_);
             warm_start(substep);
             for (int pass = 0; pass < settings_.sweeps && (pass % 64 != 0 || !frame_.stop_requested()); ++pass)
                 sweep<true>({substep, pass, SolverStage::solve});
+            if (wide_) wide_->store(bodies_);
             store_velocities();
             for (RigidBody& body : frame_.bodies) integrate_position(body, substep_, settings_.orientation_update);
             track_moves();
@@ -104,7 +118,13 @@ public:
                     sweep<false, true>({substep, pass, SolverStage::relax});
                 else
                     sweep<false>({substep, pass, SolverStage::relax});
+            if (wide_) wide_->store(bodies_);
             store_velocities();
+        }
+        if (wide_) {  // the totals back into the rows, for restitution and the memory
+            std::pmr::vector<double> most(rows_.size(), 0.0, frame_.scratch);
+            wide_->totals(rows_, most);
+            for (std::size_t r = 0; r < rows_.size(); ++r) soft_[r].most_pushed = most[r];
         }
         // Every sweep visits every row in order, so the last sub-step's last sweep holds each contact's last visit
         // before restitution: stamped for LastTouch once, here (restitution stamps its own).
@@ -125,6 +145,7 @@ private:
             const RigidBody& body = frame_.bodies[b];
             moved_[b] = body.position - start_position_[b];
             turned_[b] = (body.orientation * start_orientation_[b].conjugate()).toRotationMatrix();
+            if (wide_) wide_->track(b, moved_[b], turned_[b]);
         }
     }
 
@@ -135,23 +156,18 @@ private:
         for (int i = 0; i < 2; ++i) {
             if (row.body[i] < 0) continue;
             const auto b = static_cast<std::size_t>(row.body[i]);
-            const Vec3& anchor = row.anchor[i];
-            separated += body_sign(i) * (moved_[b] + (times(turned_[b], anchor) - anchor));
+            separated += body_sign(i) * anchor_move(moved_[b], turned_[b], row.anchor[i]);
         }
         return soft_[r].prepared_penetration - dot(separated, normal_of(row));
     }
 
-    // The soft bias of a point at penetration p for the coming solve and relax (contact_solver.c's three cases),
-    // as the normal velocity each asks for: -bias.
+    // The soft bias of a point at penetration p for the coming solve and relax (soft_step.hpp's soft_aim).
     void aim_at(SoftContact& c, double penetration) const {
-        c.soft = penetration >= 0.0;
-        if (!c.soft) {
-            // Speculative: a gap of -p may close at up to -p / h_s in this sub-step, and no push is asked for.
-            c.solve_velocity = c.relax_velocity = penetration / substep_;
-            return;
-        }
-        c.solve_velocity = -std::max(-softness_.bias_rate * penetration, -settings_.soft_step.max_push_velocity);
-        c.relax_velocity = 0.0;  // relax: the rigid contact, no bias
+        const SoftAimOf<double> aim =
+            soft_aim<double>(penetration, softness_.bias_rate, settings_.soft_step.max_push_velocity, substep_);
+        c.soft = aim.soft;
+        c.solve_velocity = aim.solve_velocity;
+        c.relax_velocity = aim.relax_velocity;
     }
 
     // What a visit of solve (with the soft contact's bias and scales) or relax (rigid, unbiased) asks of row r.
@@ -162,8 +178,15 @@ private:
         return {biased ? c.solve_velocity : c.relax_velocity, 1.0, 0.0};
     }
 
+    // (K lambda)_n: the normal velocity change the total lambda makes at its own contact.
+    static double normal_change(const ContactRow& row, const Axes& total) {
+        return row.normal_response * total.n + row.normal_to_tangent[0] * total.t1 +
+               row.normal_to_tangent[1] * total.t2;
+    }
+
     // Every contact's lambda applied again: the sub-step's velocities start without any contact impulse.
     void warm_start(int substep) {
+        if (wide_) return wide_warm_start(substep);
         KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
         for (std::size_t r = 0; r < rows_.size(); ++r) {
             const ContactRow& row = rows_[r];
@@ -180,9 +203,7 @@ private:
                 const Axes& total = row.total_impulse;  // the warm start's total after, unchanged since
                 RowVisit v;
                 v.unclamped = v.after = total;
-                report(r, {substep, 0, SolverStage::warm_start}, kept[r].velocity, v,
-                       row.normal_response * total.n + row.normal_to_tangent[0] * total.t1 +
-                           row.normal_to_tangent[1] * total.t2,
+                report(r, {substep, 0, SolverStage::warm_start}, kept[r].velocity, v, normal_change(row, total),
                        std::nullopt);
             }
     }
@@ -193,6 +214,7 @@ private:
     // targets they had (a contact's aim changes only at the sweep that finds its p, before its visit).
     template <bool biased, bool moved = false>
     void sweep(const SweepPlace& place) {
+        if (wide_) return wide_sweep<biased, moved>(place);
         KeptVisit* const kept = frame_.keeping ? kept_.data() : nullptr;
         for (std::size_t r = 0; r < rows_.size(); ++r) {
             if constexpr (moved) aim_at(soft_[r], penetration(r));
@@ -211,6 +233,32 @@ private:
                 report(r, place, velocity, solve_rows(rows_[r], kept[r].before, velocity, target),
                        target.velocity - velocity.n, target.velocity);
             }
+    }
+
+    // The same stages in wide records (methods/wide_records.hpp): the visits kept lane by lane when the frame is
+    // recorded, and reported as above after the stage.
+    void wide_warm_start(int substep) {
+        WideVisit* const kept = frame_.keeping ? wide_kept_.data() : nullptr;
+        wide_->warm_start(kept);
+        visits_ += static_cast<int>(rows_.size());
+        if (kept)
+            for (std::size_t r = 0; r < rows_.size(); ++r) {
+                const ContactRow& row = rows_[r];
+                const Axes& total = kept[r].visit.after;
+                report(r, {substep, 0, SolverStage::warm_start}, kept[r].velocity, kept[r].visit,
+                       normal_change(row, total), std::nullopt);
+            }
+    }
+
+    template <bool biased, bool moved>
+    void wide_sweep(const SweepPlace& place) {
+        WideVisit* const kept = frame_.keeping ? wide_kept_.data() : nullptr;
+        wide_->sweep<biased, moved>(kept);
+        visits_ += static_cast<int>(rows_.size());
+        if (kept)
+            for (std::size_t r = 0; r < rows_.size(); ++r)
+                report(r, place, kept[r].velocity, kept[r].visit, kept[r].target_velocity - kept[r].velocity.n,
+                       kept[r].target_velocity);
     }
 
     void restitution(std::size_t r, const SweepPlace& place) {
@@ -264,6 +312,8 @@ private:
     std::pmr::vector<Vec3> moved_;   // per body: its move since the frame began
     std::pmr::vector<Mat3> turned_;  // per body: its turn since the frame began, R = q q0^-1
     int visits_ = 0;
+    std::optional<WideRecords> wide_;                        // the rows four pairs at a time, in `wide` order
+    std::pmr::vector<WideVisit> wide_kept_{frame_.scratch};  // per row: its visit in the stage under way, if recorded
 };
 
 }  // namespace

@@ -14,7 +14,8 @@
 //      get the normal target -c v_n(before);
 //   7. store each lambda in the ContactMemory (world coordinates) when settings.warm_start.
 // Every stage visits the contacts in settings.soft_step.order: as detected, or colour by colour (Box3D's constraint
-// graph, methods/graph_colouring.hpp); the order is fixed for the frame.
+// graph, methods/graph_colouring.hpp), or colour by colour four pairs at a time in single precision (`wide`, Box3D's
+// b3ContactConstraintWide: methods/wide_records.hpp); the order is fixed for the frame.
 //
 // The soft contact (Catto, "Solver2D" and Box2D v3's b2MakeSoft): the contact is a spring of stiffness
 // k = m omega^2 and damper c = 2 m zeta omega on the effective mass m, omega = 2 pi hertz, stepped with implicit
@@ -50,6 +51,7 @@
 // its totals, the velocity it read and desired delta v = target - v_n (a warm start, which has no target: the
 // normal velocity change it makes, (K lambda)_n, from before = 0). Every visit counts as an iteration.
 
+#include "math/lanes.hpp"
 #include "methods/method.hpp"
 #include "settings/settings.hpp"
 
@@ -68,6 +70,32 @@ Softness soft_contact(double hertz, double damping_ratio, double h);
 
 // The soft contact soft step uses for `settings`: hertz capped at a quarter of the sub-step rate.
 Softness soft_step_softness(const ResolverSettings& settings);
+
+// What a point at penetration p asks of the coming solve and relax (contact_solver.c's three cases), as the normal
+// velocity each aims for, -bias. Over a double, or four floats (a wide record's lanes).
+template <typename Real>
+struct SoftAimOf {
+    Real solve_velocity;  // -max(-bias_rate p, -max_push_velocity) when soft, else p / h_s
+    Real relax_velocity;  // 0 when soft (relax: the rigid contact, no bias), else p / h_s
+    MaskOf<Real> soft;    // p >= 0: the solve's target is the soft contact's (else speculative)
+};
+
+template <typename Real>
+IMPULSE_KERNEL SoftAimOf<Real> soft_aim(Real penetration, Real bias_rate, Real max_push_velocity, Real substep) {
+    const MaskOf<Real> soft = penetration >= splat<Real>(0.0);
+    // Speculative: a gap of -p may close at up to -p / h_s in this sub-step, and no push is asked for.
+    const Real speculative = penetration / substep;
+    const Real bias = -bias_rate * penetration, most = -max_push_velocity;
+    const Real pushed = -select(bias < most, most, bias);  // -max(bias, most), as std::max
+    return {select(soft, pushed, speculative), select(soft, splat<Real>(0.0), speculative), soft};
+}
+
+// How far a body's anchor r moved since the frame began, dx + R r - r (R its turn): the term of p's update above.
+template <typename V, typename M>
+IMPULSE_KERNEL V anchor_move(const V& moved, const M& turned, const V& anchor) {
+    const V r = times(turned, anchor);
+    return {moved.x() + (r.x() - anchor.x()), moved.y() + (r.y() - anchor.y()), moved.z() + (r.z() - anchor.z())};
+}
 
 // The method itself is soft_step(FrameContext&) (methods/method_table.hpp): it owns the whole step, moving every
 // body over settings.duration under frame.forces (contacts or not) while it resolves the contacts.

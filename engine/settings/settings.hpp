@@ -45,6 +45,7 @@ enum class SolveOrder {
     contacts,  // as detection listed them: pair by pair, in the broad phase's order
     colours,   // Box3D's constraint graph: colour by colour, no two pairs of a colour sharing a moving body, the pairs
                // with a static body (the ground) in the last colours
+    wide,      // the colours, four pairs at a time in single precision (methods/wide_records.hpp)
 };
 
 // The velocity-level position correction of `baumgarte` (a term of step 5) and of split_impulse (the push's
@@ -166,6 +167,7 @@ inline int iteration_limit(std::optional<int> fixed, const ResolverSettings& set
 //            5 cm (Box3D's 10 linear slops) and turns less than 10 degrees; contacts of 36 Hz, damping ratio 12;
 //            box-box face points kept up to 2 cm outside as speculative points (Box3D's 4 linear slops).
 //   soft_step_coloured  soft_step_recycled with its contacts solved colour by colour (soft_step.order = colours).
+//   soft_step_wide  soft_step_coloured four pairs of a colour at a time, in single precision (soft_step.order = wide).
 //   avbd        augmented vertex block descent: 10 iterations of block solves and dual updates (AvbdSettings).
 std::span<const std::string_view> preset_names();
 // "book", "chapter", ... as one line for error messages.

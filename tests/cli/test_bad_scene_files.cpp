@@ -88,7 +88,7 @@ TEST_CASE("malformed cases are rejected with one line naming the path, exit code
          "contacts[0].restitution: must be <= 1, got 1.5"},
         {"unknown preset", case_with("[" + ruler_body + "]", "[]", R"(, "settings": {"preset": "fast"})"),
          "settings.preset: must be one of \"book\", \"chapter\", \"sweep\", \"pgs\", \"pgs_split\", \"soft_step\", "
-         "\"soft_step_recycled\", \"soft_step_coloured\", \"avbd\"; got "
+         "\"soft_step_recycled\", \"soft_step_coloured\", \"soft_step_wide\", \"avbd\"; got "
          "\"fast\""},
         {"no bodies list", R"({"contacts": []})", "bodies: missing (required)"},
         {"no bodies", case_with("[]", "[]"), "bodies: must have at least 1 item, got 0"},

@@ -125,7 +125,7 @@ TEST_CASE("the help says every value in words, never in CLI11's type names") {
                        "a whole number from 1 to 10000000") != std::string::npos);
     CHECK(all.out.find("--preset PRESET") != std::string::npos);
     CHECK(all.out.find("one of book, chapter, sweep, pgs, pgs_split, soft_step, soft_step_recycled, "
-                       "soft_step_coloured, avbd") != std::string::npos);
+                       "soft_step_coloured, soft_step_wide, avbd") != std::string::npos);
     for (const std::string command : {"resolve", "run", "inspect", "lesson", "validate", "worksheet", "diff", "bench"})
         CHECK_MESSAGE(all.out.find("\nimpulse-lab " + command) != std::string::npos, command);
 }
@@ -141,10 +141,11 @@ TEST_CASE("bad flags get one line naming the flag, exit code 2 and no file") {
     const std::vector<BadFlag> table{
         {{"resolve", ruler, "--preset", "fast"},
          "impulse-lab: --preset: must be one of book, chapter, sweep, pgs, pgs_split, soft_step, soft_step_recycled, "
-         "soft_step_coloured, avbd, got \"fast\"; see impulse-lab resolve --help"},
+         "soft_step_coloured, soft_step_wide, avbd, got \"fast\"; see impulse-lab resolve --help"},
         {{"resolve", ruler, "--preset", "bok"},
          "impulse-lab: --preset: must be one of book, chapter, sweep, pgs, "
-         "pgs_split, soft_step, soft_step_recycled, soft_step_coloured, avbd, got \"bok\" (did you mean book?)"},
+         "pgs_split, soft_step, soft_step_recycled, soft_step_coloured, soft_step_wide, avbd, got \"bok\" (did you "
+         "mean book?)"},
         {{"resolve", ruler, "--set", "position_method=teleport"},
          "impulse-lab: --set position_method: must be one of \"linear_projection\", \"nonlinear_projection\", "
          "\"velocity_based\", \"relaxation\", \"split_impulse\", \"none\"; got \"teleport\""},
@@ -227,7 +228,8 @@ TEST_CASE(
     // does not capture one in doctest's CAPTURE.)
     for (const std::pair<std::string, std::string>& run :
          {std::pair<std::string, std::string>{"soft_step_recycled", R"("recycling")"},
-          std::pair<std::string, std::string>{"soft_step_coloured", R"("order": "colours")"}}) {
+          std::pair<std::string, std::string>{"soft_step_coloured", R"("order": "colours")"},
+          std::pair<std::string, std::string>{"soft_step_wide", R"("order": "wide")"}}) {
         const std::string& preset = run.first;
         const std::string& setting = run.second;
         CAPTURE(preset);

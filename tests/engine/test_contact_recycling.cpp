@@ -201,7 +201,8 @@ TEST_CASE("recycling is off unless switched on, and then every frame detects afr
     CHECK(ResolverSettings{}.recycling.distance == 0.0);
     for (const std::string_view name : preset_names()) {
         CAPTURE(name);
-        CHECK(preset(name)->recycling.on() == (name == "soft_step_recycled" || name == "soft_step_coloured"));
+        CHECK(preset(name)->recycling.on() ==
+              (name == "soft_step_recycled" || name == "soft_step_coloured" || name == "soft_step_wide"));
     }
     // A world under soft_step keeps nothing: each frame's contacts are a fresh test's.
     const Scene scene = test::shipped_under("stack_3", "soft_step");

@@ -6,6 +6,7 @@
 #include "formats/input_error.hpp"
 #include "methods/graph_colouring.hpp"
 #include "preparation/prepared_contact.hpp"
+#include "support/frame_rows.hpp"
 #include "support/simulate.hpp"
 
 #include <doctest/doctest.h>
@@ -108,24 +109,9 @@ TEST_CASE("a body with more neighbours than moving colours sends the rest to the
 }
 
 TEST_CASE("on a pyramid a colour's pairs share no moving body, each row is visited once, its slot sorts it by colour") {
-    const Scene scene = test::shipped_under("pyramid_20", "soft_step_coloured");
-    World world(scene);
-    for (int frame = 0; frame < 30; ++frame) world.step();
-    const Detection detection = detect_contacts(scene, world.bodies());
-    const std::vector<MassProperties> mass = mass_properties(world.bodies());
-    std::pmr::vector<PreparedContact> prepared;
-    prepare_contacts(detection.contacts, world.bodies(), mass, scene.settings, prepared);
-    std::vector<SolverBody> bodies(world.bodies().size());
-    for (std::size_t b = 0; b < bodies.size(); ++b) bodies[b].mass = mass[b];
-    std::vector<ContactRow> rows;
-    for (const PreparedContact& p : prepared) {
-        if (!can_move(p)) continue;
-        ContactRow row;
-        row.basis = Mat3::Identity();
-        row.anchor = {Vec3::Zero(), Vec3::Zero()};
-        fill_contact_row(row, p, bodies.data());
-        rows.push_back(row);
-    }
+    const test::FrameRows frame = test::frame_rows(test::shipped_under("pyramid_20", "soft_step_coloured"), 30);
+    const std::vector<ContactRow>& rows = frame.rows;
+    const std::vector<SolverBody>& bodies = frame.bodies;
     REQUIRE(rows.size() > 100);
     const std::vector<int> colours = colours_of(rows, bodies);
     // Each colour's pairs: a moving body in at most one of them.
@@ -189,7 +175,7 @@ TEST_CASE("a coloured soft step visits a stack's box pairs before its ground pai
     CHECK(test::simulate(in_order, 60) != traced);
 }
 
-TEST_CASE("soft_step.order reads and writes by name, only when it is colours, and names the field when wrong") {
+TEST_CASE("soft_step.order reads and writes by name, only when it is not contacts, and names the field when wrong") {
     ResolverSettings s = *preset("soft_step_recycled");
     CHECK_FALSE(formats::settings_json(s, WorldSettings{})["soft_step"].contains("order"));
     s.soft_step.order = SolveOrder::colours;
@@ -210,4 +196,13 @@ TEST_CASE("soft_step.order reads and writes by name, only when it is colours, an
     coloured.preset = "soft_step_recycled";
     coloured.soft_step.order = SolveOrder::contacts;
     CHECK(coloured == *preset("soft_step_recycled"));
+    // And soft_step_wide is soft_step_coloured in wide records.
+    ResolverSettings wide = *preset("soft_step_wide");
+    CHECK(wide.soft_step.order == SolveOrder::wide);
+    CHECK(formats::settings_json(wide, WorldSettings{})["soft_step"]["order"] == "wide");
+    formats::apply_setting(scene, "soft_step.order=wide", "--set");
+    CHECK(scene.settings.soft_step.order == SolveOrder::wide);
+    wide.preset = "soft_step_coloured";
+    wide.soft_step.order = SolveOrder::colours;
+    CHECK(wide == *preset("soft_step_coloured"));
 }

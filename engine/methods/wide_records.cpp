@@ -1,0 +1,329 @@
+#include "methods/wide_records.hpp"
+
+#include "derivation/contact_velocity.hpp"
+#include "derivation/velocity_change.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <limits>
+
+namespace impulse {
+
+namespace {
+
+constexpr std::uint32_t no_row = std::numeric_limits<std::uint32_t>::max();
+
+// A record's bodies' velocities, lane by lane: body 0 and body 1 of each pair.
+struct Velocities {
+    Vec3x4 v[2], w[2];
+};
+
+void set_lane(Vec3x4& to, int lane, const Vec3& from) {
+    for (int k = 0; k < 3; ++k) to.v[k][lane] = static_cast<float>(from[k]);
+}
+
+Axes lane_of(const AxesOf<Float4>& a, int lane) {
+    return {a.n[lane], a.t1[lane], a.t2[lane]};
+}
+
+template <typename Body>
+IMPULSE_KERNEL const Body& body_of(const RecordX4& record, int side, int lane, const Body* bodies, std::size_t none) {
+    const int b = record.body[side][lane];
+    return bodies[b < 0 ? none : static_cast<std::size_t>(b)];
+}
+
+template <typename Body>
+IMPULSE_KERNEL Velocities gather(const RecordX4& record, const Body* bodies, std::size_t none) {
+    Velocities s;
+    for (int side = 0; side < 2; ++side)
+        for (int lane = 0; lane < 4; ++lane) {
+            const Body& body = body_of(record, side, lane, bodies, none);
+            for (int k = 0; k < 3; ++k) {
+                s.v[side].v[k][lane] = body.velocity[k];
+                s.w[side].v[k][lane] = body.angular_velocity[k];
+            }
+        }
+    return s;
+}
+
+template <typename Body>
+IMPULSE_KERNEL void scatter(const RecordX4& record, Body* bodies, const Velocities& s) {
+    for (int side = 0; side < 2; ++side)
+        for (int lane = 0; lane < 4; ++lane) {
+            const int b = record.body[side][lane];
+            if (b < 0) continue;
+            Body& body = bodies[static_cast<std::size_t>(b)];
+            for (int k = 0; k < 3; ++k) {
+                body.velocity[k] = s.v[side].v[k][lane];
+                body.angular_velocity[k] = s.w[side].v[k][lane];
+            }
+        }
+}
+
+// Step 4 (contact_rows.hpp's row_velocity, lane by lane): body 0's point velocity less body 1's, in the contact's
+// axes.
+IMPULSE_KERNEL AxesOf<Float4> contact_velocity(const Velocities& s, const PointX4& point) {
+    const Vec3x4 p0 = point_velocity_of<Vec3x4>(s.v[0], s.w[0], point.anchor[0]);
+    const Vec3x4 p1 = point_velocity_of<Vec3x4>(s.v[1], s.w[1], point.anchor[1]);
+    const Vec3x4 v = transposed_times(point.basis, Vec3x4{p0.x() - p1.x(), p0.y() - p1.y(), p0.z() - p1.z()});
+    return {v.x(), v.y(), v.z()};
+}
+
+// Step 7 (contact_rows.hpp's apply_impulse, lane by lane): the contact-axes impulse `a` as g = C a, +g to body 0 at
+// its anchor and -g to body 1 at its.
+IMPULSE_KERNEL void apply(const RecordX4& record, const PointX4& point, Velocities& s, const AxesOf<Float4>& a) {
+    const Vec3x4 impulse = times(point.basis, Vec3x4{a.n, a.t1, a.t2});
+    const Vec3x4 opposite{-impulse.x(), -impulse.y(), -impulse.z()};
+    for (int side = 0; side < 2; ++side) {
+        const BodyVelocityChangeOf<Vec3x4> c =
+            body_velocity_change_of<Vec3x4>(side == 0 ? impulse : opposite, point.anchor[side],
+                                            record.inverse_mass[side], record.inverse_inertia[side]);
+        for (int k = 0; k < 3; ++k) {
+            s.v[side].v[k] += c.velocity_change.v[k];
+            s.w[side].v[k] += c.rotation_change.v[k];
+        }
+    }
+}
+
+// Keeps `after` as the point's total and its largest lambda_n (std::max's choice, lane by lane).
+IMPULSE_KERNEL void keep_total(PointX4& point, const AxesOf<Float4>& after) {
+    point.total.n = after.n;
+    point.total.t1 = after.t1;
+    point.total.t2 = after.t2;
+    point.most_pushed = select(point.most_pushed < after.n, after.n, point.most_pushed);
+}
+
+}  // namespace
+
+WideSoftness::WideSoftness(const Softness& s, double max_push, double h)
+    : bias_rate(splat<Float4>(s.bias_rate)),
+      mass_scale(splat<Float4>(s.mass_scale)),
+      impulse_scale(splat<Float4>(s.impulse_scale)),
+      max_push_velocity(splat<Float4>(max_push)),
+      substep(splat<Float4>(h)) {}
+
+WideRecords::WideRecords(std::span<const ContactRow> rows, std::span<const int> colour,
+                         std::span<const double> prepared_penetration, std::span<const SolverBody> bodies,
+                         const WideSoftness& softness, std::pmr::memory_resource* scratch)
+    : softness_(softness),
+      records_(scratch),
+      points_(scratch),
+      place_(rows.size(), 0u, scratch),
+      row_of_(scratch),
+      bodies_(bodies.size() + 1, Body{}, scratch),
+      loaded_(scratch) {
+    // A pair: a run of rows with the same bodies (place_rows puts a pair's contacts side by side).
+    struct Pair {
+        std::uint32_t first, count;
+    };
+    const auto add_record = [&](std::span<const Pair> lanes) {
+        RecordX4 record{};
+        std::uint32_t most = 0;
+        for (const Pair& pair : lanes) most = std::max(most, pair.count);
+        record.first_point = static_cast<std::uint32_t>(points_.size());
+        record.point_count = most;
+        points_.resize(points_.size() + most, PointX4{});
+        row_of_.resize(points_.size() * 4, no_row);
+        for (int lane = 0; lane < 4; ++lane) {
+            record.body[0][lane] = record.body[1][lane] = -1;
+            if (static_cast<std::size_t>(lane) >= lanes.size()) continue;
+            const Pair& pair = lanes[static_cast<std::size_t>(lane)];
+            for (std::size_t side = 0; side < 2; ++side) {
+                const int b = rows[pair.first].body[side];
+                record.body[side][lane] = b;
+                if (b < 0) continue;
+                const MassProperties& mass = bodies[static_cast<std::size_t>(b)].mass;
+                record.inverse_mass[side][lane] = static_cast<float>(mass.inverse_mass);
+                const Mat3& i = mass.inverse_inertia_world;
+                const double e[6] = {i(0, 0), i(0, 1), i(0, 2), i(1, 1), i(1, 2), i(2, 2)};
+                for (int k = 0; k < 6; ++k) record.inverse_inertia[side].e[k][lane] = static_cast<float>(e[k]);
+            }
+            for (std::uint32_t p = 0; p < pair.count; ++p) {
+                const std::uint32_t r = pair.first + p;
+                const ContactRow& row = rows[r];
+                const std::uint32_t q = record.first_point + p;
+                PointX4& point = points_[q];
+                place_[r] = q * 4 + static_cast<std::uint32_t>(lane);
+                row_of_[q * 4 + static_cast<std::uint32_t>(lane)] = r;
+                for (std::size_t side = 0; side < 2; ++side) set_lane(point.anchor[side], lane, row.anchor[side]);
+                for (int c = 0; c < 3; ++c) set_lane(point.basis.column[c], lane, row.basis.col(c));
+                point.normal_mass[lane] = static_cast<float>(row.normal_mass);
+                point.friction[lane] = static_cast<float>(row.friction);
+                for (int k = 0; k < 2; ++k)
+                    point.normal_to_tangent[k][lane] = static_cast<float>(row.normal_to_tangent[k]);
+                for (int k = 0; k < 3; ++k) {
+                    point.tangent_response[k][lane] = static_cast<float>(row.tangent_response[k]);
+                    point.tangent_mass[k][lane] = static_cast<float>(row.tangent_mass[k]);
+                }
+                point.tangent_invertible[lane] = row.tangent_invertible ? -1 : 0;
+                point.prepared_penetration[lane] = static_cast<float>(prepared_penetration[r]);
+                point.total.n[lane] = static_cast<float>(row.total_impulse.n);
+                point.total.t1[lane] = static_cast<float>(row.total_impulse.t1);
+                point.total.t2[lane] = static_cast<float>(row.total_impulse.t2);
+            }
+        }
+        for (std::uint32_t p = 0; p < most; ++p) {
+            PointX4& point = points_[record.first_point + p];
+            point.aim = soft_aim<Float4>(point.prepared_penetration, softness_.bias_rate, softness_.max_push_velocity,
+                                         softness_.substep);
+        }
+        records_.push_back(record);
+    };
+    points_.reserve(rows.size());
+    records_.reserve(rows.size());
+    Pair lanes[4];
+    std::size_t filled = 0;
+    std::size_t r = 0;
+    while (r < rows.size()) {
+        std::size_t end = r + 1;
+        while (end < rows.size() && colour[end] == colour[r] && rows[end].body == rows[r].body) ++end;
+        const Pair pair{static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(end - r)};
+        if (colour[r] < 0 || pair.count > 4) {
+            // On its own, four points at a time: the overflow's pairs may share bodies, and a lane holds four points.
+            for (std::uint32_t k = 0; k < pair.count; k += 4) {
+                const Pair part{pair.first + k, std::min<std::uint32_t>(4, pair.count - k)};
+                add_record({&part, 1});
+            }
+        } else {
+            lanes[filled++] = pair;
+        }
+        // A record is full at four pairs, and ends with its colour.
+        if (filled == 4 || (filled > 0 && (end == rows.size() || colour[end] != colour[r]))) {
+            add_record({lanes, filled});
+            filled = 0;
+        }
+        r = end;
+    }
+}
+
+void WideRecords::load(std::span<const SolverBody> bodies) {
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+        for (int k = 0; k < 3; ++k) {
+            bodies_[b].velocity[k] = static_cast<float>(bodies[b].velocity[k]);
+            bodies_[b].angular_velocity[k] = static_cast<float>(bodies[b].angular_velocity[k]);
+        }
+    loaded_.assign(bodies_.begin(), bodies_.end());
+}
+
+// The change in floats, added in doubles: a body no visit changed keeps its double velocities' bits.
+void WideRecords::store(std::span<SolverBody> bodies) {
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+        for (int k = 0; k < 3; ++k) {
+            bodies[b].velocity[k] += double(bodies_[b].velocity[k]) - double(loaded_[b].velocity[k]);
+            bodies[b].angular_velocity[k] +=
+                double(bodies_[b].angular_velocity[k]) - double(loaded_[b].angular_velocity[k]);
+            loaded_[b].velocity[k] = bodies_[b].velocity[k];
+            loaded_[b].angular_velocity[k] = bodies_[b].angular_velocity[k];
+        }
+}
+
+void WideRecords::track(std::size_t body, const Vec3& moved, const Mat3& turned) {
+    for (int i = 0; i < 3; ++i) {
+        bodies_[body].moved[i] = static_cast<float>(moved[i]);
+        for (int j = 0; j < 3; ++j) bodies_[body].turned[3 * j + i] = static_cast<float>(turned(i, j));
+    }
+}
+
+void WideRecords::warm_start(WideVisit* kept) {
+    if (kept)
+        warm_start_records<true>(kept);
+    else
+        warm_start_records<false>(nullptr);
+}
+
+template <bool biased, bool moved>
+void WideRecords::sweep(WideVisit* kept) {
+    if (kept)
+        sweep_records<biased, moved, true>(kept);
+    else
+        sweep_records<biased, moved, false>(nullptr);
+}
+
+template void WideRecords::sweep<true, false>(WideVisit*);
+template void WideRecords::sweep<false, false>(WideVisit*);
+template void WideRecords::sweep<false, true>(WideVisit*);
+
+template <bool keeping>
+void WideRecords::warm_start_records(WideVisit* kept) {
+    const std::size_t none = bodies_.size() - 1;
+    for (const RecordX4& record : records_) {
+        Velocities s = gather(record, bodies_.data(), none);
+        for (std::uint32_t p = 0; p < record.point_count; ++p) {
+            const std::uint32_t q = record.first_point + p;
+            PointX4& point = points_[q];
+            if constexpr (keeping)
+                for (int lane = 0; lane < 4; ++lane)
+                    if (const std::uint32_t r = row_of_[q * 4 + static_cast<std::uint32_t>(lane)]; r != no_row) {
+                        kept[r].velocity = lane_of(contact_velocity(s, point), lane);
+                        kept[r].visit = RowVisit{};  // from 0: the total counts what this sub-step has applied
+                        kept[r].visit.unclamped = kept[r].visit.after = lane_of(point.total, lane);
+                    }
+            apply(record, point, s, point.total);
+            keep_total(point, point.total);
+        }
+        scatter(record, bodies_.data(), s);
+    }
+}
+
+template <bool biased, bool moved, bool keeping>
+void WideRecords::sweep_records(WideVisit* kept) {
+    const std::size_t none = bodies_.size() - 1;
+    const Float4 one = splat<Float4>(1.0), zero = splat<Float4>(0.0);
+    for (const RecordX4& record : records_) {
+        Velocities s = gather(record, bodies_.data(), none);
+        Vec3x4 moved_by[2];
+        Mat3x4 turned_by[2];
+        if constexpr (moved)
+            for (int side = 0; side < 2; ++side)
+                for (int lane = 0; lane < 4; ++lane) {
+                    const Body& body = body_of(record, side, lane, bodies_.data(), none);
+                    for (int i = 0; i < 3; ++i) {
+                        moved_by[side].v[i][lane] = body.moved[i];
+                        for (int j = 0; j < 3; ++j) turned_by[side].column[j].v[i][lane] = body.turned[3 * j + i];
+                    }
+                }
+        for (std::uint32_t p = 0; p < record.point_count; ++p) {
+            const std::uint32_t q = record.first_point + p;
+            PointX4& point = points_[q];
+            if constexpr (moved) {
+                // p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)]; a static body's move is zero.
+                const Vec3x4 m0 = anchor_move(moved_by[0], turned_by[0], point.anchor[0]);
+                const Vec3x4 m1 = anchor_move(moved_by[1], turned_by[1], point.anchor[1]);
+                const Vec3x4 separated{m0.x() - m1.x(), m0.y() - m1.y(), m0.z() - m1.z()};
+                point.aim = soft_aim<Float4>(point.prepared_penetration - dot(separated, point.basis.column[0]),
+                                             softness_.bias_rate, softness_.max_push_velocity, softness_.substep);
+            }
+            const AxesOf<Float4> velocity = contact_velocity(s, point);
+            // soft_step.cpp's target_of, lane by lane.
+            NormalTargetOf<Float4> target;
+            if constexpr (biased)
+                target = {point.aim.solve_velocity, select(point.aim.soft, softness_.mass_scale, one),
+                          select(point.aim.soft, softness_.impulse_scale, zero)};
+            else
+                target = {point.aim.relax_velocity, one, zero};
+            const RowVisitOf<Float4> v = solve_rows<Float4>(point, point.total, velocity, target);
+            apply(record, point, s, v.increment());
+            keep_total(point, v.after);
+            if constexpr (keeping)
+                for (int lane = 0; lane < 4; ++lane)
+                    if (const std::uint32_t r = row_of_[q * 4 + static_cast<std::uint32_t>(lane)]; r != no_row)
+                        kept[r] = {lane_of(velocity, lane),
+                                   {lane_of(v.before, lane), lane_of(v.unclamped, lane), lane_of(v.after, lane),
+                                    v.pushed_only[lane] != 0, v.sliding[lane] != 0},
+                                   target.velocity[lane]};
+        }
+        scatter(record, bodies_.data(), s);
+    }
+}
+
+void WideRecords::totals(std::span<ContactRow> rows, std::span<double> most_pushed) const {
+    for (std::size_t r = 0; r < rows.size(); ++r) {
+        const std::uint32_t at = place_[r];
+        const PointX4& point = points_[at / 4];
+        const int lane = static_cast<int>(at % 4);
+        rows[r].total_impulse = lane_of(point.total, lane);
+        most_pushed[r] = std::max(most_pushed[r], double(point.most_pushed[lane]));
+    }
+}
+
+}  // namespace impulse

@@ -1,0 +1,113 @@
+#pragma once
+// Soft step's visits four pairs at a time, in single precision: the order `soft_step.order = wide` (Box3D's
+// b3ContactConstraintWide, contact_solver.c). The pairs of a colour (methods/graph_colouring.hpp) share no moving
+// body, so four of them are solved side by side, one in each lane of a 4-float register: a record holds four pairs,
+// gathers their bodies' velocities once, visits every point of the four on them and writes them back once.
+//
+// A lane does what a visit of methods/contact_rows.hpp does, by the same functions: step 4's point velocity
+// (derivation/contact_velocity.hpp), the rows (solve_rows, over four floats: a point here has a ContactRow's fields,
+// four lanes each), step 7's velocity change (derivation/velocity_change.hpp), soft step's aim and anchor move
+// (methods/soft_step.hpp); the products sum in math/products.hpp's order. The lanes never mix, so a pair gets the
+// same numbers in a record of four as alone. Single precision needs two guards, both in the rows (the cone's
+// projection, contact_rows.hpp), and one here: a body's velocity change is added to its double velocities, so a
+// body no contact moved keeps its bits (docs/bench.md, "Four pairs at a time in single precision").
+//
+// The overflow's pairs (colour -1, which may share bodies) and pairs of more than four points get records of their
+// own, one lane, four points at a time. When the recorder keeps the frame every lane's visit is kept, in doubles, for
+// the method to report after the sweep (WideVisit): the kernel with the keeping compiled in, the same operations.
+
+#include "math/lanes.hpp"
+#include "methods/contact_rows.hpp"
+#include "methods/soft_step.hpp"
+
+#include <cstdint>
+#include <memory_resource>
+#include <span>
+#include <vector>
+
+namespace impulse {
+
+// Point p of four pairs, lane by lane: what a visit reads, by ContactRow's names, and the total it keeps. A lane with
+// no point p is zero throughout, so its visit applies nothing.
+struct PointX4 {
+    Vec3x4 anchor[2];  // r_i (zero for a static body)
+    Mat3x4 basis;      // step 1's contact_to_world
+    Float4 normal_mass, friction;
+    Float4 normal_to_tangent[2];  // K_tn
+    Float4 tangent_response[3];   // K_tt (11, 12, 22)
+    Float4 tangent_mass[3];       // K_tt^-1 (11, 12, 22)
+    Mask4 tangent_invertible;
+    Float4 prepared_penetration;  // p0
+    SoftAimOf<Float4> aim;
+    AxesOf<Float4> total;  // lambda
+    Float4 most_pushed;    // the largest lambda_n this frame
+};
+
+// Four pairs: their bodies (-1: a static body, or an empty lane), masses and points.
+struct RecordX4 {
+    std::int32_t body[2][4];
+    Float4 inverse_mass[2];
+    SymmetricMat3x4 inverse_inertia[2];  // I^-1 (world)
+    std::uint32_t first_point, point_count;
+};
+
+// A lane's visit as the recorder is shown it: the velocity it read, its totals, the normal velocity it aimed for.
+struct WideVisit {
+    Axes velocity;
+    RowVisit visit;
+    double target_velocity = 0.0;
+};
+
+// The soft contact's numbers for a sweep, in each lane.
+struct WideSoftness {
+    Float4 bias_rate, mass_scale, impulse_scale, max_push_velocity, substep;
+    WideSoftness(const Softness& softness, double max_push_velocity, double substep);
+};
+
+class WideRecords {
+public:
+    // `rows` in colour order with their `colour` (-1: the overflow), p0 of each, their bodies.
+    WideRecords(std::span<const ContactRow> rows, std::span<const int> colour,
+                std::span<const double> prepared_penetration, std::span<const SolverBody> bodies,
+                const WideSoftness& softness, std::pmr::memory_resource* scratch);
+
+    // The bodies' velocities in, and each body's change since back out, added to its double velocities.
+    void load(std::span<const SolverBody> bodies);
+    void store(std::span<SolverBody> bodies);
+    // A body's move and turn since the frame began, for the next sweep that finds p.
+    void track(std::size_t body, const Vec3& moved, const Mat3& turned);
+
+    // Every total applied again. `kept` (per row, when the frame is recorded): the velocity each visit read and the
+    // total it applied.
+    void warm_start(WideVisit* kept);
+    // One sweep of solve (biased) or relax; `moved`: each point's p found first. `kept` as above.
+    template <bool biased, bool moved>
+    void sweep(WideVisit* kept);
+
+    // Each row's total and its largest lambda_n, in doubles.
+    void totals(std::span<ContactRow> rows, std::span<double> most_pushed) const;
+
+    std::size_t record_count() const { return records_.size(); }
+
+private:
+    template <bool keeping>
+    void warm_start_records(WideVisit* kept);
+    template <bool biased, bool moved, bool keeping>
+    void sweep_records(WideVisit* kept);
+
+    WideSoftness softness_;
+    std::pmr::vector<RecordX4> records_;
+    std::pmr::vector<PointX4> points_;
+    std::pmr::vector<std::uint32_t> place_;   // per row: its point quad * 4 + its lane
+    std::pmr::vector<std::uint32_t> row_of_;  // per point quad * 4 + lane: its row, or none (an empty lane)
+    struct Body {
+        float velocity[3];
+        float angular_velocity[3];
+        float moved[3];
+        float turned[9];  // by columns, as Mat3x4
+    };
+    std::pmr::vector<Body> bodies_;  // the last: the static body, zero throughout
+    std::pmr::vector<Body> loaded_;  // as loaded, or last stored
+};
+
+}  // namespace impulse

@@ -1,0 +1,113 @@
+// Soft step's wide records (methods/wide_records.hpp, soft_step.order = wide): four pairs of a colour side by side,
+// one in each lane, give each pair the numbers it gets alone, and keeping the visits for the recorder changes none.
+// (The preset soft_step_wide runs in every test that takes each preset: recorded and unrecorded runs bit for bit,
+// the textbook checks, the browser's traces.)
+
+#include "methods/graph_colouring.hpp"
+#include "methods/soft_step.hpp"
+#include "methods/wide_records.hpp"
+#include "support/frame_rows.hpp"
+#include "support/simulate.hpp"
+
+#include <doctest/doctest.h>
+
+#include <memory_resource>
+#include <vector>
+
+using namespace impulse;
+
+namespace {
+
+struct WideOutcome {
+    std::vector<Axes> totals;
+    std::vector<double> most_pushed;
+    std::vector<SolverBody> bodies;
+    std::vector<WideVisit> kept;  // the last sweep's visits, when kept
+};
+
+// One sub-step as soft step runs it: warm start, a solve sweep, the bodies moved (by their velocities over h, turned
+// about a fixed axis), a relax sweep that finds p and one that does not.
+WideOutcome wide_substep(const test::FrameRows& frame, std::span<const int> colour, const WideSoftness& softness,
+                         double h, bool keeping) {
+    WideRecords records(frame.rows, colour, frame.penetration, frame.bodies, softness, std::pmr::new_delete_resource());
+    WideOutcome out;
+    out.bodies = frame.bodies;
+    out.kept.resize(frame.rows.size());
+    WideVisit* const kept = keeping ? out.kept.data() : nullptr;
+    records.load(out.bodies);
+    records.warm_start(kept);
+    records.sweep<true, false>(kept);
+    records.store(out.bodies);
+    for (std::size_t b = 0; b < out.bodies.size(); ++b)
+        records.track(b, out.bodies[b].velocity * h, Mat3(Eigen::AngleAxisd(0.01 * double(b % 3), Vec3::UnitY())));
+    records.sweep<false, true>(kept);
+    records.sweep<false, false>(kept);
+    records.store(out.bodies);
+    std::vector<ContactRow> rows = frame.rows;
+    out.most_pushed.assign(rows.size(), 0.0);
+    records.totals(rows, out.most_pushed);
+    for (const ContactRow& row : rows) out.totals.push_back(row.total_impulse);
+    return out;
+}
+
+bool same_axes(const Axes& a, const Axes& b) {
+    return a.n == b.n && a.t1 == b.t1 && a.t2 == b.t2;
+}
+
+}  // namespace
+
+TEST_CASE("a pair gets the same numbers in a wide record of four pairs as in one of its own, kept or not") {
+    const Scene scene = test::shipped_under("pyramid_20", "soft_step_wide");
+    test::FrameRows detected = test::frame_rows(scene, 30);
+    // The rows in colour order, as soft step places them.
+    std::vector<std::array<int, 2>> pairs;
+    for (const ContactRow& row : detected.rows) pairs.push_back(row.body);
+    const std::pmr::vector<int> colours = pair_colours(pairs, detected.bodies, std::pmr::new_delete_resource());
+    const std::pmr::vector<std::uint32_t> slots = slots_of_colours(colours, std::pmr::new_delete_resource());
+    test::FrameRows frame = detected;
+    std::vector<int> colour(detected.rows.size());
+    for (std::size_t k = 0; k < slots.size(); ++k) {
+        frame.rows[slots[k]] = detected.rows[k];
+        frame.penetration[slots[k]] = detected.penetration[k];
+        colour[slots[k]] = colours[k];
+    }
+    REQUIRE(frame.rows.size() > 100);
+    for (const int c : colour) REQUIRE(c >= 0);  // no overflow: every pair could share a record
+    // Each pair a colour of its own: a record each.
+    std::vector<int> alone(colour.size());
+    for (std::size_t r = 1; r < alone.size(); ++r)
+        alone[r] = alone[r - 1] + (frame.rows[r].body != frame.rows[r - 1].body || colour[r] != colour[r - 1]);
+    const double h = scene.settings.duration / scene.settings.soft_step.substeps;
+    const WideSoftness softness(soft_step_softness(scene.settings), scene.settings.soft_step.max_push_velocity, h);
+    const std::size_t pair_count = static_cast<std::size_t>(alone.back() + 1);
+    CHECK(WideRecords(frame.rows, colour, frame.penetration, frame.bodies, softness, std::pmr::new_delete_resource())
+              .record_count() < pair_count / 3);
+    CHECK(WideRecords(frame.rows, alone, frame.penetration, frame.bodies, softness, std::pmr::new_delete_resource())
+              .record_count() == pair_count);
+
+    const WideOutcome four = wide_substep(frame, colour, softness, h, false);
+    const WideOutcome one = wide_substep(frame, alone, softness, h, false);
+    const WideOutcome kept = wide_substep(frame, colour, softness, h, true);
+    std::size_t pushing = 0, sliding = 0;
+    for (std::size_t r = 0; r < frame.rows.size(); ++r) {
+        CAPTURE(r);
+        CHECK(same_axes(four.totals[r], one.totals[r]));
+        CHECK(four.most_pushed[r] == one.most_pushed[r]);
+        CHECK(same_axes(four.totals[r], kept.totals[r]));
+        // The visit kept is the last one: its total after is the row's.
+        CHECK(same_axes(kept.kept[r].visit.after, kept.totals[r]));
+        pushing += four.totals[r].n > 0.0;
+        sliding += kept.kept[r].visit.sliding;
+    }
+    for (std::size_t b = 0; b < frame.bodies.size(); ++b) {
+        CAPTURE(b);
+        CHECK(four.bodies[b].velocity == one.bodies[b].velocity);
+        CHECK(four.bodies[b].angular_velocity == one.bodies[b].angular_velocity);
+        CHECK(four.bodies[b].velocity == kept.bodies[b].velocity);
+        CHECK(four.bodies[b].angular_velocity == kept.bodies[b].angular_velocity);
+    }
+    // The rows did something: most push, and the turn made some slide (the projection's lanes stepped).
+    CHECK(pushing > frame.rows.size() / 2);
+    CHECK(sliding > frame.rows.size() / 10);
+    MESSAGE("rows ", frame.rows.size(), ", pairs ", pair_count, ", pushing ", pushing, ", sliding ", sliding);
+}

@@ -259,12 +259,13 @@ void add_bench(CLI::App& app, BenchOptions& o, FlagCatalog& c) {
                              "Without --scenes: the default suite (default) or the large suite (" + large +
                                  "), minutes a configuration"),
            c, {"default", "large"}, "SUITE");
-    std::string engines;
+    std::string engines, methods;
     for (const bench::EngineRow& e : bench::built_engines()) engines += std::string(", ") + std::string(e.name);
+    for (const std::string& m : bench::default_methods()) methods += (methods.empty() ? "" : ", ") + m;
     bench
         ->add_option("--methods", o.methods,
-                     "Presets or other engines, comma-separated (default: book, sweep, pgs, pgs_split, soft_step" +
-                         engines + "; engines in this build: " + (engines.empty() ? "none" : engines.substr(2)) + ")")
+                     "Presets or other engines, comma-separated (default: " + methods +
+                         "; engines in this build: " + (engines.empty() ? "none" : engines.substr(2)) + ")")
         ->type_name("LIST");
     bench
         ->add_option("--iterations", o.iterations,

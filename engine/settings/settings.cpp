@@ -72,8 +72,8 @@ std::optional<ResolverSettings> preset(std::string_view name) {
         // favoured, so the large pyramid's top stays within 5 cm sideways; a chain's support then climbs two links a
         // sweep, not all of them, and stacks settle slower at N = 4 (docs/bench.md, "Solve order").
         if (name == "soft_step_coloured") s.soft_step.order = SolveOrder::colours;
-        // And four pairs of a colour at a time in single precision (Box3D's wide constraints): the large pyramid's
-        // velocity stage a third faster, held as in colours (docs/bench.md, "Four pairs at a time").
+        // And four pairs of a colour at a time in single precision (Box3D's wide constraints): the large pyramid's run
+        // in about three quarters of colours' time, held as in colours (docs/bench.md, "Four pairs at a time").
         if (name == "soft_step_wide") s.soft_step.order = SolveOrder::wide;
         return s;
     }

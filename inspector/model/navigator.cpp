@@ -32,17 +32,24 @@ StepTable choice_table(const char* what, int iteration, int contact, double valu
     const std::string count = std::to_string(iteration), chosen = std::to_string(contact);
     if (sweep) {
         const std::string place = explain::sweep_text(*sweep, settings);
+        // Soft step's order (soft_step.order): the contacts as detected, or colour by colour, or a colour's pairs four
+        // at a time side by side (methods/graph_colouring.hpp, methods/wide_records.hpp).
+        const bool soft_step = settings.velocity_method == VelocityMethod::soft_step;
+        const SolveOrder order = soft_step ? settings.soft_step.order : SolveOrder::contacts;
+        const char* const formula = order == SolveOrder::contacts  ? "next in index order"
+                                    : order == SolveOrder::colours ? "next in colour order"
+                                                                   : "next in colour order, four pairs side by side";
+        const char* const meaning =
+            order == SolveOrder::contacts ? "a sweep visits every contact in turn, whatever its value"
+            : order == SolveOrder::colours
+                ? "a sweep visits every contact once, colour by colour (no two pairs of a colour share a moving body), "
+                  "whatever its value"
+                : "a sweep visits every contact once, colour by colour, four of a colour's pairs at a time in single "
+                  "precision, whatever its value";
         std::vector<Row> rows{
             {"iteration", count, "", "", "contact visits count from 0 within the phase", {}, "iteration", count},
             {"sweep", place, "", "", explain::sweep_meaning(sweep->stage), {}, "sweep", place},
-            {"contact",
-             chosen,
-             "next in index order",
-             "",
-             "a sweep visits every contact in turn, whatever its value",
-             {},
-             "contact",
-             chosen},
+            {"contact", chosen, formula, "", meaning, {}, "contact", chosen},
             {what, v, "", "", "its value now, after the visits before this one", {}, what, v_exact},
         };
         return {std::string(formats::words::step::choice), "choice — " + place + " visits contact " + chosen,

@@ -8,9 +8,9 @@
 // (derivation/contact_velocity.hpp), the rows (solve_rows, over four floats: a point here has a ContactRow's fields,
 // four lanes each), step 7's velocity change (derivation/velocity_change.hpp), soft step's aim and anchor move
 // (methods/soft_step.hpp); the products sum in math/products.hpp's order. The lanes never mix, so a pair gets the
-// same numbers in a record of four as alone. Single precision needs two guards, both in the rows (the cone's
-// projection, contact_rows.hpp), and one here: a body's velocity change is added to its double velocities, so a
-// body no contact moved keeps its bits (docs/bench.md, "Four pairs at a time in single precision").
+// same numbers in a record of four as alone. Single precision needs three guards: two in the cone's projection
+// (contact_rows.hpp), and one here: a body's velocity change is added to its double velocities, so a body no
+// contact moved keeps its bits (docs/bench.md, "Four pairs at a time in single precision").
 //
 // The overflow's pairs (colour -1, which may share bodies) and pairs of more than four points get records of their
 // own, one lane, four points at a time. When the recorder keeps the frame every lane's visit is kept, in doubles, for

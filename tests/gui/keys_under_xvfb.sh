@@ -5,27 +5,25 @@
 set -euo pipefail
 program=$1
 case_file=$2
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cat > "$work/drive.sh" <<DRIVE
 #!/usr/bin/env bash
 set -euo pipefail
 cd "$work"
-"$program" inspect "$case_file" --size 1280x800 2> stderr &
-pid=\$!
-# Generous waits: under CI's load (two cores, two tests at a time) the first frames can take a second.
-for i in \$(seq 150); do win=\$(xdotool search --onlyvisible --name "Impulse Lab" 2>/dev/null | head -1) && [ -n "\$win" ] && break; sleep 0.1; done
-sleep 1.5
-for key in Right Right Right Down Next Right; do xdotool key --window "\$win" "\$key"; sleep 0.4; done
+source "$here/window_keys.sh"
+start_window stderr "$program" inspect "$case_file" --size 1280x800
+for key in Right Right Right Down Next Right; do press "\$key"; done
 sleep 0.5
 # The Export panel's second button, "Export table", at the layout's place for a 1280x800 window.
-xdotool mousemove --window "\$win" 930 760 click 1
-for i in \$(seq 150); do [ -s table.csv ] && break; sleep 0.1; done
-kill \$pid
-wait \$pid || true
+window_alive "before the click on Export table"
+xdotool mousemove --window "\$window_id" 930 760 click 1
+wait_for_file table.csv "exported table"
+stop_window
 DRIVE
 chmod +x "$work/drive.sh"
-xvfb-run -a -s "-screen 0 1600x1000x24" "$work/drive.sh"
+"$here/xvfb.sh" 1600x1000 "$work/drive.sh"
 test -s "$work/table.csv" || { echo "no table exported"; cat "$work/stderr"; exit 1; }
 # The highlighted rows are the velocity phase's contact_velocity, after its choice step.
 grep -q '^choice,contact,0,' "$work/table.csv" || { echo "not the velocity phase's first iteration"; cat "$work/table.csv"; exit 1; }

@@ -5,6 +5,7 @@
 set -euo pipefail
 program=$1
 case_file=$2
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/course" "$work/config"
@@ -39,26 +40,23 @@ cat > "$work/drive.sh" <<DRIVE
 #!/usr/bin/env bash
 set -euo pipefail
 cd "$work"
-XDG_CONFIG_HOME="$work/config" "$program" lesson 1 --lessons "$work/course" --size 1280x800 2> stderr &
-pid=\$!
-for i in \$(seq 150); do win=\$(xdotool search --onlyvisible --name "Impulse Lab" 2>/dev/null | head -1) && [ -n "\$win" ] && break; sleep 0.1; done
-sleep 1.5
-press() { xdotool key --window "\$win" "\$@"; sleep 0.4; }
+source "$here/window_keys.sh"
+XDG_CONFIG_HOME="$work/config" start_window stderr "$program" lesson 1 --lessons "$work/course" --size 1280x800
 press Right                 # step 2: its answer field has the keyboard
-xdotool type --window "\$win" "5"; sleep 0.3
+type_text 5
 press Return                # wrong: 33 % too low; the field gets the keyboard back, its text selected
-xdotool type --window "\$win" "7.5"; sleep 0.3
+type_text 7.5
 press Return                # right
 press Return                # answered: Enter goes on to step 3
 press Tab                   # the first option
 press Return                # checked: right
 press Escape                # the window closes
-for i in \$(seq 100); do kill -0 \$pid 2>/dev/null || break; sleep 0.1; done
-if kill -0 \$pid 2>/dev/null; then echo "Esc did not close the window"; kill \$pid; exit 1; fi
-wait \$pid
+for i in \$(seq 100); do kill -0 \$window_pid 2>/dev/null || break; sleep 0.1; done
+if kill -0 \$window_pid 2>/dev/null; then echo "Esc did not close the window"; cat stderr; stop_window; exit 1; fi
+wait \$window_pid
 DRIVE
 chmod +x "$work/drive.sh"
-xvfb-run -a -s "-screen 0 1600x1000x24" "$work/drive.sh" || { cat "$work/stderr"; exit 1; }
+"$here/xvfb.sh" 1600x1000 "$work/drive.sh"
 progress="$work/config/impulse-lab/progress.json"
 test -s "$progress" || { echo "no progress saved"; cat "$work/stderr"; exit 1; }
 # The listing counts the desired Δv right after a retry and the option right at the first try.

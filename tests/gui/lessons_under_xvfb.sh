@@ -4,6 +4,7 @@
 set -euo pipefail
 program=$1
 lessons=$2
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export XDG_CONFIG_HOME="$work/config"
@@ -12,7 +13,7 @@ for file in "$lessons"/[0-9][0-9]-*.md; do
   number=$((10#$(basename "$file" | cut -c1-2)))
   steps=$(grep -c '"id":' "$file")
   printf 'lesson step %d\n' "$steps" > "$work/script.txt"
-  xvfb-run -a -s "-screen 0 1600x1000x24" \
+  "$here/xvfb.sh" 1600x1000 \
     "$program" lesson "$number" --script "$work/script.txt" --screenshot "$work/lesson-$number.png" \
     2> "$work/stderr" || { echo "lesson $number failed:"; cat "$work/stderr"; exit 1; }
   test -s "$work/lesson-$number.png" || { echo "lesson $number: no screenshot"; exit 1; }

@@ -4,6 +4,7 @@
 set -euo pipefail
 program=$1
 case_file=$2
+here=$(cd "$(dirname "$0")" && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cat > "$work/script.txt" <<SCRIPT
@@ -11,8 +12,8 @@ next step 2
 goto phase=velocity,step=impulse
 export table $work/table.csv
 SCRIPT
-# -a picks a free display number, so parallel tests do not collide.
-xvfb-run -a -s "-screen 0 1600x1000x24" \
+# A server of its own (xvfb.sh), so parallel tests do not collide.
+"$here/xvfb.sh" 1600x1000 \
   "$program" inspect "$case_file" --size 1200x760 --script "$work/script.txt" --screenshot "$work/window.png" \
   2> "$work/stderr" || { cat "$work/stderr"; exit 1; }
 test -s "$work/table.csv"

@@ -185,7 +185,7 @@ void lean_setup(const std::vector<RigidBody>& rigid, std::span<const PreparedCon
             c.k_tt[k] = row.tangent_response[static_cast<std::size_t>(k)];
             c.k_tt_inv[k] = row.tangent_mass[static_cast<std::size_t>(k)];
         }
-        if (const std::optional<RowVisit> warm = remembered.of(row, contact_key(d))) {
+        if (const std::optional<RowVisit> warm = remembered.of(row.basis, row.friction, contact_key(d))) {
             const Vec3 total = vector_of(warm->after);
             for (int k = 0; k < 3; ++k) c.lambda[k] = total[k];
             const double p[3] = {c.n[0] * total.x() + c.t1[0] * total.y() + c.t2[0] * total.z(),

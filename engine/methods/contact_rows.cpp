@@ -49,7 +49,7 @@ void fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBod
     }
 }
 
-RowSolver::RowSolver(FrameContext& frame, bool in_colours)
+RowSolver::RowSolver(FrameContext& frame, bool in_colours, bool with_rows)
     : frame_(frame),
       settings_(frame.settings),
       bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
@@ -60,10 +60,12 @@ RowSolver::RowSolver(FrameContext& frame, bool in_colours)
       colours_(frame.scratch) {
     std::pmr::vector<std::array<int, 2>> pairs(frame.scratch);  // each moving contact's bodies, for colour_slots
     moving_.reserve(frame.contacts.size());
+    keys_.reserve(frame.contacts.size());
     if (in_colours) pairs.reserve(frame.contacts.size());
     for (std::size_t c = 0; c < frame.contacts.size(); ++c) {
         if (!can_move(frame.contacts[c])) continue;
         moving_.push_back(static_cast<std::uint32_t>(c));
+        keys_.push_back(contact_key(frame.contacts[c]));
         if (in_colours) pairs.push_back(row_bodies(frame.contacts[c]));
     }
     const std::size_t count = moving_.size();
@@ -74,28 +76,30 @@ RowSolver::RowSolver(FrameContext& frame, bool in_colours)
         slots_.resize(count);
         for (std::size_t k = 0; k < count; ++k) slots_[k] = static_cast<std::uint32_t>(k);
     }
-    rows_ = {static_cast<ContactRow*>(frame.scratch->allocate(count * sizeof(ContactRow), alignof(ContactRow))), count};
-    keys_.reserve(count);
+    if (with_rows)
+        rows_ = {static_cast<ContactRow*>(frame.scratch->allocate(count * sizeof(ContactRow), alignof(ContactRow))),
+                 count};
     if (frame.keeping) kept_.resize(count);
 }
 
 RowSolver::~RowSolver() {
     static_assert(std::is_trivially_destructible_v<ContactRow>);
-    frame_.scratch->deallocate(rows_.data(), rows_.size() * sizeof(ContactRow), alignof(ContactRow));
+    if (!rows_.empty())
+        frame_.scratch->deallocate(rows_.data(), rows_.size() * sizeof(ContactRow), alignof(ContactRow));
 }
 
-std::optional<RowVisit> RememberedTotals::of(const ContactRow& row, const ContactKey& key) {
+std::optional<RowVisit> RememberedTotals::of(const Mat3& basis, double friction, const ContactKey& key) {
     if (memory_.size() == 0) return std::nullopt;
     const std::ptrdiff_t slot = memory_.slot_of(key, next_);
     if (slot < 0 || taken_[static_cast<std::size_t>(slot)]) return std::nullopt;
     next_ = slot + 1;
     taken_[static_cast<std::size_t>(slot)] = 1;
-    const Vec3 total = to_contact(row.basis, memory_.impulse_at(slot));  // C^T g: the world's g in this frame's basis
+    const Vec3 total = to_contact(basis, memory_.impulse_at(slot));  // C^T g: the world's g in this frame's basis
     RowVisit v;
     v.unclamped = v.after = {total.x(), total.y(), total.z()};
     v.pushed_only = total.x() < 0.0;
     if (v.pushed_only) v.after.n = 0.0;
-    const double limit = row.friction * v.after.n;
+    const double limit = friction * v.after.n;
     const double tangential = v.after.t1 * v.after.t1 + v.after.t2 * v.after.t2;
     v.sliding = tangential > limit * limit;
     if (v.sliding) {

@@ -383,10 +383,10 @@ public:
     RememberedTotals(const ContactMemory& memory, std::pmr::memory_resource* scratch)
         : memory_(memory), taken_(memory.size(), 0, scratch) {}
 
-    // The remembered total of the row whose contact has `key` (contact_key), re-projected on this frame's basis
-    // and put within the limits a total obeys, lambda_n >= 0 and |lambda_t| <= mu lambda_n (scaled back: there is no
-    // slip to oppose yet), or nothing.
-    std::optional<RowVisit> of(const ContactRow& row, const ContactKey& key);
+    // The remembered total of the contact with `key` (contact_key), re-projected on this frame's basis (step 1's
+    // contact_to_world) and put within the limits a total obeys, lambda_n >= 0 and |lambda_t| <= mu lambda_n (scaled
+    // back: there is no slip to oppose yet), or nothing.
+    std::optional<RowVisit> of(const Mat3& basis, double friction, const ContactKey& key);
 
 private:
     const ContactMemory& memory_;
@@ -415,7 +415,9 @@ public:
     }
 
 protected:
-    RowSolver(FrameContext& frame, bool in_colours);
+    // `with_rows`: the rows are placed (place_rows); without, a method builds what it solves from the contacts
+    // itself (soft step's wide records), and rows_ is empty.
+    RowSolver(FrameContext& frame, bool in_colours, bool with_rows = true);
     ~RowSolver();
 
     // Fills every row, in detection's order, and calls fill(row, slot, contact) for what the method adds beside it.
@@ -425,20 +427,22 @@ protected:
             const PreparedContact& contact = frame_.contacts[moving_[k]];
             ContactRow* row = new (rows_.data() + slots_[k]) ContactRow;  // the slot's row begins here
             fill_contact_row(*row, contact, bodies_.data());
-            keys_.push_back(contact_key(contact));
             fill(*row, std::size_t{slots_[k]}, contact);
         }
     }
 
-    // When warm starting: calls take(slot, total) for each row that has a total remembered from last frame, in
-    // detection's order.
+    // When warm starting: calls take(slot, total) for each contact that has a total remembered from last frame, in
+    // detection's order. (From the prepared contacts, whose basis and friction its row copies: rows or not.)
     template <typename Take>
     void recall(Take take) {
         if (!settings_.warm_start || !frame_.memory) return;
         RememberedTotals remembered(*frame_.memory, frame_.scratch);
-        for (std::size_t k = 0; k < keys_.size(); ++k)
-            if (const std::optional<RowVisit> total = remembered.of(rows_[slots_[k]], keys_[k]))
+        for (std::size_t k = 0; k < keys_.size(); ++k) {
+            const PreparedContact& contact = frame_.contacts[moving_[k]];
+            if (const std::optional<RowVisit> total =
+                    remembered.of(contact.basis.contact_to_world, contact.friction, keys_[k]))
                 take(std::size_t{slots_[k]}, *total);
+        }
     }
 
     // Shows the recorder a visit to row r at `place`: the velocity it read, step 5 as the method judged it (`terms`,

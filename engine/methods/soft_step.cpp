@@ -54,12 +54,15 @@ struct SoftBounce {
 
 class SoftStep : public RowSolver {
 public:
+    // In `wide` order the rows are built one at a time into the wide records, in the order of the visits, and kept
+    // as rows only when the frame is recorded (the recorder reads them); restitution builds its own.
     explicit SoftStep(FrameContext& frame)
-        : RowSolver(frame, frame.settings.soft_step.order != SolveOrder::contacts),
+        : RowSolver(frame, frame.settings.soft_step.order != SolveOrder::contacts,
+                    frame.settings.soft_step.order != SolveOrder::wide || frame.keeping),
           substep_(frame.settings.duration / frame.settings.soft_step.substeps),
           softness_(soft_step_softness(frame.settings)),
-          soft_(rows_.size(), frame.scratch),
-          bounce_(rows_.size(), frame.scratch),
+          soft_(wide() ? 0 : moving_.size(), frame.scratch),
+          bounce_(moving_.size(), frame.scratch),
           start_position_(frame.scratch),
           start_orientation_(frame.scratch),
           moved_(frame.bodies.size(), Vec3::Zero(), frame.scratch),
@@ -70,29 +73,26 @@ public:
             start_position_.push_back(body.position);
             start_orientation_.push_back(body.orientation);
         }
+        if (wide()) {
+            place_wide();
+            return;
+        }
         place_rows([this](const ContactRow&, std::size_t r, const PreparedContact& d) {
             SoftContact& c = soft_[r];
             c.prepared_penetration = d.penetration;
             aim_at(c, d.penetration);
-            // Step 4's v_s, which restitution reverses, judged once against the cut-off.
-            SoftBounce& bounce = bounce_[r];
-            bounce.restitution = d.restitution;
-            if (d.restitution == 0.0) return;
-            bounce.relative_velocity = d.contact_velocity.x();
-            bounce.cutoff_applied = !(bounce.relative_velocity < -settings_.restitution_cutoff);
-            bounce.bounces = !bounce.cutoff_applied;
+            bounce_[r] = bounce_of(d);
         });
         recall([this](std::size_t r, const RowVisit& total) { rows_[r].total_impulse = total.after; });
-        if (settings_.soft_step.order == SolveOrder::wide) {
-            // The rows, placed colour by colour, become the wide records (each row's colour from its contact's).
-            std::pmr::vector<int> colour(rows_.size(), 0, frame.scratch);
-            std::pmr::vector<double> p0(rows_.size(), 0.0, frame.scratch);
-            for (std::size_t k = 0; k < moving_.size(); ++k) colour[slots_[k]] = colours_[k];
-            for (std::size_t r = 0; r < rows_.size(); ++r) p0[r] = soft_[r].prepared_penetration;
-            wide_.emplace(rows_, colour, p0, bodies_,
-                          WideSoftness(softness_, settings_.soft_step.max_push_velocity, substep_), frame.scratch);
-            if (frame.keeping) wide_kept_.resize(rows_.size());
-        }
+    }
+
+    // Soft step's own memory when its totals are not in rows (wide order): each total in world coordinates, as
+    // RowSolver::remember keeps a row's.
+    void remember(ContactMemory& memory) const {
+        if (!wide()) return RowSolver::remember(memory);
+        memory.remember(keys_, [this](std::size_t k) {
+            return to_world(frame_.contacts[moving_[k]].basis.contact_to_world, vector_of(total_[slots_[k]]));
+        });
     }
 
     void run() {
@@ -121,17 +121,26 @@ public:
             if (wide_) wide_->store(bodies_);
             store_velocities();
         }
-        if (wide_) {  // the totals back into the rows, for restitution and the memory
-            std::pmr::vector<double> most(rows_.size(), 0.0, frame_.scratch);
-            wide_->totals(rows_, most);
-            for (std::size_t r = 0; r < rows_.size(); ++r) soft_[r].most_pushed = most[r];
-        }
+        if (wide_) wide_->totals(total_, most_pushed_);  // for restitution and the memory
         // Every sweep visits every row in order, so the last sub-step's last sweep holds each contact's last visit
         // before restitution: stamped for LastTouch once, here (restitution stamps its own).
-        stamp();
-        for (std::size_t r = 0; r < rows_.size(); ++r)
-            if (bounce_[r].bounces && soft_[r].most_pushed > 0.0)
-                restitution(r, {substeps - 1, 0, SolverStage::restitution});
+        if (!wide())
+            stamp();
+        else if (frame_.touch)
+            for (const std::uint32_t k : order_) frame_.touch->touched(frame_.contacts[moving_[k]].contact);
+        const SweepPlace last{substeps - 1, 0, SolverStage::restitution};
+        for (std::size_t r = 0; r < moving_.size(); ++r) {
+            if (!bounce_[r].bounces) continue;
+            if (!wide()) {
+                if (soft_[r].most_pushed > 0.0) restitution(rows_[r], r, last);
+            } else if (most_pushed_[r] > 0.0) {
+                ContactRow row;  // the row, as its lanes were placed from
+                fill_contact_row(row, frame_.contacts[moving_[order_[r]]], bodies_.data());
+                row.total_impulse = total_[r];
+                restitution(row, r, last);
+                total_[r] = row.total_impulse;
+            }
+        }
         store_velocities();
     }
 
@@ -139,6 +148,52 @@ public:
     int visit_limit() const { return visits_; }  // the schedule is fixed: it always runs to its end
 
 private:
+    bool wide() const { return settings_.soft_step.order == SolveOrder::wide; }
+
+    // Step 4's v_s, which restitution reverses, judged once against the cut-off.
+    SoftBounce bounce_of(const PreparedContact& d) const {
+        SoftBounce bounce;
+        bounce.restitution = d.restitution;
+        if (d.restitution == 0.0) return bounce;
+        bounce.relative_velocity = d.contact_velocity.x();
+        bounce.cutoff_applied = !(bounce.relative_velocity < -settings_.restitution_cutoff);
+        bounce.bounces = !bounce.cutoff_applied;
+        return bounce;
+    }
+
+    // The rows, in the order of the visits (colour by colour), become the wide records: each built from its contact
+    // and its remembered total, placed in its lanes, and kept as a row only when the frame is recorded.
+    void place_wide() {
+        const std::size_t count = moving_.size();
+        order_.resize(count);
+        std::pmr::vector<int> colour(count, 0, frame_.scratch);
+        std::pmr::vector<std::array<int, 2>> pair(count, frame_.scratch);
+        // (In detection's order, as everything below: the contacts are read in the order they lie in memory.)
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::uint32_t r = slots_[k];
+            order_[r] = static_cast<std::uint32_t>(k);
+            colour[r] = colours_[k];
+            pair[r] = row_bodies(frame_.contacts[moving_[k]]);
+        }
+        wide_.emplace(colour, pair, bodies_, WideSoftness(softness_, settings_.soft_step.max_push_velocity, substep_),
+                      frame_.scratch);
+        total_.assign(count, Axes{});
+        most_pushed_.assign(count, 0.0);
+        recall([this](std::size_t r, const RowVisit& total) { total_[r] = total.after; });
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::size_t r = slots_[k];
+            const PreparedContact& d = frame_.contacts[moving_[k]];
+            ContactRow row;
+            fill_contact_row(row, d, bodies_.data());
+            row.total_impulse = total_[r];
+            wide_->place(r, row, d.penetration);
+            bounce_[r] = bounce_of(d);
+            if (frame_.keeping) new (rows_.data() + r) ContactRow(row);
+        }
+        wide_->aim();
+        if (frame_.keeping) wide_kept_.resize(count);
+    }
+
     // After the positions moved: each body's move and turn since the frame began.
     void track_moves() {
         for (std::size_t b = 0; b < frame_.bodies.size(); ++b) {
@@ -240,9 +295,9 @@ private:
     void wide_warm_start(int substep) {
         WideVisit* const kept = frame_.keeping ? wide_kept_.data() : nullptr;
         wide_->warm_start(kept);
-        visits_ += static_cast<int>(rows_.size());
+        visits_ += static_cast<int>(moving_.size());
         if (kept)
-            for (std::size_t r = 0; r < rows_.size(); ++r) {
+            for (std::size_t r = 0; r < moving_.size(); ++r) {
                 const ContactRow& row = rows_[r];
                 const Axes& total = kept[r].visit.after;
                 report(r, {substep, 0, SolverStage::warm_start}, kept[r].velocity, kept[r].visit,
@@ -254,21 +309,23 @@ private:
     void wide_sweep(const SweepPlace& place) {
         WideVisit* const kept = frame_.keeping ? wide_kept_.data() : nullptr;
         wide_->sweep<biased, moved>(kept);
-        visits_ += static_cast<int>(rows_.size());
+        visits_ += static_cast<int>(moving_.size());
         if (kept)
-            for (std::size_t r = 0; r < rows_.size(); ++r)
+            for (std::size_t r = 0; r < moving_.size(); ++r)
                 report(r, place, kept[r].velocity, kept[r].visit, kept[r].target_velocity - kept[r].velocity.n,
                        kept[r].target_velocity);
     }
 
-    void restitution(std::size_t r, const SweepPlace& place) {
-        const ContactRow& row = rows_[r];
+    // Restitution's visit of row r (`row`: rows_[r], or in wide order one built for it).
+    void restitution(ContactRow& row, std::size_t r, const SweepPlace& place) {
         const double c_used = bounce_[r].restitution;
         const Axes velocity = row_velocity(row, bodies_.data());
         // The target is -c v_n(before): delta lambda_n = -m_n (v_n + c v_n(before)), total kept >= 0.
         const NormalTarget target{-c_used * bounce_[r].relative_velocity};
         const RowVisit v = solve_normal_row(row, velocity.n, target);
-        apply(r, v);
+        keep_total(row, v.after);
+        apply_impulse(row, bodies_.data(), world_impulse(row, v.increment()));
+        ++visits_;
         if (frame_.touch) frame_.touch->touched(row.contact);
         if (frame_.keeping) report(r, place, velocity, v, target.velocity - velocity.n, std::nullopt);
     }
@@ -312,7 +369,12 @@ private:
     std::pmr::vector<Vec3> moved_;   // per body: its move since the frame began
     std::pmr::vector<Mat3> turned_;  // per body: its turn since the frame began, R = q q0^-1
     int visits_ = 0;
-    std::optional<WideRecords> wide_;                        // the rows four pairs at a time, in `wide` order
+    // In `wide` order, per row in the order of the visits: its contact's place in moving_, its total and largest
+    // lambda_n after the sweeps.
+    std::optional<WideRecords> wide_;  // the rows four pairs at a time
+    std::pmr::vector<std::uint32_t> order_{frame_.scratch};
+    std::pmr::vector<Axes> total_{frame_.scratch};
+    std::pmr::vector<double> most_pushed_{frame_.scratch};
     std::pmr::vector<WideVisit> wide_kept_{frame_.scratch};  // per row: its visit in the stage under way, if recorded
 };
 

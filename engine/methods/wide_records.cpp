@@ -4,7 +4,6 @@
 #include "derivation/velocity_change.hpp"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 
 namespace impulse {
@@ -102,34 +101,34 @@ WideSoftness::WideSoftness(const Softness& s, double max_push, double h)
       max_push_velocity(splat<Float4>(max_push)),
       substep(splat<Float4>(h)) {}
 
-WideRecords::WideRecords(std::span<const ContactRow> rows, std::span<const int> colour,
-                         std::span<const double> prepared_penetration, std::span<const SolverBody> bodies,
-                         const WideSoftness& softness, std::pmr::memory_resource* scratch)
+WideRecords::WideRecords(std::span<const int> colour, std::span<const std::array<int, 2>> pair_bodies,
+                         std::span<const SolverBody> bodies, const WideSoftness& softness,
+                         std::pmr::memory_resource* scratch)
     : softness_(softness),
       records_(scratch),
       points_(scratch),
-      place_(rows.size(), 0u, scratch),
+      place_(colour.size(), 0u, scratch),
       row_of_(scratch),
       bodies_(bodies.size() + 1, Body{}, scratch),
       loaded_(scratch) {
-    // A pair: a run of rows with the same bodies (place_rows puts a pair's contacts side by side).
+    // A pair: a run of rows with the same bodies (detection makes a pair's contacts in a run, and they share a colour).
     struct Pair {
         std::uint32_t first, count;
     };
+    std::uint32_t point_count = 0;
     const auto add_record = [&](std::span<const Pair> lanes) {
         RecordX4 record{};
         std::uint32_t most = 0;
         for (const Pair& pair : lanes) most = std::max(most, pair.count);
-        record.first_point = static_cast<std::uint32_t>(points_.size());
+        record.first_point = point_count;
         record.point_count = most;
-        points_.resize(points_.size() + most, PointX4{});
-        row_of_.resize(points_.size() * 4, no_row);
+        point_count += most;
         for (int lane = 0; lane < 4; ++lane) {
             record.body[0][lane] = record.body[1][lane] = -1;
             if (static_cast<std::size_t>(lane) >= lanes.size()) continue;
             const Pair& pair = lanes[static_cast<std::size_t>(lane)];
             for (std::size_t side = 0; side < 2; ++side) {
-                const int b = rows[pair.first].body[side];
+                const int b = pair_bodies[pair.first][side];
                 record.body[side][lane] = b;
                 if (b < 0) continue;
                 const MassProperties& mass = bodies[static_cast<std::size_t>(b)].mass;
@@ -138,45 +137,21 @@ WideRecords::WideRecords(std::span<const ContactRow> rows, std::span<const int> 
                 const double e[6] = {i(0, 0), i(0, 1), i(0, 2), i(1, 1), i(1, 2), i(2, 2)};
                 for (int k = 0; k < 6; ++k) record.inverse_inertia[side].e[k][lane] = static_cast<float>(e[k]);
             }
-            for (std::uint32_t p = 0; p < pair.count; ++p) {
-                const std::uint32_t r = pair.first + p;
-                const ContactRow& row = rows[r];
-                const std::uint32_t q = record.first_point + p;
-                PointX4& point = points_[q];
-                place_[r] = q * 4 + static_cast<std::uint32_t>(lane);
-                row_of_[q * 4 + static_cast<std::uint32_t>(lane)] = r;
-                for (std::size_t side = 0; side < 2; ++side) set_lane(point.anchor[side], lane, row.anchor[side]);
-                for (int c = 0; c < 3; ++c) set_lane(point.basis.column[c], lane, row.basis.col(c));
-                point.normal_mass[lane] = static_cast<float>(row.normal_mass);
-                point.friction[lane] = static_cast<float>(row.friction);
-                for (int k = 0; k < 2; ++k)
-                    point.normal_to_tangent[k][lane] = static_cast<float>(row.normal_to_tangent[k]);
-                for (int k = 0; k < 3; ++k) {
-                    point.tangent_response[k][lane] = static_cast<float>(row.tangent_response[k]);
-                    point.tangent_mass[k][lane] = static_cast<float>(row.tangent_mass[k]);
-                }
-                point.tangent_invertible[lane] = row.tangent_invertible ? -1 : 0;
-                point.prepared_penetration[lane] = static_cast<float>(prepared_penetration[r]);
-                point.total.n[lane] = static_cast<float>(row.total_impulse.n);
-                point.total.t1[lane] = static_cast<float>(row.total_impulse.t1);
-                point.total.t2[lane] = static_cast<float>(row.total_impulse.t2);
-            }
-        }
-        for (std::uint32_t p = 0; p < most; ++p) {
-            PointX4& point = points_[record.first_point + p];
-            point.aim = soft_aim<Float4>(point.prepared_penetration, softness_.bias_rate, softness_.max_push_velocity,
-                                         softness_.substep);
+            for (std::uint32_t p = 0; p < pair.count; ++p)
+                place_[pair.first + p] = (record.first_point + p) * 4 + static_cast<std::uint32_t>(lane);
         }
         records_.push_back(record);
     };
-    points_.reserve(rows.size());
-    records_.reserve(rows.size());
+    records_.reserve(colour.size());
+    const auto same_bodies = [&](std::size_t a, std::size_t b) {  // (std::array's == calls memcmp)
+        return pair_bodies[a][0] == pair_bodies[b][0] && pair_bodies[a][1] == pair_bodies[b][1];
+    };
     Pair lanes[4];
     std::size_t filled = 0;
     std::size_t r = 0;
-    while (r < rows.size()) {
+    while (r < colour.size()) {
         std::size_t end = r + 1;
-        while (end < rows.size() && colour[end] == colour[r] && rows[end].body == rows[r].body) ++end;
+        while (end < colour.size() && colour[end] == colour[r] && same_bodies(end, r)) ++end;
         const Pair pair{static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(end - r)};
         if (colour[r] < 0 || pair.count > 4) {
             // On its own, four points at a time: the overflow's pairs may share bodies, and a lane holds four points.
@@ -188,12 +163,41 @@ WideRecords::WideRecords(std::span<const ContactRow> rows, std::span<const int> 
             lanes[filled++] = pair;
         }
         // A record is full at four pairs, and ends with its colour.
-        if (filled == 4 || (filled > 0 && (end == rows.size() || colour[end] != colour[r]))) {
+        if (filled == 4 || (filled > 0 && (end == colour.size() || colour[end] != colour[r]))) {
             add_record({lanes, filled});
             filled = 0;
         }
         r = end;
     }
+    // A lane with no point stays zero throughout.
+    points_.resize(point_count, PointX4{});
+    row_of_.resize(std::size_t{point_count} * 4, no_row);
+    for (std::size_t row = 0; row < place_.size(); ++row) row_of_[place_[row]] = static_cast<std::uint32_t>(row);
+}
+
+void WideRecords::place(std::size_t r, const ContactRow& row, double prepared_penetration) {
+    PointX4& point = points_[place_[r] / 4];
+    const int lane = static_cast<int>(place_[r] % 4);
+    for (std::size_t side = 0; side < 2; ++side) set_lane(point.anchor[side], lane, row.anchor[side]);
+    for (int c = 0; c < 3; ++c) set_lane(point.basis.column[c], lane, row.basis.col(c));
+    point.normal_mass[lane] = static_cast<float>(row.normal_mass);
+    point.friction[lane] = static_cast<float>(row.friction);
+    for (int k = 0; k < 2; ++k) point.normal_to_tangent[k][lane] = static_cast<float>(row.normal_to_tangent[k]);
+    for (int k = 0; k < 3; ++k) {
+        point.tangent_response[k][lane] = static_cast<float>(row.tangent_response[k]);
+        point.tangent_mass[k][lane] = static_cast<float>(row.tangent_mass[k]);
+    }
+    point.tangent_invertible[lane] = row.tangent_invertible ? -1 : 0;
+    point.prepared_penetration[lane] = static_cast<float>(prepared_penetration);
+    point.total.n[lane] = static_cast<float>(row.total_impulse.n);
+    point.total.t1[lane] = static_cast<float>(row.total_impulse.t1);
+    point.total.t2[lane] = static_cast<float>(row.total_impulse.t2);
+}
+
+void WideRecords::aim() {
+    for (PointX4& point : points_)
+        point.aim = soft_aim<Float4>(point.prepared_penetration, softness_.bias_rate, softness_.max_push_velocity,
+                                     softness_.substep);
 }
 
 void WideRecords::load(std::span<const SolverBody> bodies) {
@@ -316,12 +320,12 @@ void WideRecords::sweep_records(WideVisit* kept) {
     }
 }
 
-void WideRecords::totals(std::span<ContactRow> rows, std::span<double> most_pushed) const {
-    for (std::size_t r = 0; r < rows.size(); ++r) {
+void WideRecords::totals(std::span<Axes> total, std::span<double> most_pushed) const {
+    for (std::size_t r = 0; r < total.size(); ++r) {
         const std::uint32_t at = place_[r];
         const PointX4& point = points_[at / 4];
         const int lane = static_cast<int>(at % 4);
-        rows[r].total_impulse = lane_of(point.total, lane);
+        total[r] = lane_of(point.total, lane);
         most_pushed[r] = std::max(most_pushed[r], double(point.most_pushed[lane]));
     }
 }

@@ -20,6 +20,7 @@
 #include "methods/contact_rows.hpp"
 #include "methods/soft_step.hpp"
 
+#include <array>
 #include <cstdint>
 #include <memory_resource>
 #include <span>
@@ -66,10 +67,16 @@ struct WideSoftness {
 
 class WideRecords {
 public:
-    // `rows` in colour order with their `colour` (-1: the overflow), p0 of each, their bodies.
-    WideRecords(std::span<const ContactRow> rows, std::span<const int> colour,
-                std::span<const double> prepared_penetration, std::span<const SolverBody> bodies,
-                const WideSoftness& softness, std::pmr::memory_resource* scratch);
+    // The records' layout for the rows in colour order, from each row's `colour` (-1: the overflow) and its two bodies
+    // (ContactRow::body): a record takes four pairs of a colour, a pair being a run of rows with the same bodies. Every
+    // row is then placed (place) before the first stage.
+    WideRecords(std::span<const int> colour, std::span<const std::array<int, 2>> pair,
+                std::span<const SolverBody> bodies, const WideSoftness& softness, std::pmr::memory_resource* scratch);
+
+    // Row r's lanes: what a visit reads, its total so far (row.total_impulse) and p0.
+    void place(std::size_t r, const ContactRow& row, double prepared_penetration);
+    // Once every row is placed: each point's aim for the first solve, from p0.
+    void aim();
 
     // The bodies' velocities in, and each body's change since back out, added to its double velocities.
     void load(std::span<const SolverBody> bodies);
@@ -85,7 +92,7 @@ public:
     void sweep(WideVisit* kept);
 
     // Each row's total and its largest lambda_n, in doubles.
-    void totals(std::span<ContactRow> rows, std::span<double> most_pushed) const;
+    void totals(std::span<Axes> total, std::span<double> most_pushed) const;
 
     std::size_t record_count() const { return records_.size(); }
 

@@ -11,6 +11,7 @@
 
 #include <doctest/doctest.h>
 
+#include <array>
 #include <memory_resource>
 #include <vector>
 
@@ -25,11 +26,21 @@ struct WideOutcome {
     std::vector<WideVisit> kept;  // the last sweep's visits, when kept
 };
 
+// The records of the frame's rows (in colour order, with their `colour`), each row placed as soft step places it.
+WideRecords records_of(const test::FrameRows& frame, std::span<const int> colour, const WideSoftness& softness) {
+    std::vector<std::array<int, 2>> pair;
+    for (const ContactRow& row : frame.rows) pair.push_back(row.body);
+    WideRecords records(colour, pair, frame.bodies, softness, std::pmr::new_delete_resource());
+    for (std::size_t r = 0; r < frame.rows.size(); ++r) records.place(r, frame.rows[r], frame.penetration[r]);
+    records.aim();
+    return records;
+}
+
 // One sub-step as soft step runs it: warm start, a solve sweep, the bodies moved (by their velocities over h, turned
 // about a fixed axis), a relax sweep that finds p and one that does not.
 WideOutcome wide_substep(const test::FrameRows& frame, std::span<const int> colour, const WideSoftness& softness,
                          double h, bool keeping) {
-    WideRecords records(frame.rows, colour, frame.penetration, frame.bodies, softness, std::pmr::new_delete_resource());
+    WideRecords records = records_of(frame, colour, softness);
     WideOutcome out;
     out.bodies = frame.bodies;
     out.kept.resize(frame.rows.size());
@@ -43,10 +54,9 @@ WideOutcome wide_substep(const test::FrameRows& frame, std::span<const int> colo
     records.sweep<false, true>(kept);
     records.sweep<false, false>(kept);
     records.store(out.bodies);
-    std::vector<ContactRow> rows = frame.rows;
-    out.most_pushed.assign(rows.size(), 0.0);
-    records.totals(rows, out.most_pushed);
-    for (const ContactRow& row : rows) out.totals.push_back(row.total_impulse);
+    out.totals.assign(frame.rows.size(), Axes{});
+    out.most_pushed.assign(frame.rows.size(), 0.0);
+    records.totals(out.totals, out.most_pushed);
     return out;
 }
 
@@ -80,10 +90,8 @@ TEST_CASE("a pair gets the same numbers in a wide record of four pairs as in one
     const double h = scene.settings.duration / scene.settings.soft_step.substeps;
     const WideSoftness softness(soft_step_softness(scene.settings), scene.settings.soft_step.max_push_velocity, h);
     const std::size_t pair_count = static_cast<std::size_t>(alone.back() + 1);
-    CHECK(WideRecords(frame.rows, colour, frame.penetration, frame.bodies, softness, std::pmr::new_delete_resource())
-              .record_count() < pair_count / 3);
-    CHECK(WideRecords(frame.rows, alone, frame.penetration, frame.bodies, softness, std::pmr::new_delete_resource())
-              .record_count() == pair_count);
+    CHECK(records_of(frame, colour, softness).record_count() < pair_count / 3);
+    CHECK(records_of(frame, alone, softness).record_count() == pair_count);
 
     const WideOutcome four = wide_substep(frame, colour, softness, h, false);
     const WideOutcome one = wide_substep(frame, alone, softness, h, false);

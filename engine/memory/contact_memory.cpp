@@ -47,6 +47,13 @@ std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key, std::ptrdiff_t hint
     }
 }
 
+bool ContactMemory::holds_keys(std::span<const ContactKey> keys) const {
+    if (index_.empty() || keys.size() != entries_.size()) return false;
+    for (std::size_t k = 0; k < keys.size(); ++k)
+        if (!same_key(entries_[k].first, keys[k])) return false;
+    return true;
+}
+
 void ContactMemory::index_entries() {
     std::size_t size = 16;
     while (size < 2 * entries_.size()) size *= 2;

@@ -41,10 +41,13 @@ public:
     // stays deterministic. The memory keeps its buffers: once they have grown, remembering allocates nothing.
     template <typename Impulse>
     void remember(std::span<const ContactKey> keys, Impulse impulse) {
+        // The index depends on the keys alone: a frame with last frame's contacts in last frame's order (most frames
+        // of a settled scene, its contacts recycled) keeps last frame's index.
+        const bool same_keys = holds_keys(keys);
         entries_.clear();
         stiffness_.clear();
         for (std::size_t k = 0; k < keys.size(); ++k) entries_.emplace_back(keys[k], impulse(k));
-        index_entries();
+        if (!same_keys) index_entries();
     }
     // The same, with a stiffness per contact beside its impulse, stiffness(k) = {normal, tangential} (AVBD keeps its
     // penalty k from frame to frame: derivation/avbd/dual_update.hpp).
@@ -63,6 +66,8 @@ public:
     void clear();
 
 private:
+    // Whether the entries, indexed, have these keys in this order.
+    bool holds_keys(std::span<const ContactKey> keys) const;
     void index_entries();
 
     // The totals as given, and an open-addressing index over them (linear probing, at most half full, -1 =

@@ -84,7 +84,7 @@ RowSolver::RowSolver(FrameContext& frame, bool in_colours, bool with_rows)
 
 RowSolver::~RowSolver() {
     static_assert(std::is_trivially_destructible_v<ContactRow>);
-    if (!rows_.empty())
+    if (rows_.data())  // allocated (with_rows), if for no row
         frame_.scratch->deallocate(rows_.data(), rows_.size() * sizeof(ContactRow), alignof(ContactRow));
 }
 

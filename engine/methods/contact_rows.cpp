@@ -55,27 +55,30 @@ RowSolver::RowSolver(FrameContext& frame, bool in_colours, bool with_rows)
       bodies_(solver_bodies(frame.bodies, frame.mass, frame.scratch)),
       moving_(frame.scratch),
       slots_(frame.scratch),
+      order_(frame.scratch),
       keys_(frame.scratch),
       kept_(frame.scratch),
-      colours_(frame.scratch) {
-    std::pmr::vector<std::array<int, 2>> pairs(frame.scratch);  // each moving contact's bodies, for colour_slots
+      colours_(frame.scratch),
+      pairs_(frame.scratch) {
     moving_.reserve(frame.contacts.size());
     keys_.reserve(frame.contacts.size());
-    if (in_colours) pairs.reserve(frame.contacts.size());
+    if (in_colours) pairs_.reserve(frame.contacts.size());
     for (std::size_t c = 0; c < frame.contacts.size(); ++c) {
         if (!can_move(frame.contacts[c])) continue;
         moving_.push_back(static_cast<std::uint32_t>(c));
         keys_.push_back(contact_key(frame.contacts[c]));
-        if (in_colours) pairs.push_back(row_bodies(frame.contacts[c]));
+        if (in_colours) pairs_.push_back(row_bodies(frame.contacts[c]));
     }
     const std::size_t count = moving_.size();
     if (in_colours) {
-        colours_ = pair_colours(pairs, bodies_, frame.scratch);
+        colours_ = pair_colours(pairs_, bodies_, frame.scratch);
         slots_ = slots_of_colours(colours_, frame.scratch);
     } else {
         slots_.resize(count);
         for (std::size_t k = 0; k < count; ++k) slots_[k] = static_cast<std::uint32_t>(k);
     }
+    order_.resize(count);
+    for (std::size_t k = 0; k < count; ++k) order_[slots_[k]] = static_cast<std::uint32_t>(k);
     if (with_rows)
         rows_ = {static_cast<ContactRow*>(frame.scratch->allocate(count * sizeof(ContactRow), alignof(ContactRow))),
                  count};

@@ -406,11 +406,17 @@ public:
     RowSolver(const RowSolver&) = delete;
     RowSolver& operator=(const RowSolver&) = delete;
 
-    // Stores every row's total, in world coordinates, under its contact's key, as this frame's memory.
+    // Stores every contact's total, in world coordinates (g = C lambda, as world_impulse), under its key, as this
+    // frame's memory: the rows' totals, or total(slot) for a method that keeps them elsewhere (soft step's wide
+    // records).
     void remember(ContactMemory& memory) const {
-        memory.remember(keys_, [this](std::size_t k) {
-            const ContactRow& row = rows_[slots_[k]];
-            return world_impulse(row, row.total_impulse);
+        remember(memory, [this](std::size_t r) -> const Axes& { return rows_[r].total_impulse; });
+    }
+    template <typename Total>
+    void remember(ContactMemory& memory, Total total) const {
+        memory.remember(keys_, [this, &total](std::size_t k) {
+            return to_world(frame_.contacts[moving_[k]].basis.contact_to_world,
+                            vector_of(total(std::size_t{slots_[k]})));
         });
     }
 
@@ -432,17 +438,24 @@ protected:
     }
 
     // When warm starting: calls take(slot, total) for each contact that has a total remembered from last frame, in
-    // detection's order. (From the prepared contacts, whose basis and friction its row copies: rows or not.)
+    // detection's order.
     template <typename Take>
     void recall(Take take) {
-        if (!settings_.warm_start || !frame_.memory) return;
-        RememberedTotals remembered(*frame_.memory, frame_.scratch);
-        for (std::size_t k = 0; k < keys_.size(); ++k) {
-            const PreparedContact& contact = frame_.contacts[moving_[k]];
-            if (const std::optional<RowVisit> total =
-                    remembered.of(contact.basis.contact_to_world, contact.friction, keys_[k]))
-                take(std::size_t{slots_[k]}, *total);
-        }
+        std::optional<RememberedTotals> remembered = remembered_totals();
+        if (!remembered) return;
+        for (std::size_t k = 0; k < keys_.size(); ++k)
+            if (const std::optional<RowVisit> total = recalled(*remembered, k)) take(std::size_t{slots_[k]}, *total);
+    }
+    // The same one contact at a time, for a method that builds each row as it recalls its total (soft step's wide
+    // records): last frame's totals when warm starting, else nothing; then moving contact k's, each k once, in turn.
+    // (From the prepared contacts, whose basis and friction a row copies: rows or not.)
+    std::optional<RememberedTotals> remembered_totals() const {
+        if (!settings_.warm_start || !frame_.memory) return std::nullopt;
+        return std::optional<RememberedTotals>(std::in_place, *frame_.memory, frame_.scratch);
+    }
+    std::optional<RowVisit> recalled(RememberedTotals& remembered, std::size_t k) const {
+        const PreparedContact& contact = frame_.contacts[moving_[k]];
+        return remembered.of(contact.basis.contact_to_world, contact.friction, keys_[k]);
     }
 
     // Shows the recorder a visit to row r at `place`: the velocity it read, step 5 as the method judged it (`terms`,
@@ -468,10 +481,10 @@ protected:
         }
     }
 
-    // Stamps every row's contact for LastTouch, in the order of the visits.
+    // Stamps every moving contact for LastTouch, in the order of the visits (rows or not).
     void stamp() const {
         if (frame_.touch)
-            for (const ContactRow& row : rows_) frame_.touch->touched(row.contact);
+            for (const std::uint32_t k : order_) frame_.touch->touched(frame_.contacts[moving_[k]].contact);
     }
 
     FrameContext& frame_;
@@ -480,10 +493,12 @@ protected:
     std::pmr::vector<SolverBody> bodies_;
     std::pmr::vector<std::uint32_t> moving_;  // the contacts that can_move, by index, in detection's order
     std::pmr::vector<std::uint32_t> slots_;   // per moving contact: its row's slot in rows_
+    std::pmr::vector<std::uint32_t> order_;   // per slot: its contact's place in moving_ (slots_'s inverse)
     std::span<ContactRow> rows_;              // in the order of the visits; each valid once placed
     std::pmr::vector<ContactKey> keys_;       // per moving contact: its key in the ContactMemory
     std::pmr::vector<KeptVisit> kept_;        // per row: its visit in the sweep under way, when the frame is recorded
     std::pmr::vector<int> colours_;           // per moving contact: its pair's colour (in colours)
+    std::pmr::vector<std::array<int, 2>> pairs_;  // per moving contact: its row's bodies (in colours)
 };
 
 }  // namespace impulse

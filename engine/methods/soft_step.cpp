@@ -86,13 +86,10 @@ public:
         recall([this](std::size_t r, const RowVisit& total) { rows_[r].total_impulse = total.after; });
     }
 
-    // Soft step's own memory when its totals are not in rows (wide order): each total in world coordinates, as
-    // RowSolver::remember keeps a row's.
+    // The totals kept for next frame: the rows', or in wide order those the records gave back (total_).
     void remember(ContactMemory& memory) const {
         if (!wide()) return RowSolver::remember(memory);
-        memory.remember(keys_, [this](std::size_t k) {
-            return to_world(frame_.contacts[moving_[k]].basis.contact_to_world, vector_of(total_[slots_[k]]));
-        });
+        RowSolver::remember(memory, [this](std::size_t r) -> const Axes& { return total_[r]; });
     }
 
     void run() {
@@ -124,17 +121,16 @@ public:
         if (wide_) wide_->totals(total_, most_pushed_);  // for restitution and the memory
         // Every sweep visits every row in order, so the last sub-step's last sweep holds each contact's last visit
         // before restitution: stamped for LastTouch once, here (restitution stamps its own).
-        if (!wide())
-            stamp();
-        else if (frame_.touch)
-            for (const std::uint32_t k : order_) frame_.touch->touched(frame_.contacts[moving_[k]].contact);
+        stamp();
         const SweepPlace last{substeps - 1, 0, SolverStage::restitution};
         for (std::size_t r = 0; r < moving_.size(); ++r) {
             if (!bounce_[r].bounces) continue;
             if (!wide()) {
                 if (soft_[r].most_pushed > 0.0) restitution(rows_[r], r, last);
             } else if (most_pushed_[r] > 0.0) {
-                ContactRow row;  // the row, as its lanes were placed from
+                // The row, built again as its lanes were placed from (place_wide): the few contacts that bounce fill
+                // theirs twice, where keeping every row for them would keep 264 bytes a contact all frame.
+                ContactRow row;
                 fill_contact_row(row, frame_.contacts[moving_[order_[r]]], bodies_.data());
                 row.total_impulse = total_[r];
                 restitution(row, r, last);
@@ -165,27 +161,26 @@ private:
     // and its remembered total, placed in its lanes, and kept as a row only when the frame is recorded.
     void place_wide() {
         const std::size_t count = moving_.size();
-        order_.resize(count);
         std::pmr::vector<int> colour(count, 0, frame_.scratch);
         std::pmr::vector<std::array<int, 2>> pair(count, frame_.scratch);
-        // (In detection's order, as everything below: the contacts are read in the order they lie in memory.)
-        for (std::size_t k = 0; k < count; ++k) {
-            const std::uint32_t r = slots_[k];
-            order_[r] = static_cast<std::uint32_t>(k);
-            colour[r] = colours_[k];
-            pair[r] = row_bodies(frame_.contacts[moving_[k]]);
+        for (std::size_t r = 0; r < count; ++r) {
+            colour[r] = colours_[order_[r]];
+            pair[r] = pairs_[order_[r]];
         }
         wide_.emplace(colour, pair, bodies_, WideSoftness(softness_, settings_.soft_step.max_push_velocity, substep_),
                       frame_.scratch);
         total_.assign(count, Axes{});
         most_pushed_.assign(count, 0.0);
-        recall([this](std::size_t r, const RowVisit& total) { total_[r] = total.after; });
+        // One pass over the contacts, in detection's order (the order they lie in memory, and the memory's): each
+        // contact's total recalled, its row built and placed.
+        std::optional<RememberedTotals> remembered = remembered_totals();
         for (std::size_t k = 0; k < count; ++k) {
             const std::size_t r = slots_[k];
             const PreparedContact& d = frame_.contacts[moving_[k]];
             ContactRow row;
             fill_contact_row(row, d, bodies_.data());
-            row.total_impulse = total_[r];
+            if (remembered)
+                if (const std::optional<RowVisit> total = recalled(*remembered, k)) row.total_impulse = total->after;
             wide_->place(r, row, d.penetration);
             bounce_[r] = bounce_of(d);
             if (frame_.keeping) new (rows_.data() + r) ContactRow(row);
@@ -369,10 +364,8 @@ private:
     std::pmr::vector<Vec3> moved_;   // per body: its move since the frame began
     std::pmr::vector<Mat3> turned_;  // per body: its turn since the frame began, R = q q0^-1
     int visits_ = 0;
-    // In `wide` order, per row in the order of the visits: its contact's place in moving_, its total and largest
-    // lambda_n after the sweeps.
+    // In `wide` order, per row in the order of the visits: its total and largest lambda_n after the sweeps.
     std::optional<WideRecords> wide_;  // the rows four pairs at a time
-    std::pmr::vector<std::uint32_t> order_{frame_.scratch};
     std::pmr::vector<Axes> total_{frame_.scratch};
     std::pmr::vector<double> most_pushed_{frame_.scratch};
     std::pmr::vector<WideVisit> wide_kept_{frame_.scratch};  // per row: its visit in the stage under way, if recorded

@@ -7,6 +7,7 @@
 #include "derivation/basis.hpp"
 #include "derivation/delta_velocity_per_unit_impulse.hpp"
 #include "math/full_pivot_lu.hpp"
+#include "math/lanes.hpp"
 #include "math/types.hpp"
 
 #include <array>
@@ -64,27 +65,42 @@ struct Impulse {
 // direction at once. Inline, in plain doubles (math/products.hpp): the book's friction solve and every
 // accumulating method's friction rows take K from here. Written as the matrix products it is, multiplications by
 // the skew matrices' zeros included: they decide which zero an entry that sums to zero is, and the trace shows it.
-// Body i's share of K in world axes, m^-1 1 - [q_rel]x I^-1 [q_rel]x.
-IMPULSE_KERNEL Mat3 world_delta_velocity_matrix(const Vec3& relative_position, const MassProperties& mass) {
-    const Mat3 r = skew(relative_position);
-    const Mat3 turn = product(product(r, mass.inverse_inertia_world), r);
-    const double m = mass.inverse_mass;
-    Mat3 w;
-    w(0, 0) = m * 1.0 - turn(0, 0), w(1, 0) = m * 0.0 - turn(1, 0), w(2, 0) = m * 0.0 - turn(2, 0);
-    w(0, 1) = m * 0.0 - turn(0, 1), w(1, 1) = m * 1.0 - turn(1, 1), w(2, 1) = m * 0.0 - turn(2, 1);
-    w(0, 2) = m * 0.0 - turn(0, 2), w(1, 2) = m * 0.0 - turn(1, 2), w(2, 2) = m * 1.0 - turn(2, 2);
+// Written once over the matrix and vector types (math/products.hpp): in doubles here, and over four floats for soft
+// step's wide records (methods/wide_records.hpp, a lane a contact), so every lane sums in a double's order.
+// Body i's share of K in world axes, m^-1 1 - [q_rel]x I^-1 [q_rel]x (I^-1 world, m^-1 its inverse mass).
+template <typename M, typename V, typename Inertia, typename Real>
+IMPULSE_KERNEL M world_delta_velocity_matrix_of(const V& relative_position, const Inertia& inverse_inertia,
+                                                const Real& m) {
+    const M r = skew_of<M>(relative_position);
+    const M turn = product_of<M>(product_of<M>(r, inverse_inertia), r);
+    const Real one = splat<Real>(1.0), zero = splat<Real>(0.0);
+    M w;
+    w(0, 0) = m * one - turn(0, 0), w(1, 0) = m * zero - turn(1, 0), w(2, 0) = m * zero - turn(2, 0);
+    w(0, 1) = m * zero - turn(0, 1), w(1, 1) = m * one - turn(1, 1), w(2, 1) = m * zero - turn(2, 1);
+    w(0, 2) = m * zero - turn(0, 2), w(1, 2) = m * zero - turn(1, 2), w(2, 2) = m * one - turn(2, 2);
     return w;
+}
+// K from the bodies' shares (body 1's null for the world): added entry by entry to a matrix of zeros, as Eigen sums
+// them, then turned into the contact's axes, C^T W C.
+template <typename M, typename Real>
+IMPULSE_KERNEL M delta_velocity_matrix_of(const M& contact_to_world, const M& body_0, const M* body_1) {
+    M world;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) world(i, j) = splat<Real>(0.0) + body_0(i, j);
+    if (body_1)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) world(i, j) += (*body_1)(i, j);
+    return product_of<M>(transposed_product_of<M>(contact_to_world, world), contact_to_world);
+}
+IMPULSE_KERNEL Mat3 world_delta_velocity_matrix(const Vec3& relative_position, const MassProperties& mass) {
+    return world_delta_velocity_matrix_of<Mat3>(relative_position, mass.inverse_inertia_world, mass.inverse_mass);
 }
 IMPULSE_KERNEL Mat3 delta_velocity_matrix(const Basis& basis, const std::array<Vec3, 2>& relative_position,
                                           const ContactMass& mass) {
-    // The bodies' shares added entry by entry to a matrix of zeros, as Eigen sums them.
-    Mat3 world = world_delta_velocity_matrix(relative_position[0], *mass[0]);
-    for (int k = 0; k < 9; ++k) world.data()[k] = 0.0 + world.data()[k];
-    if (mass[1]) {
-        const Mat3 w = world_delta_velocity_matrix(relative_position[1], *mass[1]);
-        for (int k = 0; k < 9; ++k) world.data()[k] += w.data()[k];
-    }
-    return product(transposed_product(basis.contact_to_world, world), basis.contact_to_world);
+    const Mat3 body_0 = world_delta_velocity_matrix(relative_position[0], *mass[0]);
+    if (!mass[1]) return delta_velocity_matrix_of<Mat3, double>(basis.contact_to_world, body_0, nullptr);
+    const Mat3 body_1 = world_delta_velocity_matrix(relative_position[1], *mass[1]);
+    return delta_velocity_matrix_of<Mat3, double>(basis.contact_to_world, body_0, &body_1);
 }
 
 // K with its LU factors: everything the friction solve needs of the contact's geometry and masses. Both depend

@@ -97,10 +97,11 @@ struct SymmetricMat3x4 {
     }
 };
 
-// Four 3x3 matrices (a contact's basis, a body's turn), by columns, read as m(i, j).
+// Four 3x3 matrices (a contact's basis, a body's turn, K), by columns, read and written as m(i, j).
 struct Mat3x4 {
     Vec3x4 column[3];
     Float4 operator()(int i, int j) const { return column[j].v[i]; }
+    Float4& operator()(int i, int j) { return column[j].v[i]; }
 };
 
 // The products of math/products.hpp, lane by lane: the same templates, so the same order of sums.

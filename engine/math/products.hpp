@@ -12,6 +12,8 @@
 
 #include "math/types.hpp"
 
+#include <type_traits>
+
 // Always inlined: they are a few multiplications each, and called in every visit of the solvers' loops (GCC and
 // clang would otherwise keep some out of line at -O2, and a 3x3 matrix would go through memory).
 #define IMPULSE_KERNEL [[gnu::always_inline]] inline
@@ -19,8 +21,8 @@
 namespace impulse {
 
 // Each product is written once over its vector type V (x(), y(), z(), built from three numbers) and matrix type M
-// (m(i, j)): a Vec3 and a Mat3 here, or four of each side by side (math/lanes.hpp: a wide record's lanes), so every
-// lane sums in the order a double does.
+// (m(i, j), read and written): a Vec3 and a Mat3 here, or four of each side by side (math/lanes.hpp: a wide record's
+// lanes), so every lane sums in the order a double does.
 
 // a x b
 template <typename V>
@@ -50,17 +52,45 @@ IMPULSE_KERNEL V transposed_times_of(const M& m, const V& v) {
             m(0, 2) * v.x() + (m(1, 2) * v.y() + m(2, 2) * v.z())};
 }
 
+// [r]x, the matrix with [r]x g = r x g.
+template <typename M, typename V>
+IMPULSE_KERNEL M skew_of(const V& r) {
+    const auto zero = std::remove_cvref_t<decltype(r.x())>{};
+    M m;
+    m(0, 0) = zero, m(0, 1) = -r.z(), m(0, 2) = r.y();
+    m(1, 0) = r.z(), m(1, 1) = zero, m(1, 2) = -r.x();
+    m(2, 0) = -r.y(), m(2, 1) = r.x(), m(2, 2) = zero;
+    return m;
+}
+
+// a b (written entry by entry: a loop over the entries is not unrolled at -O2, and costs three times as much)
+template <typename M, typename A, typename B>
+IMPULSE_KERNEL M product_of(const A& a, const B& b) {
+    const auto entry = [&](int i, int j) { return a(i, 0) * b(0, j) + (a(i, 1) * b(1, j) + a(i, 2) * b(2, j)); };
+    M c;
+    c(0, 0) = entry(0, 0), c(1, 0) = entry(1, 0), c(2, 0) = entry(2, 0);
+    c(0, 1) = entry(0, 1), c(1, 1) = entry(1, 1), c(2, 1) = entry(2, 1);
+    c(0, 2) = entry(0, 2), c(1, 2) = entry(1, 2), c(2, 2) = entry(2, 2);
+    return c;
+}
+
+// a^T b
+template <typename M, typename A, typename B>
+IMPULSE_KERNEL M transposed_product_of(const A& a, const B& b) {
+    const auto entry = [&](int i, int j) { return a(0, i) * b(0, j) + (a(1, i) * b(1, j) + a(2, i) * b(2, j)); };
+    M c;
+    c(0, 0) = entry(0, 0), c(1, 0) = entry(1, 0), c(2, 0) = entry(2, 0);
+    c(0, 1) = entry(0, 1), c(1, 1) = entry(1, 1), c(2, 1) = entry(2, 1);
+    c(0, 2) = entry(0, 2), c(1, 2) = entry(1, 2), c(2, 2) = entry(2, 2);
+    return c;
+}
+
 IMPULSE_KERNEL Vec3 cross(const Vec3& a, const Vec3& b) {
     return cross_of(a, b);
 }
 
-// [r]x, the matrix with [r]x g = r x g.
 IMPULSE_KERNEL Mat3 skew(const Vec3& r) {
-    Mat3 m;
-    m(0, 0) = 0.0, m(0, 1) = -r.z(), m(0, 2) = r.y();
-    m(1, 0) = r.z(), m(1, 1) = 0.0, m(1, 2) = -r.x();
-    m(2, 0) = -r.y(), m(2, 1) = r.x(), m(2, 2) = 0.0;
-    return m;
+    return skew_of<Mat3>(r);
 }
 
 IMPULSE_KERNEL double dot(const Vec3& a, const Vec3& b) {
@@ -75,24 +105,12 @@ IMPULSE_KERNEL Vec3 transposed_times(const Mat3& m, const Vec3& v) {
     return transposed_times_of(m, v);
 }
 
-// a b (written entry by entry: a loop over the entries is not unrolled at -O2, and costs three times as much)
 IMPULSE_KERNEL Mat3 product(const Mat3& a, const Mat3& b) {
-    const auto entry = [&](int i, int j) { return a(i, 0) * b(0, j) + (a(i, 1) * b(1, j) + a(i, 2) * b(2, j)); };
-    Mat3 c;
-    c(0, 0) = entry(0, 0), c(1, 0) = entry(1, 0), c(2, 0) = entry(2, 0);
-    c(0, 1) = entry(0, 1), c(1, 1) = entry(1, 1), c(2, 1) = entry(2, 1);
-    c(0, 2) = entry(0, 2), c(1, 2) = entry(1, 2), c(2, 2) = entry(2, 2);
-    return c;
+    return product_of<Mat3>(a, b);
 }
 
-// a^T b
 IMPULSE_KERNEL Mat3 transposed_product(const Mat3& a, const Mat3& b) {
-    const auto entry = [&](int i, int j) { return a(0, i) * b(0, j) + (a(1, i) * b(1, j) + a(2, i) * b(2, j)); };
-    Mat3 c;
-    c(0, 0) = entry(0, 0), c(1, 0) = entry(1, 0), c(2, 0) = entry(2, 0);
-    c(0, 1) = entry(0, 1), c(1, 1) = entry(1, 1), c(2, 1) = entry(2, 1);
-    c(0, 2) = entry(0, 2), c(1, 2) = entry(1, 2), c(2, 2) = entry(2, 2);
-    return c;
+    return transposed_product_of<Mat3>(a, b);
 }
 
 }  // namespace impulse

@@ -17,7 +17,7 @@ std::pmr::vector<SolverBody> solver_bodies(std::span<const RigidBody> bodies, st
     return solver;
 }
 
-void fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBody* bodies, bool friction_rows) {
+void fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBody* bodies, FrictionFill friction) {
     row.contact = d.contact;
     row.body = row_bodies(d);
     ContactMass mass{nullptr, nullptr};
@@ -26,26 +26,18 @@ void fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBod
         if (row.body[i] >= 0) mass[i] = &bodies[row.body[i]].mass;
     }
     row.basis = d.basis.contact_to_world;
-    row.friction = friction_rows ? d.friction : 0.0;
+    row.friction = friction == FrictionFill::none ? 0.0 : d.friction;
     // K_nn is step 3's d, so a rigid normal row visited alone gives the chapter's impulse g = v / d (14.3); the
     // friction rows read the rest of K (derivation/impulse.hpp), as the book's friction solve does.
     const double k_nn = d.delta_velocity_per_unit_impulse;
     row.normal_response = k_nn;
     row.normal_mass = 1.0 / k_nn;
-    if (row.friction != 0.0) {
-        const Mat3 k = delta_velocity_matrix(d.basis, row.anchor, mass);
-        const double k_11 = k(1, 1), k_12 = k(1, 2), k_22 = k(2, 2);
-        row.normal_to_tangent = {k(1, 0), k(2, 0)};
-        row.tangent_response = {k_11, k_12, k_22};
-        const double det = k_11 * k_22 - k_12 * k_12;
-        row.tangent_invertible = det > 0.0;
-        if (row.tangent_invertible) {
-            const double inverse_det = 1.0 / det;
-            row.tangent_mass = {k_22 * inverse_det, -k_12 * inverse_det, k_11 * inverse_det};
-        } else {
-            // Singular (a body that turns about one axis only): solve each tangent row on its own.
-            row.tangent_mass = {k_11 > 0.0 ? 1.0 / k_11 : 0.0, 0.0, k_22 > 0.0 ? 1.0 / k_22 : 0.0};
-        }
+    if (row.friction != 0.0 && friction == FrictionFill::rows) {
+        const FrictionMatrixOf<double> f = friction_matrix<double>(delta_velocity_matrix(d.basis, row.anchor, mass));
+        row.normal_to_tangent = {f.normal_to_tangent[0], f.normal_to_tangent[1]};
+        row.tangent_response = {f.tangent_response[0], f.tangent_response[1], f.tangent_response[2]};
+        row.tangent_mass = {f.tangent_mass[0], f.tangent_mass[1], f.tangent_mass[2]};
+        row.tangent_invertible = f.tangent_invertible;
     }
 }
 

@@ -108,11 +108,58 @@ inline bool can_move(const PreparedContact& contact) {
     return contact.delta_velocity_per_unit_impulse > 0.0;
 }
 
+// The friction rows' entries of K (contact coordinates; derivation/impulse.hpp's delta_velocity_matrix_of): K_tn,
+// K_tt, and K_tt^-1, or its diagonal's inverse when K_tt is singular (a body that turns about one axis only: each
+// tangent row then solved on its own). Over a double, or four floats (a wide record's lanes). In floats K_tt counts as
+// singular a little before its determinant reaches 0, at a millionth of k_11 k_22: rounding the inputs to floats can
+// leave a singular K_tt a determinant of a few ulps, whose inverse would be nothing but that rounding.
+template <typename Real>
+struct FrictionMatrixOf {
+    Real normal_to_tangent[2];  // K_tn
+    Real tangent_response[3];   // K_tt (11, 12, 22)
+    Real tangent_mass[3];       // K_tt^-1 (11, 12, 22), or its diagonal's inverse
+    MaskOf<Real> tangent_invertible;
+};
+
+template <typename Real, typename M>
+IMPULSE_KERNEL FrictionMatrixOf<Real> friction_matrix(const M& k) {
+    const Real zero = splat<Real>(0.0), one = splat<Real>(1.0);
+    const Real k_11 = k(1, 1), k_12 = k(1, 2), k_22 = k(2, 2);
+    FrictionMatrixOf<Real> f{{k(1, 0), k(2, 0)}, {k_11, k_12, k_22}, {zero, zero, zero}, {}};
+    const Real det = k_11 * k_22 - k_12 * k_12;
+    if constexpr (std::is_same_v<Real, double>)
+        f.tangent_invertible = det > 0.0;
+    else
+        f.tangent_invertible = det > splat<Real>(1e-6) * (k_11 * k_22);
+    // Both, lane by lane (a double takes the one its branch needs).
+    if (any(f.tangent_invertible)) {
+        const Real inverse_det = one / select(f.tangent_invertible, det, one);
+        f.tangent_mass[0] = k_22 * inverse_det, f.tangent_mass[1] = -k_12 * inverse_det;
+        f.tangent_mass[2] = k_11 * inverse_det;
+    }
+    if (any(negated(f.tangent_invertible))) {
+        const MaskOf<Real> singular = negated(f.tangent_invertible);
+        const MaskOf<Real> has_11 = k_11 > zero, has_22 = k_22 > zero;
+        const Real inverse_11 = one / select(has_11, k_11, one), inverse_22 = one / select(has_22, k_22, one);
+        f.tangent_mass[0] = select(singular, select(has_11, inverse_11, zero), f.tangent_mass[0]);
+        f.tangent_mass[1] = select(singular, zero, f.tangent_mass[1]);
+        f.tangent_mass[2] = select(singular, select(has_22, inverse_22, zero), f.tangent_mass[2]);
+    }
+    return f;
+}
+
+// What fill_contact_row fills beside the normal row.
+enum class FrictionFill {
+    rows,         // the friction rows, with K's entries (friction_matrix)
+    none,         // no friction rows (the split impulse's pushes): mu = 0
+    coefficient,  // mu only: K's entries are found four contacts at a time (soft step's wide records)
+};
+
 // Fills `row` with the rows of a prepared contact that can_move, with its bodies' mass from `bodies` (K_nn = d of
-// step 3, the other entries derivation/impulse.hpp's delta_velocity_matrix); without `friction_rows` (the split
-// impulse's pushes) only the normal row is filled. (In place: a row is 264 bytes, and a frame builds one per contact.)
+// step 3, the other entries derivation/impulse.hpp's delta_velocity_matrix), the friction rows as `friction` says.
+// (In place: a row is 264 bytes, and a frame builds one per contact.)
 void fill_contact_row(ContactRow& row, const PreparedContact& contact, const SolverBody* bodies,
-                      bool friction_rows = true);
+                      FrictionFill friction = FrictionFill::rows);
 
 // What the normal row aims for in one visit.
 template <typename Real>

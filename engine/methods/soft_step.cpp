@@ -177,15 +177,17 @@ private:
         for (std::size_t k = 0; k < count; ++k) {
             const std::size_t r = slots_[k];
             const PreparedContact& d = frame_.contacts[moving_[k]];
+            // Unrecorded, the friction rows' K is left to the records (prepare, four contacts at a time in floats);
+            // a recorded frame's rows have theirs, for the recorder.
             ContactRow row;
-            fill_contact_row(row, d, bodies_.data());
+            fill_contact_row(row, d, bodies_.data(), frame_.keeping ? FrictionFill::rows : FrictionFill::coefficient);
             if (remembered)
                 if (const std::optional<RowVisit> total = recalled(*remembered, k)) row.total_impulse = total->after;
             wide_->place(r, row, d.penetration);
             bounce_[r] = bounce_of(d);
             if (frame_.keeping) new (rows_.data() + r) ContactRow(row);
         }
-        wide_->aim();
+        wide_->prepare();
         if (frame_.keeping) wide_kept_.resize(count);
     }
 

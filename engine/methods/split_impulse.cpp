@@ -45,7 +45,7 @@ PhaseOutcome split_impulse_positions(FrameContext& frame) {
     std::pmr::vector<double> targets(frame.scratch);
     for (const PreparedContact& c : frame.contacts) {
         if (!can_move(c)) continue;  // nothing can push it
-        fill_contact_row(rows.emplace_back(), c, pseudo.data(), false);
+        fill_contact_row(rows.emplace_back(), c, pseudo.data(), FrictionFill::none);
         targets.push_back(position_bias(c.penetration, settings.position_bias, h));
     }
 

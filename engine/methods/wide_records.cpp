@@ -1,6 +1,7 @@
 #include "methods/wide_records.hpp"
 
 #include "derivation/contact_velocity.hpp"
+#include "derivation/impulse.hpp"
 #include "derivation/velocity_change.hpp"
 
 #include <algorithm>
@@ -182,22 +183,36 @@ void WideRecords::place(std::size_t r, const ContactRow& row, double prepared_pe
     for (int c = 0; c < 3; ++c) set_lane(point.basis.column[c], lane, row.basis.col(c));
     point.normal_mass[lane] = static_cast<float>(row.normal_mass);
     point.friction[lane] = static_cast<float>(row.friction);
-    for (int k = 0; k < 2; ++k) point.normal_to_tangent[k][lane] = static_cast<float>(row.normal_to_tangent[k]);
-    for (int k = 0; k < 3; ++k) {
-        point.tangent_response[k][lane] = static_cast<float>(row.tangent_response[k]);
-        point.tangent_mass[k][lane] = static_cast<float>(row.tangent_mass[k]);
-    }
-    point.tangent_invertible[lane] = row.tangent_invertible ? -1 : 0;
     point.prepared_penetration[lane] = static_cast<float>(prepared_penetration);
     point.total.n[lane] = static_cast<float>(row.total_impulse.n);
     point.total.t1[lane] = static_cast<float>(row.total_impulse.t1);
     point.total.t2[lane] = static_cast<float>(row.total_impulse.t2);
 }
 
-void WideRecords::aim() {
-    for (PointX4& point : points_)
-        point.aim = soft_aim<Float4>(point.prepared_penetration, softness_.bias_rate, softness_.max_push_velocity,
-                                     softness_.substep);
+void WideRecords::prepare() {
+    const Float4 zero = splat<Float4>(0.0);
+    for (const RecordX4& record : records_) {
+        // Body 1's share is added in every lane: a static body's (and an empty lane's) masses and anchor are zero.
+        for (std::uint32_t p = 0; p < record.point_count; ++p) {
+            PointX4& point = points_[record.first_point + p];
+            const Mat3x4 body_0 = world_delta_velocity_matrix_of<Mat3x4>(point.anchor[0], record.inverse_inertia[0],
+                                                                         record.inverse_mass[0]);
+            const Mat3x4 body_1 = world_delta_velocity_matrix_of<Mat3x4>(point.anchor[1], record.inverse_inertia[1],
+                                                                         record.inverse_mass[1]);
+            const FrictionMatrixOf<Float4> f =
+                friction_matrix<Float4>(delta_velocity_matrix_of<Mat3x4, Float4>(point.basis, body_0, &body_1));
+            // A lane without friction keeps no friction rows (fill_contact_row's zeros).
+            const Mask4 rows = point.friction != zero;
+            for (int k = 0; k < 2; ++k) point.normal_to_tangent[k] = select(rows, f.normal_to_tangent[k], zero);
+            for (int k = 0; k < 3; ++k) {
+                point.tangent_response[k] = select(rows, f.tangent_response[k], zero);
+                point.tangent_mass[k] = select(rows, f.tangent_mass[k], zero);
+            }
+            point.tangent_invertible = both(rows, f.tangent_invertible);
+            point.aim = soft_aim<Float4>(point.prepared_penetration, softness_.bias_rate, softness_.max_push_velocity,
+                                         softness_.substep);
+        }
+    }
 }
 
 void WideRecords::load(std::span<const SolverBody> bodies) {

@@ -4,7 +4,9 @@
 // body, so four of them are solved side by side, one in each lane of a 4-float register: a record holds four pairs,
 // gathers their bodies' velocities once, visits every point of the four on them and writes them back once.
 //
-// A lane does what a visit of methods/contact_rows.hpp does, by the same functions: step 4's point velocity
+// A lane does what a visit of methods/contact_rows.hpp does, by the same functions: K's friction entries
+// (derivation/impulse.hpp's delta_velocity_matrix_of and contact_rows.hpp's friction_matrix, over four floats from the
+// placed anchors, basis and masses, as Box3D prepares its constraints in floats), step 4's point velocity
 // (derivation/contact_velocity.hpp), the rows (solve_rows, over four floats: a point here has a ContactRow's fields,
 // four lanes each), step 7's velocity change (derivation/velocity_change.hpp), soft step's aim and anchor move
 // (methods/soft_step.hpp); the products sum in math/products.hpp's order. The lanes never mix, so a pair gets the
@@ -73,10 +75,12 @@ public:
     WideRecords(std::span<const int> colour, std::span<const std::array<int, 2>> pair,
                 std::span<const SolverBody> bodies, const WideSoftness& softness, std::pmr::memory_resource* scratch);
 
-    // Row r's lanes: what a visit reads, its total so far (row.total_impulse) and p0.
+    // Row r's lanes: what a visit reads, its total so far (row.total_impulse) and p0. The friction rows' entries of
+    // K are not read from the row (fill_contact_row's FrictionFill::coefficient leaves them out): prepare finds them.
     void place(std::size_t r, const ContactRow& row, double prepared_penetration);
-    // Once every row is placed: each point's aim for the first solve, from p0.
-    void aim();
+    // Once every row is placed: each point's friction rows' K (friction_matrix of delta_velocity_matrix_of, in its
+    // lanes, from its anchors, basis and bodies' masses as placed) and its aim for the first solve, from p0.
+    void prepare();
 
     // The bodies' velocities in, and each body's change since back out, added to its double velocities.
     void load(std::span<const SolverBody> bodies);

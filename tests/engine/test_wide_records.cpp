@@ -32,7 +32,7 @@ WideRecords records_of(const test::FrameRows& frame, std::span<const int> colour
     for (const ContactRow& row : frame.rows) pair.push_back(row.body);
     WideRecords records(colour, pair, frame.bodies, softness, std::pmr::new_delete_resource());
     for (std::size_t r = 0; r < frame.rows.size(); ++r) records.place(r, frame.rows[r], frame.penetration[r]);
-    records.aim();
+    records.prepare();
     return records;
 }
 
@@ -118,4 +118,90 @@ TEST_CASE("a pair gets the same numbers in a wide record of four pairs as in one
     CHECK(pushing > frame.rows.size() / 2);
     CHECK(sliding > frame.rows.size() / 10);
     MESSAGE("rows ", frame.rows.size(), ", pairs ", pair_count, ", pushing ", pushing, ", sliding ", sliding);
+}
+
+namespace {
+
+// Lane `lane` of four contacts' lanes, from a double.
+void set_lane(Float4& to, int lane, double value) {
+    to[lane] = static_cast<float>(value);
+}
+
+// K's friction entries of up to four rows over four floats, as a wide record's prepare finds them from what was
+// placed: the anchors, the basis, and each body's inverse mass and world inverse inertia (zero for the world).
+FrictionMatrixOf<Float4> lanes_friction_matrix(std::span<const ContactRow> rows, std::span<const SolverBody> bodies) {
+    Vec3x4 anchor[2]{};
+    Mat3x4 basis{};
+    Float4 inverse_mass[2]{};
+    SymmetricMat3x4 inverse_inertia[2]{};
+    for (int lane = 0; lane < static_cast<int>(rows.size()); ++lane) {
+        const ContactRow& row = rows[static_cast<std::size_t>(lane)];
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) set_lane(basis.column[j].v[i], lane, row.basis(i, j));
+        for (int side = 0; side < 2; ++side) {
+            if (row.body[side] < 0) continue;
+            const MassProperties& mass = bodies[static_cast<std::size_t>(row.body[side])].mass;
+            for (int i = 0; i < 3; ++i) set_lane(anchor[side].v[i], lane, row.anchor[side][i]);
+            set_lane(inverse_mass[side], lane, mass.inverse_mass);
+            const Mat3& m = mass.inverse_inertia_world;
+            const double e[6] = {m(0, 0), m(0, 1), m(0, 2), m(1, 1), m(1, 2), m(2, 2)};
+            for (int k = 0; k < 6; ++k) set_lane(inverse_inertia[side].e[k], lane, e[k]);
+        }
+    }
+    const Mat3x4 body_0 = world_delta_velocity_matrix_of<Mat3x4>(anchor[0], inverse_inertia[0], inverse_mass[0]);
+    const Mat3x4 body_1 = world_delta_velocity_matrix_of<Mat3x4>(anchor[1], inverse_inertia[1], inverse_mass[1]);
+    return friction_matrix<Float4>(delta_velocity_matrix_of<Mat3x4, Float4>(basis, body_0, &body_1));
+}
+
+}  // namespace
+
+TEST_CASE("a wide record's K over four floats is the rows' K in doubles to single precision, lane by lane") {
+    const Scene scene = test::shipped_under("pyramid_20", "soft_step_wide");
+    const test::FrameRows frame = test::frame_rows(scene, 30);
+    REQUIRE(frame.rows.size() > 100);
+    std::size_t compared = 0;
+    for (std::size_t first = 0; first + 4 <= frame.rows.size(); first += 4) {
+        const std::span<const ContactRow> four(frame.rows.data() + first, 4);
+        const FrictionMatrixOf<Float4> f = lanes_friction_matrix(four, frame.bodies);
+        for (int lane = 0; lane < 4; ++lane) {
+            const ContactRow& row = four[static_cast<std::size_t>(lane)];
+            CAPTURE(first + static_cast<std::size_t>(lane));
+            REQUIRE(row.tangent_invertible);
+            CHECK(f.tangent_invertible[lane] != 0);
+            const double size = std::max(std::abs(row.tangent_response[0]), std::abs(row.tangent_response[2]));
+            for (int k = 0; k < 2; ++k)
+                CHECK(std::abs(f.normal_to_tangent[k][lane] - row.normal_to_tangent[k]) <= 1e-6 * size);
+            for (int k = 0; k < 3; ++k) {
+                CHECK(std::abs(f.tangent_response[k][lane] - row.tangent_response[k]) <= 1e-6 * size);
+                CHECK(std::abs(f.tangent_mass[k][lane] - row.tangent_mass[k]) <= 1e-5 * std::abs(row.tangent_mass[0]));
+            }
+            ++compared;
+        }
+    }
+    MESSAGE("rows compared ", compared);
+}
+
+TEST_CASE("a K_tt that is singular is singular over four floats too, where rounding leaves it a determinant") {
+    // A body that cannot translate and turns about one axis only, touching the world at a point off its centre: K_tt
+    // has rank one. In the contact's axes turned by an angle that floats cannot hold exactly, the rounding of its
+    // entries leaves a determinant of a few ulps; the lanes take it as singular (each tangent row on its own), as the
+    // doubles do with their exact 0 in the unturned axes.
+    SolverBody body;
+    body.mass.inverse_mass = 0.0;
+    body.mass.inverse_inertia_world = Vec3(0.0, 0.0, 0.8).asDiagonal();
+    std::vector<ContactRow> rows(4);
+    for (int lane = 0; lane < 4; ++lane) {
+        ContactRow& row = rows[static_cast<std::size_t>(lane)];
+        row.body = {0, -1};
+        row.anchor = {Vec3(0.3, 0.7, -0.45), Vec3::Zero()};
+        row.basis = Mat3(Eigen::AngleAxisd(0.1 + 0.37 * lane, Vec3(1.0, 2.0, 3.0).normalized()));
+    }
+    const FrictionMatrixOf<Float4> f = lanes_friction_matrix(rows, std::span<const SolverBody>(&body, 1));
+    for (int lane = 0; lane < 4; ++lane) {
+        CAPTURE(lane);
+        CHECK(f.tangent_invertible[lane] == 0);
+        CHECK(f.tangent_mass[1][lane] == 0.0f);
+        // Each tangent row alone: its own entry's inverse.
+        CHECK(f.tangent_mass[0][lane] == 1.0f / f.tangent_response[0][lane]);
+    }
 }

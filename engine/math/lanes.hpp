@@ -23,12 +23,14 @@ template <>
 struct Lanes<double> {
     using Mask = bool;
     static constexpr double projection_tolerance = 1e-13;  // |lambda_t| within limit (1 + this) ends Newton's steps
+    static constexpr double singular_tolerance = 0.0;      // K_tt is singular when det <= this k_11 k_22
 };
 
 template <>
 struct Lanes<Float4> {
     using Mask = Mask4;
     static constexpr float projection_tolerance = 1e-6f;
+    static constexpr float singular_tolerance = 1e-6f;
 };
 
 template <typename Real>

@@ -7,7 +7,7 @@
 // frame's buffers of half a megabyte were freed at its end, the allocator gave their pages back to the system, and
 // the next frame faulted them in again: 4 % of a soft step frame on pyramid_20. Grown by one new buffer of what the
 // frame used, as this arena first was, the first frame's pages were given back and the second frame's faulted in
-// afresh: 0.1 s of the first frames of Box3D's large pyramid, docs/bench.md.)
+// afresh: 0.08 s of the first three frames of Box3D's large pyramid, docs/bench.md.)
 
 #include <cstddef>
 #include <memory_resource>
@@ -45,6 +45,9 @@ private:
     // use; when none has room, a new block, at least twice the last one, is added at the end.
     class Blocks final : public std::pmr::memory_resource {
     public:
+        Blocks() = default;
+        Blocks(const Blocks&) = delete;  // the blocks are owned once (FrameArena's copy takes blocks of its own)
+        Blocks& operator=(const Blocks&) = delete;
         struct Block {
             std::byte* bytes;
             std::size_t size;

@@ -34,9 +34,9 @@ void fill_contact_row(ContactRow& row, const PreparedContact& d, const SolverBod
     row.normal_mass = 1.0 / k_nn;
     if (row.friction != 0.0 && friction == FrictionFill::rows) {
         const FrictionMatrixOf<double> f = friction_matrix<double>(delta_velocity_matrix(d.basis, row.anchor, mass));
-        row.normal_to_tangent = {f.normal_to_tangent[0], f.normal_to_tangent[1]};
-        row.tangent_response = {f.tangent_response[0], f.tangent_response[1], f.tangent_response[2]};
-        row.tangent_mass = {f.tangent_mass[0], f.tangent_mass[1], f.tangent_mass[2]};
+        row.normal_to_tangent = f.normal_to_tangent;
+        row.tangent_response = f.tangent_response;
+        row.tangent_mass = f.tangent_mass;
         row.tangent_invertible = f.tangent_invertible;
     }
 }

@@ -110,14 +110,14 @@ inline bool can_move(const PreparedContact& contact) {
 
 // The friction rows' entries of K (contact coordinates; derivation/impulse.hpp's delta_velocity_matrix_of): K_tn,
 // K_tt, and K_tt^-1, or its diagonal's inverse when K_tt is singular (a body that turns about one axis only: each
-// tangent row then solved on its own). Over a double, or four floats (a wide record's lanes). In floats K_tt counts as
-// singular a little before its determinant reaches 0, at a millionth of k_11 k_22: rounding the inputs to floats can
-// leave a singular K_tt a determinant of a few ulps, whose inverse would be nothing but that rounding.
+// tangent row then solved on its own). Over a double, or four floats (a wide record's lanes). K_tt counts as singular
+// when det <= Lanes<Real>::singular_tolerance k_11 k_22: 0 in doubles, a millionth in floats, where rounding the
+// inputs can leave a singular K_tt a determinant of a few ulps, whose inverse would be nothing but that rounding.
 template <typename Real>
 struct FrictionMatrixOf {
-    Real normal_to_tangent[2];  // K_tn
-    Real tangent_response[3];   // K_tt (11, 12, 22)
-    Real tangent_mass[3];       // K_tt^-1 (11, 12, 22), or its diagonal's inverse
+    std::array<Real, 2> normal_to_tangent;  // K_tn
+    std::array<Real, 3> tangent_response;   // K_tt (11, 12, 22)
+    std::array<Real, 3> tangent_mass;       // K_tt^-1 (11, 12, 22), or its diagonal's inverse
     MaskOf<Real> tangent_invertible;
 };
 
@@ -127,10 +127,7 @@ IMPULSE_KERNEL FrictionMatrixOf<Real> friction_matrix(const M& k) {
     const Real k_11 = k(1, 1), k_12 = k(1, 2), k_22 = k(2, 2);
     FrictionMatrixOf<Real> f{{k(1, 0), k(2, 0)}, {k_11, k_12, k_22}, {zero, zero, zero}, {}};
     const Real det = k_11 * k_22 - k_12 * k_12;
-    if constexpr (std::is_same_v<Real, double>)
-        f.tangent_invertible = det > 0.0;
-    else
-        f.tangent_invertible = det > splat<Real>(1e-6) * (k_11 * k_22);
+    f.tangent_invertible = det > splat<Real>(Lanes<Real>::singular_tolerance) * (k_11 * k_22);
     // Both, lane by lane (a double takes the one its branch needs).
     if (any(f.tangent_invertible)) {
         const Real inverse_det = one / select(f.tangent_invertible, det, one);

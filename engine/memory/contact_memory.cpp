@@ -34,37 +34,36 @@ bool same_key(const ContactKey& a, const ContactKey& b) {
 }  // namespace
 
 std::ptrdiff_t ContactMemory::slot_of(const ContactKey& key, std::ptrdiff_t hint) const {
-    if (hint >= 0 && static_cast<std::size_t>(hint) < entries_.size()) {
+    if (hint >= 0 && static_cast<std::size_t>(hint) < keys_.size()) {
         const auto at = static_cast<std::size_t>(hint);
-        if (keeps_key_[at] && same_key(entries_[at].first, key)) return hint;
+        if (keeps_key_[at] && same_key(keys_[at], key)) return hint;
     }
     if (index_.empty()) return -1;
     const std::size_t mask = index_.size() - 1;
     for (std::size_t at = hash_of(key) & mask;; at = (at + 1) & mask) {
         const std::int32_t entry = index_[at];
         if (entry < 0) return -1;
-        if (same_key(entries_[static_cast<std::size_t>(entry)].first, key)) return entry;
+        if (same_key(keys_[static_cast<std::size_t>(entry)], key)) return entry;
     }
 }
 
 bool ContactMemory::holds_keys(std::span<const ContactKey> keys) const {
-    if (index_.empty() || keys.size() != entries_.size()) return false;
+    if (index_.empty() || keys.size() != keys_.size()) return false;
     for (std::size_t k = 0; k < keys.size(); ++k)
-        if (!same_key(entries_[k].first, keys[k])) return false;
+        if (!same_key(keys_[k], keys[k])) return false;
     return true;
 }
 
-void ContactMemory::index_entries() {
+void ContactMemory::index_keys() {
     std::size_t size = 16;
-    while (size < 2 * entries_.size()) size *= 2;
+    while (size < 2 * keys_.size()) size *= 2;
     index_.assign(size, -1);
-    keeps_key_.assign(entries_.size(), 0);
+    keeps_key_.assign(keys_.size(), 0);
     const std::size_t mask = size - 1;
-    for (std::size_t e = 0; e < entries_.size(); ++e) {
-        const ContactKey& key = entries_[e].first;
+    for (std::size_t e = 0; e < keys_.size(); ++e) {
+        const ContactKey& key = keys_[e];
         std::size_t at = hash_of(key) & mask;
-        while (index_[at] >= 0 && !same_key(entries_[static_cast<std::size_t>(index_[at])].first, key))
-            at = (at + 1) & mask;
+        while (index_[at] >= 0 && !same_key(keys_[static_cast<std::size_t>(index_[at])], key)) at = (at + 1) & mask;
         if (index_[at] < 0) {  // else the first with this key keeps it
             index_[at] = static_cast<std::int32_t>(e);
             keeps_key_[e] = 1;
@@ -73,7 +72,8 @@ void ContactMemory::index_entries() {
 }
 
 void ContactMemory::clear() {
-    entries_.clear();
+    keys_.clear();
+    impulses_.clear();
     stiffness_.clear();
     index_.clear();
     keeps_key_.clear();

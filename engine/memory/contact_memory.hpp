@@ -34,7 +34,7 @@ public:
     std::ptrdiff_t slot_of(const ContactKey& key, std::ptrdiff_t hint = -1) const;
     // The impulse remembered at `slot` (world coordinates, so a basis that turned a little between frames still
     // receives the same push).
-    const Vec3& impulse_at(std::ptrdiff_t slot) const { return entries_[static_cast<std::size_t>(slot)].second; }
+    const Vec3& impulse_at(std::ptrdiff_t slot) const { return impulses_[static_cast<std::size_t>(slot)]; }
 
     // Replaces what was remembered with this frame's totals, impulse(k) for the contact with keys[k]. When two
     // contacts share a key (explicit contacts written by hand carry no features), the first keeps it, so recall
@@ -42,12 +42,14 @@ public:
     template <typename Impulse>
     void remember(std::span<const ContactKey> keys, Impulse impulse) {
         // The index depends on the keys alone: a frame with last frame's contacts in last frame's order (most frames
-        // of a settled scene, its contacts recycled) keeps last frame's index.
-        const bool same_keys = holds_keys(keys);
-        entries_.clear();
+        // of a settled scene, its contacts recycled) keeps last frame's keys and index, and writes only the impulses.
+        if (!holds_keys(keys)) {
+            keys_.assign(keys.begin(), keys.end());
+            index_keys();
+        }
         stiffness_.clear();
-        for (std::size_t k = 0; k < keys.size(); ++k) entries_.emplace_back(keys[k], impulse(k));
-        if (!same_keys) index_entries();
+        impulses_.resize(keys.size());
+        for (std::size_t k = 0; k < keys.size(); ++k) impulses_[k] = impulse(k);
     }
     // The same, with a stiffness per contact beside its impulse, stiffness(k) = {normal, tangential} (AVBD keeps its
     // penalty k from frame to frame: derivation/avbd/dual_update.hpp).
@@ -62,17 +64,19 @@ public:
         return stiffness_[static_cast<std::size_t>(slot)];
     }
 
-    std::size_t size() const { return entries_.size(); }
+    std::size_t size() const { return keys_.size(); }
     void clear();
 
 private:
     // Whether the entries, indexed, have these keys in this order.
     bool holds_keys(std::span<const ContactKey> keys) const;
-    void index_entries();
+    void index_keys();
 
-    // The totals as given, and an open-addressing index over them (linear probing, at most half full, -1 =
-    // empty): a frame's remembering writes 4 bytes per slot and allocates nothing once the index has grown.
-    std::vector<std::pair<ContactKey, Vec3>> entries_;
+    // The entries, keys and totals as given (apart: a frame whose keys are last frame's rewrites only the totals),
+    // and an open-addressing index over the keys (linear probing, at most half full, -1 = empty): a frame's
+    // remembering writes 4 bytes per slot and allocates nothing once the index has grown.
+    std::vector<ContactKey> keys_;
+    std::vector<Vec3> impulses_;
     std::vector<std::int32_t> index_;
     std::vector<char> keeps_key_;                   // per entry: the first with its key, the one slot_of finds
     std::vector<std::array<double, 2>> stiffness_;  // per entry when remembered with one, else empty

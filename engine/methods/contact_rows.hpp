@@ -211,14 +211,15 @@ IMPULSE_KERNEL Real normal_row(Real total, Real normal_velocity, Real normal_mas
 
 // The point of the disc |lambda_t| <= limit nearest (x, y) in K_tt's metric, for (x, y) outside it (see the
 // header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt (x, y), Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
-// K_tt is the row's tangent_response (11, 12, 22), its inverse tangent_mass. Returns the point in (x, y), in the lanes
-// `project` sets.
+// K_tt is `tangent_response` (11, 12, 22), the row's, its inverse the row's tangent_mass. Returns the point in (x, y),
+// in the lanes `project` sets.
 // In floats two guards keep Newton's numbers within range (docs/bench.md, "the wide record"): the projection scales
 // with (x, y, limit) and nu does not, so it is solved on them divided by max(|x|, |y|); and a cone smaller than
 // float's precision of the free point takes Newton's limit, nu -> infinity, lambda_t along w.
 template <typename Real, typename Row>
-IMPULSE_KERNEL void project_on_cone(const Row& row, Real& x, Real& y, Real limit, MaskOf<Real> project) {
-    const Real k11 = row.tangent_response[0], k12 = row.tangent_response[1], k22 = row.tangent_response[2];
+IMPULSE_KERNEL void project_on_cone(const Row& row, const std::array<Real, 3>& tangent_response, Real& x, Real& y,
+                                    Real limit, MaskOf<Real> project) {
+    const Real k11 = tangent_response[0], k12 = tangent_response[1], k22 = tangent_response[2];
     constexpr bool single = !std::is_same_v<Real, double>;
     const Real one = splat<Real>(1.0);
     Real size0 = one;
@@ -292,10 +293,11 @@ using RowVisit = RowVisitOf<double>;
 // The friction rows (see the header) on the slip (s1, s2) once the normal change acts, from the tangential total
 // (x, y) before, and the cone's radius mu lambda_n: (x, y) becomes lambda_t,free in (free_x, free_y) and the total
 // after in (x, y); returns whether the contact slides (the cone clamped). Plain numbers in and out, so the caller's
-// values stay in registers; the row's K_tt^-1 (or its diagonal's inverse) is its tangent_mass.
+// values stay in registers; the row's K_tt^-1 (or its diagonal's inverse) is its tangent_mass, and K_tt, which only
+// the cone's projection reads, is `tangent_response`.
 template <typename Real, typename Row>
-IMPULSE_KERNEL MaskOf<Real> friction_rows(const Row& row, Real s1, Real s2, Real limit, Real& free_x, Real& free_y,
-                                          Real& x, Real& y) {
+IMPULSE_KERNEL MaskOf<Real> friction_rows(const Row& row, const std::array<Real, 3>& tangent_response, Real s1, Real s2,
+                                          Real limit, Real& free_x, Real& free_y, Real& x, Real& y) {
     const auto& m = row.tangent_mass;
     free_x = x - (m[0] * s1 + m[1] * s2);  // lambda_t,free = lambda_t - K_tt^-1 v_t'
     free_y = y - (m[1] * s1 + m[2] * s2);
@@ -307,7 +309,7 @@ IMPULSE_KERNEL MaskOf<Real> friction_rows(const Row& row, Real s1, Real s2, Real
     const MaskOf<Real> on_circle = both(outside, negated(apex));
     const MaskOf<Real> project = both(on_circle, row.tangent_invertible);
     const MaskOf<Real> scaled = both(on_circle, negated(row.tangent_invertible));
-    if (any(project)) project_on_cone<Real>(row, x, y, limit, project);
+    if (any(project)) project_on_cone<Real>(row, tangent_response, x, y, limit, project);
     if (any(scaled)) {
         const Real scale = limit / square_root(select(scaled, x * x + y * y, splat<Real>(1.0)));
         x = select(scaled, x * scale, x);
@@ -320,10 +322,11 @@ IMPULSE_KERNEL MaskOf<Real> friction_rows(const Row& row, Real s1, Real s2, Real
 
 // One visit's three rows on the velocity `velocity` (row_velocity), from the total `before` (the row's, or a kept
 // visit's when the recorder is shown it). The row's total is not changed here. `Row` is a ContactRow, or a wide
-// record's point (methods/wide_records.hpp: the same fields, four lanes each); a row without friction (mu = 0)
-// keeps no tangential total.
+// record's point (methods/wide_records.hpp: the same fields, four lanes each, but K_tt, kept apart since only a
+// sliding visit reads it: `tangent_response`); a row without friction (mu = 0) keeps no tangential total.
 template <typename Real, typename Row>
-IMPULSE_KERNEL RowVisitOf<Real> solve_rows(const Row& row, const AxesOf<Real>& before, const AxesOf<Real>& velocity,
+IMPULSE_KERNEL RowVisitOf<Real> solve_rows(const Row& row, const std::array<Real, 3>& tangent_response,
+                                           const AxesOf<Real>& before, const AxesOf<Real>& velocity,
                                            const NormalTargetOf<Real>& target) {
     const Real zero = splat<Real>(0.0);
     Real unclamped_n;
@@ -336,7 +339,7 @@ IMPULSE_KERNEL RowVisitOf<Real> solve_rows(const Row& row, const AxesOf<Real>& b
         const Real change = n - before.n;
         Real fx, fy, tx = before.t1, ty = before.t2;
         const MaskOf<Real> slides =
-            friction_rows<Real>(row, velocity.t1 + row.normal_to_tangent[0] * change,
+            friction_rows<Real>(row, tangent_response, velocity.t1 + row.normal_to_tangent[0] * change,
                                 velocity.t2 + row.normal_to_tangent[1] * change, row.friction * n, fx, fy, tx, ty);
         free_x = select(has_friction, fx, free_x);
         free_y = select(has_friction, fy, free_y);
@@ -345,6 +348,10 @@ IMPULSE_KERNEL RowVisitOf<Real> solve_rows(const Row& row, const AxesOf<Real>& b
         sliding = both(has_friction, slides);
     }
     return {before, {unclamped_n, free_x, free_y}, {n, x, y}, unclamped_n < zero, sliding};
+}
+IMPULSE_KERNEL RowVisit solve_rows(const ContactRow& row, const Axes& before, const Axes& velocity,
+                                   const NormalTarget& target) {
+    return solve_rows<double>(row, row.tangent_response, before, velocity, target);
 }
 
 // The normal row alone (soft step's restitution, the split impulse's pushes): tangential totals unchanged.
@@ -459,6 +466,14 @@ public:
     template <typename Total>
     void remember(ContactMemory& memory, Total total) const {
         memory.remember(keys_, [this, &total](std::size_t k) {
+            // Each contact's basis is fetched from memory again (the contacts, 272 bytes each, have long left the
+            // cache): asked for a dozen contacts ahead, as the hardware does not for a stride this long (on Box3D's
+            // large pyramid this loop took 4 % of the run, 2.7 % with).
+            if (k + 12 < moving_.size()) {
+                const char* ahead = reinterpret_cast<const char*>(&frame_.contacts[moving_[k + 12]].basis);
+                __builtin_prefetch(ahead);
+                __builtin_prefetch(ahead + 64);
+            }
             return to_world(frame_.contacts[moving_[k]].basis.contact_to_world,
                             vector_of(total(std::size_t{slots_[k]})));
         });
@@ -525,10 +540,13 @@ protected:
         }
     }
 
-    // Stamps every moving contact for LastTouch, in the order of the visits (rows or not).
+    // Stamps every moving contact for LastTouch, as the order of the visits has them (rows or not), from the indices
+    // alone (FrameContext::contacts is in the input's order): a read of each prepared contact would cost 2 % of the
+    // run on Box3D's large pyramid, its 60,000 contacts fetched from memory again.
     void stamp() const {
-        if (frame_.touch)
-            for (const std::uint32_t k : order_) frame_.touch->touched(frame_.contacts[moving_[k]].contact);
+        if (!frame_.touch) return;
+        const LastTouch::Run visits = frame_.touch->run(moving_.size());
+        for (std::size_t k = 0; k < moving_.size(); ++k) visits.visit(static_cast<int>(moving_[k]), slots_[k]);
     }
 
     FrameContext& frame_;

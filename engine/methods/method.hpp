@@ -32,8 +32,9 @@ struct Forces {
 
 // One frame as a method sees it.
 struct FrameContext {
-    std::vector<RigidBody>& bodies;        // changed in place
-    std::span<PreparedContact> contacts;   // steps 1-5, and the bookkeeping the book's loops update
+    std::vector<RigidBody>& bodies;  // changed in place
+    // Steps 1-5, and the bookkeeping the book's loops update: contact i's at i (contacts[i].contact == i).
+    std::span<PreparedContact> contacts;
     std::span<const MassProperties> mass;  // per body, as the contacts were prepared with
     const ResolverSettings& settings;
     Recorder& recorder;

@@ -37,6 +37,8 @@ struct MethodRow {
     void (*set_iterations)(ResolverSettings& settings, int n) = nullptr;
     // Position methods that work in passes: what one pass is called ("relaxation pass", "push sweep").
     std::string_view pass_name = {};
+    // What of steps 4 and 5 it reads (preparation/prepared_contact.hpp).
+    Preparation preparation = Preparation::steps_1_to_5;
 };
 
 namespace method_reads {
@@ -92,12 +94,19 @@ inline constexpr MethodRows<VelocityMethod> velocity_methods{{
      projected_gauss_seidel_velocities, method_reads::projected_gauss_seidel,
      "sequential impulses: accumulated impulses clamped to push only and to the friction cone, warm started", "sweeps",
      [](ResolverSettings& s, int n) { s.sweeps = n; }},
-    {VelocityMethod::soft_step, "soft_step", MethodScope::whole_step, soft_step, method_reads::soft_step,
-     "Box2D v3: sub-steps of soft contacts, relax, restitution; it integrates the bodies itself", "soft_step.substeps",
+    {VelocityMethod::soft_step,
+     "soft_step",
+     MethodScope::whole_step,
+     soft_step,
+     method_reads::soft_step,
+     "Box2D v3: sub-steps of soft contacts, relax, restitution; it integrates the bodies itself",
+     "soft_step.substeps",
      [](ResolverSettings& s, int n) {
          s.soft_step.substeps = n;
          s.sweeps = 1;
-     }},
+     },
+     {},
+     Preparation::steps_1_to_4},
     {VelocityMethod::avbd, "avbd", MethodScope::whole_step, avbd_step, method_reads::avbd,
      "augmented vertex block descent: each body's 6x6 block against its contacts' augmented-Lagrangian forces; it "
      "integrates the bodies itself",
@@ -143,7 +152,11 @@ inline constexpr MethodRows<PositionMethod> position_methods{{
      MethodScope::position_phase,
      no_positions,
      {},
-     "no position phase: only velocities (Baumgarte's step-5 bias, a soft contact) separate the bodies"},
+     "no position phase: only velocities (Baumgarte's step-5 bias, a soft contact) separate the bodies",
+     {},
+     nullptr,
+     {},
+     Preparation::steps_1_to_4},
 }};
 
 // The row of a settings value: the rows stand in enumerator order (checked in method_table.cpp).

@@ -108,10 +108,12 @@ WideRecords::WideRecords(std::span<const int> colour, std::span<const std::array
     : softness_(softness),
       records_(scratch),
       points_(scratch),
+      tangent_response_(scratch),
       place_(colour.size(), 0u, scratch),
       row_of_(scratch),
-      bodies_(bodies.size() + 1, Body{}, scratch),
-      loaded_(scratch) {
+      velocities_(bodies.size() + 1, BodyVelocity{}, scratch),
+      loaded_(scratch),
+      moves_(bodies.size() + 1, BodyMove{}, scratch) {
     // A pair: a run of rows with the same bodies (detection makes a pair's contacts in a run, and they share a colour).
     struct Pair {
         std::uint32_t first, count;
@@ -172,6 +174,7 @@ WideRecords::WideRecords(std::span<const int> colour, std::span<const std::array
     }
     // A lane with no point stays zero throughout.
     points_.resize(point_count, PointX4{});
+    tangent_response_.resize(point_count);
     row_of_.resize(std::size_t{point_count} * 4, no_row);
     for (std::size_t row = 0; row < place_.size(); ++row) row_of_[place_[row]] = static_cast<std::uint32_t>(row);
 }
@@ -195,6 +198,7 @@ void WideRecords::prepare() {
         // Body 1's share is added in every lane: a static body's (and an empty lane's) masses and anchor are zero.
         for (std::uint32_t p = 0; p < record.point_count; ++p) {
             PointX4& point = points_[record.first_point + p];
+            std::array<Float4, 3>& tangent_response = tangent_response_[record.first_point + p];
             const Mat3x4 body_0 = world_delta_velocity_matrix_of<Mat3x4>(point.anchor[0], record.inverse_inertia[0],
                                                                          record.inverse_mass[0]);
             const Mat3x4 body_1 = world_delta_velocity_matrix_of<Mat3x4>(point.anchor[1], record.inverse_inertia[1],
@@ -205,12 +209,11 @@ void WideRecords::prepare() {
             const Mask4 rows = point.friction != zero;
             for (int k = 0; k < 2; ++k) point.normal_to_tangent[k] = select(rows, f.normal_to_tangent[k], zero);
             for (int k = 0; k < 3; ++k) {
-                point.tangent_response[k] = select(rows, f.tangent_response[k], zero);
+                tangent_response[k] = select(rows, f.tangent_response[k], zero);
                 point.tangent_mass[k] = select(rows, f.tangent_mass[k], zero);
             }
             point.tangent_invertible = both(rows, f.tangent_invertible);
-            point.aim = soft_aim<Float4>(point.prepared_penetration, softness_.bias_rate, softness_.max_push_velocity,
-                                         softness_.substep);
+            point.penetration = point.prepared_penetration;
         }
     }
 }
@@ -218,28 +221,28 @@ void WideRecords::prepare() {
 void WideRecords::load(std::span<const SolverBody> bodies) {
     for (std::size_t b = 0; b < bodies.size(); ++b)
         for (int k = 0; k < 3; ++k) {
-            bodies_[b].velocity[k] = static_cast<float>(bodies[b].velocity[k]);
-            bodies_[b].angular_velocity[k] = static_cast<float>(bodies[b].angular_velocity[k]);
+            velocities_[b].velocity[k] = static_cast<float>(bodies[b].velocity[k]);
+            velocities_[b].angular_velocity[k] = static_cast<float>(bodies[b].angular_velocity[k]);
         }
-    loaded_.assign(bodies_.begin(), bodies_.end());
+    loaded_.assign(velocities_.begin(), velocities_.end());
 }
 
 // The change in floats, added in doubles: a body no visit changed keeps its double velocities' bits.
 void WideRecords::store(std::span<SolverBody> bodies) {
     for (std::size_t b = 0; b < bodies.size(); ++b)
         for (int k = 0; k < 3; ++k) {
-            bodies[b].velocity[k] += double(bodies_[b].velocity[k]) - double(loaded_[b].velocity[k]);
+            bodies[b].velocity[k] += double(velocities_[b].velocity[k]) - double(loaded_[b].velocity[k]);
             bodies[b].angular_velocity[k] +=
-                double(bodies_[b].angular_velocity[k]) - double(loaded_[b].angular_velocity[k]);
-            loaded_[b].velocity[k] = bodies_[b].velocity[k];
-            loaded_[b].angular_velocity[k] = bodies_[b].angular_velocity[k];
+                double(velocities_[b].angular_velocity[k]) - double(loaded_[b].angular_velocity[k]);
+            loaded_[b].velocity[k] = velocities_[b].velocity[k];
+            loaded_[b].angular_velocity[k] = velocities_[b].angular_velocity[k];
         }
 }
 
 void WideRecords::track(std::size_t body, const Vec3& moved, const Mat3& turned) {
     for (int i = 0; i < 3; ++i) {
-        bodies_[body].moved[i] = static_cast<float>(moved[i]);
-        for (int j = 0; j < 3; ++j) bodies_[body].turned[3 * j + i] = static_cast<float>(turned(i, j));
+        moves_[body].moved[i] = static_cast<float>(moved[i]);
+        for (int j = 0; j < 3; ++j) moves_[body].turned[3 * j + i] = static_cast<float>(turned(i, j));
     }
 }
 
@@ -264,9 +267,9 @@ template void WideRecords::sweep<false, true>(WideVisit*);
 
 template <bool keeping>
 void WideRecords::warm_start_records(WideVisit* kept) {
-    const std::size_t none = bodies_.size() - 1;
+    const std::size_t none = velocities_.size() - 1;
     for (const RecordX4& record : records_) {
-        Velocities s = gather(record, bodies_.data(), none);
+        Velocities s = gather(record, velocities_.data(), none);
         for (std::uint32_t p = 0; p < record.point_count; ++p) {
             const std::uint32_t q = record.first_point + p;
             PointX4& point = points_[q];
@@ -280,22 +283,22 @@ void WideRecords::warm_start_records(WideVisit* kept) {
             apply(record, point, s, point.total);
             keep_total(point, point.total);
         }
-        scatter(record, bodies_.data(), s);
+        scatter(record, velocities_.data(), s);
     }
 }
 
 template <bool biased, bool moved, bool keeping>
 void WideRecords::sweep_records(WideVisit* kept) {
-    const std::size_t none = bodies_.size() - 1;
+    const std::size_t none = velocities_.size() - 1;
     const Float4 one = splat<Float4>(1.0), zero = splat<Float4>(0.0);
     for (const RecordX4& record : records_) {
-        Velocities s = gather(record, bodies_.data(), none);
+        Velocities s = gather(record, velocities_.data(), none);
         Vec3x4 moved_by[2];
         Mat3x4 turned_by[2];
         if constexpr (moved)
             for (int side = 0; side < 2; ++side)
                 for (int lane = 0; lane < 4; ++lane) {
-                    const Body& body = body_of(record, side, lane, bodies_.data(), none);
+                    const BodyMove& body = body_of(record, side, lane, moves_.data(), none);
                     for (int i = 0; i < 3; ++i) {
                         moved_by[side].v[i][lane] = body.moved[i];
                         for (int j = 0; j < 3; ++j) turned_by[side].column[j].v[i][lane] = body.turned[3 * j + i];
@@ -309,18 +312,19 @@ void WideRecords::sweep_records(WideVisit* kept) {
                 const Vec3x4 m0 = anchor_move(moved_by[0], turned_by[0], point.anchor[0]);
                 const Vec3x4 m1 = anchor_move(moved_by[1], turned_by[1], point.anchor[1]);
                 const Vec3x4 separated{m0.x() - m1.x(), m0.y() - m1.y(), m0.z() - m1.z()};
-                point.aim = soft_aim<Float4>(point.prepared_penetration - dot(separated, point.basis.column[0]),
-                                             softness_.bias_rate, softness_.max_push_velocity, softness_.substep);
+                point.penetration = point.prepared_penetration - dot(separated, point.basis.column[0]);
             }
+            const SoftAimOf<Float4> aim = soft_aim<Float4>(point.penetration, softness_.bias_rate,
+                                                           softness_.max_push_velocity, softness_.substep);
             const AxesOf<Float4> velocity = contact_velocity(s, point);
             // soft_step.cpp's target_of, lane by lane.
             NormalTargetOf<Float4> target;
             if constexpr (biased)
-                target = {point.aim.solve_velocity, select(point.aim.soft, softness_.mass_scale, one),
-                          select(point.aim.soft, softness_.impulse_scale, zero)};
+                target = {aim.solve_velocity, select(aim.soft, softness_.mass_scale, one),
+                          select(aim.soft, softness_.impulse_scale, zero)};
             else
-                target = {point.aim.relax_velocity, one, zero};
-            const RowVisitOf<Float4> v = solve_rows<Float4>(point, point.total, velocity, target);
+                target = {aim.relax_velocity, one, zero};
+            const RowVisitOf<Float4> v = solve_rows<Float4>(point, tangent_response_[q], point.total, velocity, target);
             apply(record, point, s, v.increment());
             keep_total(point, v.after);
             if constexpr (keeping)
@@ -331,7 +335,7 @@ void WideRecords::sweep_records(WideVisit* kept) {
                                     v.pushed_only[lane] != 0, v.sliding[lane] != 0},
                                    target.velocity[lane]};
         }
-        scatter(record, bodies_.data(), s);
+        scatter(record, velocities_.data(), s);
     }
 }
 

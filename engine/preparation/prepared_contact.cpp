@@ -2,6 +2,7 @@
 
 #include "preparation/bookkeeping.hpp"
 
+#include <limits>
 #include <utility>
 
 namespace impulse {
@@ -41,7 +42,8 @@ namespace {
 
 // One contact's preparation, into `c` (a vector's element, built where it is kept).
 void prepare(PreparedContact& c, int index, const Contact& contact, std::span<const RigidBody> bodies,
-             std::span<const MassProperties> mass, const ResolverSettings& settings) {
+             std::span<const MassProperties> mass, const ResolverSettings& settings, Preparation preparation) {
+    const bool step_5 = preparation == Preparation::steps_1_to_5;
     const OrientedContact o = oriented(contact);
     c.contact = index;
     c.bodies = o.bodies;
@@ -67,13 +69,21 @@ void prepare(PreparedContact& c, int index, const Contact& contact, std::span<co
         const BodyContactVelocity v =
             body_contact_velocity(c.basis.contact_to_world, c.relative_position[i],
                                   {body.velocity, body.angular_velocity, body.last_frame_acceleration},
-                                  settings.duration, settings.tangential_acceleration_velocity);
+                                  settings.duration, step_5 && settings.tangential_acceleration_velocity);
         c.contact_velocity += body_sign(i) * v.local;
         c.tangential_acceleration_velocity[0] += body_sign(i) * v.tangential_acceleration_velocity.y();
         c.tangential_acceleration_velocity[1] += body_sign(i) * v.tangential_acceleration_velocity.z();
     }
     c.delta_velocity_per_unit_impulse = delta_velocity_per_unit_impulse(o.normal, c.relative_position, body_mass);
     c.inert = c.delta_velocity_per_unit_impulse <= 0.0;
+    if (!step_5) {
+        const double unset = std::numeric_limits<double>::quiet_NaN();
+        c.tangential_acceleration_velocity = {unset, unset};
+        c.velocity_from_acceleration = unset;
+        c.position_bias = std::nullopt;
+        c.desired_delta_velocity = unset;
+        return;
+    }
     const VelocityRefinements refinements = velocity_refinements(settings);
     c.velocity_from_acceleration = velocity_from_acceleration(o.normal, acceleration, settings.duration, refinements);
     c.position_bias = step_5_position_bias(contact.penetration, settings);
@@ -84,13 +94,13 @@ void prepare(PreparedContact& c, int index, const Contact& contact, std::span<co
 
 void prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
                       std::span<const MassProperties> mass, const ResolverSettings& settings,
-                      std::pmr::vector<PreparedContact>& prepared) {
+                      std::pmr::vector<PreparedContact>& prepared, Preparation preparation) {
     // Each one made where it is kept, right after its room is taken (not the whole list first: it is larger than
     // the cache, and would be written twice).
     prepared.clear();
     prepared.reserve(contacts.size());
     for (std::size_t i = 0; i < contacts.size(); ++i)
-        prepare(prepared.emplace_back(), static_cast<int>(i), contacts[i], bodies, mass, settings);
+        prepare(prepared.emplace_back(), static_cast<int>(i), contacts[i], bodies, mass, settings, preparation);
 }
 
 ContactMass contact_mass(const PreparedContact& contact, std::span<const MassProperties> mass) {

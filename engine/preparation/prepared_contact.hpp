@@ -38,16 +38,18 @@ struct PreparedContact {
     Vec3 contact_velocity;          // step 4, contact coordinates: v_s = x
     double desired_delta_velocity;  // step 5 on that velocity (with Baumgarte's term when it is on)
 
-    int contact;                             // index in the input contact list
-    std::array<int, 2> bodies;               // after swapping: body 1 may be world_body
-    bool swapped;                            // given with the world as body 0: bodies exchanged and normal negated
-    bool inert;                              // d <= 0: no impulse or move can change this contact
-    ContactOrigin origin;                    // the test and features that made it (features swapped with the bodies)
-    double restitution;                      // c
-    double friction;                         // mu
-    Basis basis;                             // step 1: basis.normal() points from body 1 towards body 0
-    std::array<Vec3, 2> relative_position;   // step 2, q - p per body; zero for the world
-    double delta_velocity_per_unit_impulse;  // step 3's d
+    int contact;                // index in the input contact list
+    std::array<int, 2> bodies;  // after swapping: body 1 may be world_body
+    bool swapped;               // given with the world as body 0: bodies exchanged and normal negated
+    bool inert;                 // d <= 0: no impulse or move can change this contact
+    ContactOrigin origin;       // the test and features that made it (features swapped with the bodies)
+    // Step 3's d, beside the contact's identity: what the row solvers read first of every contact (whether it can
+    // move, and its key), in one or two cache lines of the 272 bytes.
+    double delta_velocity_per_unit_impulse;
+    double restitution;                     // c
+    double friction;                        // mu
+    Basis basis;                            // step 1: basis.normal() points from body 1 towards body 0
+    std::array<Vec3, 2> relative_position;  // step 2, q - p per body; zero for the world
     // Step 4's tangential acceleration term, body 0's minus body 1's, along tangents 1 and 2 (0 with the refinement
     // off): the slip last frame's acceleration builds up, which the accumulating methods' friction rows remove too.
     std::array<double, 2> tangential_acceleration_velocity;
@@ -74,10 +76,18 @@ PerBody<BodyMotion> contact_motion(const std::array<int, 2>& bodies, std::span<c
 // Step 5's Baumgarte term, when the setting is on (settings/settings.hpp).
 std::optional<double> step_5_position_bias(double penetration, const ResolverSettings& settings);
 
+// How much of steps 4 and 5 a frame prepares. Every method but one reads all of it. Soft step finds its own
+// targets: it reads step 4's v_s but neither step 4's tangential refinement nor step 5. For it the contact velocity is
+// prepared without the refinement, and the rest is left NaN (tangential_acceleration_velocity,
+// velocity_from_acceleration, desired_delta_velocity) or empty (position_bias), unless the recorder keeps the frame:
+// the recorder shows steps 1 to 5 whatever the method. (On Box3D's large pyramid, 60,000 contacts a frame, step 5 and
+// the refinements cost soft step 2 % of its run.)
+enum class Preparation { steps_1_to_4, steps_1_to_5 };
+
 // Every contact, in order, into `prepared` (emptied first).
 void prepare_contacts(std::span<const Contact> contacts, std::span<const RigidBody> bodies,
                       std::span<const MassProperties> mass, const ResolverSettings& settings,
-                      std::pmr::vector<PreparedContact>& prepared);
+                      std::pmr::vector<PreparedContact>& prepared, Preparation preparation = Preparation::steps_1_to_5);
 
 // A prepared contact's bodies' mass, for the kernel (body 1 null for the world) and as the derivation's records
 // take it (body 1 empty for the world).

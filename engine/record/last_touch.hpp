@@ -19,6 +19,24 @@ public:
 
     // A method visited `contact` (an index into the contacts given).
     void touched(int contact) { stamp_[static_cast<std::size_t>(contact)] = ++touches_; }
+    // A run of `count` visits, stamped in any order: visit(contact, i) is the run's visit i (0 to count - 1), stamped
+    // as touched() would have stamped it had the run been walked in its order. (A method whose visits' order is
+    // scattered over its contacts stamps them in the order they lie in memory.)
+    class Run {
+    public:
+        void visit(int contact, std::size_t i) const { stamp_[static_cast<std::size_t>(contact)] = first_ + long(i); }
+
+    private:
+        friend class LastTouch;
+        Run(std::vector<long>& stamp, long first) : stamp_(stamp), first_(first) {}
+        std::vector<long>& stamp_;
+        long first_;
+    };
+    Run run(std::size_t count) {
+        const Run r(stamp_, touches_ + 1);
+        touches_ += static_cast<long>(count);
+        return r;
+    }
 
     // The last contact that touched `body`, if any did, and that contact's bodies.
     std::optional<int> last_contact(int body) const {

@@ -3,6 +3,8 @@
 #include "methods/method_table.hpp"
 #include "preparation/prepared_contact.hpp"
 
+#include <algorithm>
+
 namespace impulse {
 
 using Clock = std::chrono::steady_clock;
@@ -13,8 +15,13 @@ ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<con
     const std::vector<MassProperties> mass = mass_properties(bodies);
     recorder.begin_frame(setup.frame, bodies, mass);
     const bool keeping = recorder.keeps_frame();
+    const MethodRow<VelocityMethod>& velocities = method_row(settings.velocity_method);
+    const MethodRow<PositionMethod>& positions = method_row(position_method_in_effect(settings));
+    // Steps 4 and 5 in full when a method reads them or the recorder shows them.
+    const Preparation preparation =
+        keeping ? Preparation::steps_1_to_5 : std::max(velocities.preparation, positions.preparation);
     std::pmr::vector<PreparedContact> prepared(setup.scratch);
-    prepare_contacts(contacts, bodies, mass, settings, prepared);
+    prepare_contacts(contacts, bodies, mass, settings, prepared, preparation);
     if (keeping) recorder.contacts_prepared({contacts, prepared, bodies, mass, settings});
     StageTimes unwatched;  // where the times go when nobody asked for them
     StageTimes& times = setup.times ? *setup.times : unwatched;
@@ -22,8 +29,6 @@ ResolutionSummary resolve_contacts(std::vector<RigidBody>& bodies, std::span<con
 
     FrameContext context{bodies,      prepared,     mass,         settings,      recorder,  keeping,
                          setup.touch, setup.memory, setup.forces, setup.scratch, setup.stop};
-    const MethodRow<VelocityMethod>& velocities = method_row(settings.velocity_method);
-    const MethodRow<PositionMethod>& positions = method_row(position_method_in_effect(settings));
     const auto run = [&](const auto& method, Phase phase, double& seconds) {
         start = Clock::now();
         const PhaseOutcome outcome = method.solve(context);

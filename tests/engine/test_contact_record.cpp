@@ -13,6 +13,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <memory_resource>
 #include <string>
@@ -80,4 +81,46 @@ TEST_CASE("a contact's record of steps 1-5 holds the values it was prepared with
         }
     }
     CHECK(compared > 10000);  // the scenes do touch
+}
+
+TEST_CASE("prepared for soft step, a contact keeps steps 1 to 4 to the bit and leaves step 5 unset") {
+    // Soft step reads steps 1-3 and step 4's v_s (the normal velocity it bounces from): those are the whole
+    // preparation's, to the bit; step 4's tangential refinement and step 5 are left out (NaN, or no Baumgarte term).
+    int compared = 0;
+    for (const std::string name : {"sphere_drop", "pyramid_20", "box_on_slope", "mass_ratio_1000"}) {
+        CAPTURE(name);
+        const Scene scene = test::shipped(name);
+        World world(scene);
+        for (int frame = 0; frame < 25; ++frame) world.step();
+        const Detection detection = detect_contacts(scene, world.bodies());
+        const std::vector<MassProperties> mass = mass_properties(world.bodies());
+        ResolverSettings settings = *preset("soft_step");
+        settings.baumgarte = true;
+        std::pmr::vector<PreparedContact> whole, soft;
+        prepare_contacts(detection.contacts, world.bodies(), mass, settings, whole);
+        prepare_contacts(detection.contacts, world.bodies(), mass, settings, soft, Preparation::steps_1_to_4);
+        REQUIRE(soft.size() == whole.size());
+        for (std::size_t k = 0; k < soft.size(); ++k) {
+            const PreparedContact &p = soft[k], &w = whole[k];
+            CHECK(p.contact == w.contact);
+            CHECK(p.bodies == w.bodies);
+            CHECK(p.swapped == w.swapped);
+            CHECK(p.origin == w.origin);
+            CHECK(p.inert == w.inert);
+            CHECK(p.penetration == w.penetration);
+            CHECK(p.restitution == w.restitution);
+            CHECK(p.friction == w.friction);
+            CHECK(p.basis == w.basis);
+            CHECK(p.relative_position == w.relative_position);
+            CHECK(p.delta_velocity_per_unit_impulse == w.delta_velocity_per_unit_impulse);
+            CHECK(p.contact_velocity.x() == w.contact_velocity.x());
+            CHECK(std::isnan(p.desired_delta_velocity));
+            CHECK(std::isnan(p.velocity_from_acceleration));
+            CHECK(std::isnan(p.tangential_acceleration_velocity[0]));
+            CHECK_FALSE(p.position_bias.has_value());
+            CHECK(w.position_bias.has_value());
+            ++compared;
+        }
+    }
+    CHECK(compared > 100);
 }

@@ -209,3 +209,20 @@ TEST_CASE("the contact blamed for a body is the last one resolved on it, whichev
     CHECK_FALSE(touch.last_contact(3).has_value());
     CHECK(touch.bodies_of(0) == std::array<int, 2>{0, 1});
 }
+
+TEST_CASE("a run of visits stamped out of order blames as the visits in order would") {
+    // Contacts 0 to 3 on body 0, visited in the order 2, 0, 3, 1 (contact k is visit place[k]) after a visit of
+    // contact 1, and before one of contact 3. Stamped in the contacts' order, the run must blame as the visits' order.
+    std::vector<Contact> contacts(4);
+    for (Contact& c : contacts) c.bodies = {0, world_body};
+    const std::array<std::size_t, 4> place{1, 3, 0, 2};
+    LastTouch in_order(contacts), by_run(contacts);
+    for (LastTouch* touch : {&in_order, &by_run}) touch->touched(1);
+    for (const int contact : {2, 0, 3, 1}) in_order.touched(contact);
+    const LastTouch::Run run = by_run.run(4);
+    for (int k = 0; k < 4; ++k) run.visit(k, place[static_cast<std::size_t>(k)]);
+    CHECK(by_run.last_contact(0) == 1);  // the run's last visit
+    for (LastTouch* touch : {&in_order, &by_run}) touch->touched(3);
+    CHECK(in_order.last_contact(0) == 3);
+    CHECK(by_run.last_contact(0) == 3);  // the run counted its four visits: the visit after comes later
+}

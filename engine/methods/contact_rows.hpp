@@ -458,25 +458,24 @@ public:
     RowSolver& operator=(const RowSolver&) = delete;
 
     // Stores every contact's total, in world coordinates (g = C lambda, as world_impulse), under its key, as this
-    // frame's memory: the rows' totals, or total(slot) for a method that keeps them elsewhere (soft step's wide
-    // records).
+    // frame's memory: the rows' totals, or world(slot) for a method that finds g itself (soft step's wide records).
     void remember(ContactMemory& memory) const {
-        remember(memory, [this](std::size_t r) -> const Axes& { return rows_[r].total_impulse; });
-    }
-    template <typename Total>
-    void remember(ContactMemory& memory, Total total) const {
-        memory.remember(keys_, [this, &total](std::size_t k) {
+        memory.remember(keys_, [this](std::size_t k) {
             // Each contact's basis is fetched from memory again (the contacts, 272 bytes each, have long left the
             // cache): asked for a dozen contacts ahead, as the hardware does not for a stride this long (on Box3D's
-            // large pyramid this loop took 4 % of the run, 2.7 % with).
+            // large pyramid, under soft step before its records found g, this loop took 4 % of the run, 2.7 % with).
             if (k + 12 < moving_.size()) {
                 const char* ahead = reinterpret_cast<const char*>(&frame_.contacts[moving_[k + 12]].basis);
                 __builtin_prefetch(ahead);
                 __builtin_prefetch(ahead + 64);
             }
             return to_world(frame_.contacts[moving_[k]].basis.contact_to_world,
-                            vector_of(total(std::size_t{slots_[k]})));
+                            vector_of(rows_[slots_[k]].total_impulse));
         });
+    }
+    template <typename World>
+    void remember_world(ContactMemory& memory, World world) const {
+        memory.remember(keys_, [this, &world](std::size_t k) { return world(std::size_t{slots_[k]}); });
     }
 
 protected:

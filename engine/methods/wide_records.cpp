@@ -339,13 +339,17 @@ void WideRecords::sweep_records(WideVisit* kept) {
     }
 }
 
-void WideRecords::totals(std::span<Axes> total, std::span<double> most_pushed) const {
-    for (std::size_t r = 0; r < total.size(); ++r) {
-        const std::uint32_t at = place_[r];
-        const PointX4& point = points_[at / 4];
-        const int lane = static_cast<int>(at % 4);
-        total[r] = lane_of(point.total, lane);
-        most_pushed[r] = std::max(most_pushed[r], double(point.most_pushed[lane]));
+void WideRecords::totals(std::span<Axes> total, std::span<double> most_pushed, std::span<Vec3> world) const {
+    for (std::size_t q = 0; q < points_.size(); ++q) {
+        const PointX4& point = points_[q];
+        const Vec3x4 g = times(point.basis, Vec3x4{point.total.n, point.total.t1, point.total.t2});  // as apply's
+        for (int lane = 0; lane < 4; ++lane) {
+            const std::uint32_t r = row_of_[q * 4 + static_cast<std::uint32_t>(lane)];
+            if (r == no_row) continue;
+            total[r] = lane_of(point.total, lane);
+            most_pushed[r] = std::max(most_pushed[r], double(point.most_pushed[lane]));
+            world[r] = Vec3(g.x()[lane], g.y()[lane], g.z()[lane]);
+        }
     }
 }
 

@@ -96,8 +96,9 @@ public:
     template <bool biased, bool moved>
     void sweep(WideVisit* kept);
 
-    // Each row's total and its largest lambda_n, in doubles.
-    void totals(std::span<Axes> total, std::span<double> most_pushed) const;
+    // Each row's total, its largest lambda_n, and its total in world coordinates, g = C lambda (as a visit applies
+    // it, in the lanes: what the memory keeps for next frame), in doubles.
+    void totals(std::span<Axes> total, std::span<double> most_pushed, std::span<Vec3> world) const;
 
     std::size_t record_count() const { return records_.size(); }
 

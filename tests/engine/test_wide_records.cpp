@@ -22,6 +22,7 @@ namespace {
 struct WideOutcome {
     std::vector<Axes> totals;
     std::vector<double> most_pushed;
+    std::vector<Vec3> world;  // g = C lambda, as the memory keeps it
     std::vector<SolverBody> bodies;
     std::vector<WideVisit> kept;  // the last sweep's visits, when kept
 };
@@ -56,7 +57,8 @@ WideOutcome wide_substep(const test::FrameRows& frame, std::span<const int> colo
     records.store(out.bodies);
     out.totals.assign(frame.rows.size(), Axes{});
     out.most_pushed.assign(frame.rows.size(), 0.0);
-    records.totals(out.totals, out.most_pushed);
+    out.world.assign(frame.rows.size(), Vec3::Zero());
+    records.totals(out.totals, out.most_pushed, out.world);
     return out;
 }
 
@@ -101,6 +103,11 @@ TEST_CASE("a pair gets the same numbers in a wide record of four pairs as in one
         CAPTURE(r);
         CHECK(same_axes(four.totals[r], one.totals[r]));
         CHECK(four.most_pushed[r] == one.most_pushed[r]);
+        CHECK(four.world[r] == one.world[r]);
+        CHECK(four.world[r] == kept.world[r]);
+        // The lanes' g is the rows' C lambda (world_impulse, in doubles) to single precision.
+        const Vec3 g = world_impulse(frame.rows[r], four.totals[r]);
+        CHECK((four.world[r] - g).norm() <= 1e-6 * std::max(1.0, g.norm()));
         CHECK(same_axes(four.totals[r], kept.totals[r]));
         // The visit kept is the last one: its total after is the row's.
         CHECK(same_axes(kept.kept[r].visit.after, kept.totals[r]));

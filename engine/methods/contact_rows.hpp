@@ -211,8 +211,8 @@ IMPULSE_KERNEL Real normal_row(Real total, Real normal_velocity, Real normal_mas
 
 // The point of the disc |lambda_t| <= limit nearest (x, y) in K_tt's metric, for (x, y) outside it (see the
 // header): lambda_t(nu) = (K_tt + nu 1)^-1 w, w = K_tt (x, y), Newton on 1/|lambda_t(nu)| - 1/limit from nu = 0.
-// K_tt is `tangent_response` (11, 12, 22), the row's, its inverse the row's tangent_mass. Returns the point in (x, y),
-// in the lanes `project` sets.
+// K_tt is `tangent_response` (11, 12, 22: a ContactRow's own, or kept beside a wide record's point), its inverse the
+// row's tangent_mass. Returns the point in (x, y), in the lanes `project` sets.
 // In floats two guards keep Newton's numbers within range (docs/bench.md, "the wide record"): the projection scales
 // with (x, y, limit) and nu does not, so it is solved on them divided by max(|x|, |y|); and a cone smaller than
 // float's precision of the free point takes Newton's limit, nu -> infinity, lambda_t along w.

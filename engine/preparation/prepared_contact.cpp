@@ -43,7 +43,7 @@ namespace {
 // One contact's preparation, into `c` (a vector's element, built where it is kept).
 void prepare(PreparedContact& c, int index, const Contact& contact, std::span<const RigidBody> bodies,
              std::span<const MassProperties> mass, const ResolverSettings& settings, Preparation preparation) {
-    const bool step_5 = preparation == Preparation::steps_1_to_5;
+    const bool in_full = preparation == Preparation::steps_1_to_5;
     const OrientedContact o = oriented(contact);
     c.contact = index;
     c.bodies = o.bodies;
@@ -69,14 +69,14 @@ void prepare(PreparedContact& c, int index, const Contact& contact, std::span<co
         const BodyContactVelocity v =
             body_contact_velocity(c.basis.contact_to_world, c.relative_position[i],
                                   {body.velocity, body.angular_velocity, body.last_frame_acceleration},
-                                  settings.duration, step_5 && settings.tangential_acceleration_velocity);
+                                  settings.duration, in_full && settings.tangential_acceleration_velocity);
         c.contact_velocity += body_sign(i) * v.local;
         c.tangential_acceleration_velocity[0] += body_sign(i) * v.tangential_acceleration_velocity.y();
         c.tangential_acceleration_velocity[1] += body_sign(i) * v.tangential_acceleration_velocity.z();
     }
     c.delta_velocity_per_unit_impulse = delta_velocity_per_unit_impulse(o.normal, c.relative_position, body_mass);
     c.inert = c.delta_velocity_per_unit_impulse <= 0.0;
-    if (!step_5) {
+    if (!in_full) {
         const double unset = std::numeric_limits<double>::quiet_NaN();
         c.tangential_acceleration_velocity = {unset, unset};
         c.velocity_from_acceleration = unset;

@@ -5,6 +5,7 @@
 #include "methods/soft_step.hpp"
 
 #include "body/integrate.hpp"
+#include "memory/fetch_ahead.hpp"
 #include "methods/contact_rows.hpp"
 #include "methods/solver_common.hpp"
 #include "methods/wide_records.hpp"
@@ -88,7 +89,7 @@ public:
 
     // The totals kept for next frame: the rows', or in wide order those the records gave back in world coordinates
     // (world_: the records' g = C lambda in floats, where the rows' is found in doubles from each contact's basis,
-    // which would be fetched from memory again, 60,000 of them on Box3D's large pyramid, for 3 % of the run).
+    // which would be fetched from memory again, 60,000 of them on Box3D's large pyramid: 3 % of the profile).
     void remember(ContactMemory& memory) const {
         if (!wide()) return RowSolver::remember(memory);
         remember_world(memory, [this](std::size_t r) -> const Vec3& { return world_[r]; });
@@ -181,12 +182,13 @@ private:
         for (std::size_t k = 0; k < count; ++k) {
             const std::size_t r = slots_[k];
             const PreparedContact& d = frame_.contacts[moving_[k]];
+            if (k + 6 < count) fetch_ahead(frame_.contacts[moving_[k + 6]]);  // nearly all of it is read
             // Unrecorded, the friction rows' K is left to the records (prepare, four contacts at a time in floats);
             // a recorded frame's rows have theirs, for the recorder.
             ContactRow row;
             fill_contact_row(row, d, bodies_.data(), frame_.keeping ? FrictionFill::rows : FrictionFill::coefficient);
             if (remembered)
-                if (const std::optional<RowVisit> total = recalled(*remembered, k)) row.total_impulse = total->after;
+                if (const std::optional<RowVisit> total = recalled(*remembered, k)) keep_total(row, total->after);
             wide_->place(r, row, d.penetration);
             bounce_[r] = bounce_of(d);
             if (frame_.keeping) new (rows_.data() + r) ContactRow(row);

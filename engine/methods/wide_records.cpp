@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <new>
+#include <type_traits>
 
 namespace impulse {
 
@@ -69,10 +71,15 @@ IMPULSE_KERNEL AxesOf<Float4> contact_velocity(const Velocities& s, const PointX
     return {v.x(), v.y(), v.z()};
 }
 
+// The contact-axes impulse `a` in world coordinates, g = C a (contact_rows.hpp's world_impulse, lane by lane).
+IMPULSE_KERNEL Vec3x4 world_impulse(const PointX4& point, const AxesOf<Float4>& a) {
+    return times(point.basis, Vec3x4{a.n, a.t1, a.t2});
+}
+
 // Step 7 (contact_rows.hpp's apply_impulse, lane by lane): the contact-axes impulse `a` as g = C a, +g to body 0 at
 // its anchor and -g to body 1 at its.
 IMPULSE_KERNEL void apply(const RecordX4& record, const PointX4& point, Velocities& s, const AxesOf<Float4>& a) {
-    const Vec3x4 impulse = times(point.basis, Vec3x4{a.n, a.t1, a.t2});
+    const Vec3x4 impulse = world_impulse(point, a);
     const Vec3x4 opposite{-impulse.x(), -impulse.y(), -impulse.z()};
     for (int side = 0; side < 2; ++side) {
         const BodyVelocityChangeOf<Vec3x4> c =
@@ -85,12 +92,17 @@ IMPULSE_KERNEL void apply(const RecordX4& record, const PointX4& point, Velociti
     }
 }
 
-// Keeps `after` as the point's total and its largest lambda_n (std::max's choice, lane by lane).
+// Keeps lambda_n in the point's largest lambda_n if it is larger (std::max's choice, lane by lane).
+IMPULSE_KERNEL void keep_most_pushed(PointX4& point, Float4 n) {
+    point.most_pushed = select(point.most_pushed < n, n, point.most_pushed);
+}
+
+// Keeps `after` as the point's total and its largest lambda_n.
 IMPULSE_KERNEL void keep_total(PointX4& point, const AxesOf<Float4>& after) {
     point.total.n = after.n;
     point.total.t1 = after.t1;
     point.total.t2 = after.t2;
-    point.most_pushed = select(point.most_pushed < after.n, after.n, point.most_pushed);
+    keep_most_pushed(point, after.n);
 }
 
 }  // namespace
@@ -106,8 +118,8 @@ WideRecords::WideRecords(std::span<const int> colour, std::span<const std::array
                          std::span<const SolverBody> bodies, const WideSoftness& softness,
                          std::pmr::memory_resource* scratch)
     : softness_(softness),
+      scratch_(scratch),
       records_(scratch),
-      points_(scratch),
       tangent_response_(scratch),
       place_(colour.size(), 0u, scratch),
       row_of_(scratch),
@@ -172,11 +184,20 @@ WideRecords::WideRecords(std::span<const int> colour, std::span<const std::array
         }
         r = end;
     }
-    // A lane with no point stays zero throughout.
-    points_.resize(point_count, PointX4{});
+    points_ = {static_cast<PointX4*>(scratch->allocate(point_count * sizeof(PointX4), alignof(PointX4))), point_count};
     tangent_response_.resize(point_count);
     row_of_.resize(std::size_t{point_count} * 4, no_row);
     for (std::size_t row = 0; row < place_.size(); ++row) row_of_[place_[row]] = static_cast<std::uint32_t>(row);
+    // A lane with no point is zero throughout, so its visits apply nothing; the other lanes are placed.
+    for (std::size_t q = 0; q < points_.size(); ++q) {
+        const auto lanes = std::span(row_of_).subspan(q * 4, 4);
+        if (std::find(lanes.begin(), lanes.end(), no_row) != lanes.end()) new (&points_[q]) PointX4{};
+    }
+}
+
+WideRecords::~WideRecords() {
+    static_assert(std::is_trivially_destructible_v<PointX4>);
+    scratch_->deallocate(points_.data(), points_.size() * sizeof(PointX4), alignof(PointX4));
 }
 
 void WideRecords::place(std::size_t r, const ContactRow& row, double prepared_penetration) {
@@ -214,6 +235,7 @@ void WideRecords::prepare() {
             }
             point.tangent_invertible = both(rows, f.tangent_invertible);
             point.penetration = point.prepared_penetration;
+            point.most_pushed = zero;
         }
     }
 }
@@ -281,7 +303,7 @@ void WideRecords::warm_start_records(WideVisit* kept) {
                         kept[r].visit.unclamped = kept[r].visit.after = lane_of(point.total, lane);
                     }
             apply(record, point, s, point.total);
-            keep_total(point, point.total);
+            keep_most_pushed(point, point.total.n);  // the total itself is unchanged: its lines stay clean
         }
         scatter(record, velocities_.data(), s);
     }
@@ -342,7 +364,7 @@ void WideRecords::sweep_records(WideVisit* kept) {
 void WideRecords::totals(std::span<Axes> total, std::span<double> most_pushed, std::span<Vec3> world) const {
     for (std::size_t q = 0; q < points_.size(); ++q) {
         const PointX4& point = points_[q];
-        const Vec3x4 g = times(point.basis, Vec3x4{point.total.n, point.total.t1, point.total.t2});  // as apply's
+        const Vec3x4 g = world_impulse(point, point.total);  // as apply's
         for (int lane = 0; lane < 4; ++lane) {
             const std::uint32_t r = row_of_[q * 4 + static_cast<std::uint32_t>(lane)];
             if (r == no_row) continue;

@@ -75,9 +75,14 @@ public:
     // row is then placed (place) before the first stage.
     WideRecords(std::span<const int> colour, std::span<const std::array<int, 2>> pair,
                 std::span<const SolverBody> bodies, const WideSoftness& softness, std::pmr::memory_resource* scratch);
+    ~WideRecords();
+    WideRecords(const WideRecords&) = delete;
+    WideRecords& operator=(const WideRecords&) = delete;
 
     // Row r's lanes: what a visit reads, its total so far (row.total_impulse) and p0. The friction rows' entries of
     // K are not read from the row (fill_contact_row's FrictionFill::coefficient leaves them out): prepare finds them.
+    // Every row is placed once: its lanes are written nowhere else (the points' storage is not cleared first, only
+    // the points with an empty lane).
     void place(std::size_t r, const ContactRow& row, double prepared_penetration);
     // Once every row is placed: each point's friction rows' K (friction_matrix of delta_velocity_matrix_of, in its
     // lanes, from its anchors, basis and bodies' masses as placed), and p0 as its p for the first solve.
@@ -109,8 +114,11 @@ private:
     void sweep_records(WideVisit* kept);
 
     WideSoftness softness_;
+    std::pmr::memory_resource* scratch_;
     std::pmr::vector<RecordX4> records_;
-    std::pmr::vector<PointX4> points_;
+    // From the scratch, written by place and prepare alone: a vector's resize would write every point once more
+    // (7 MB on Box3D's large pyramid) before place writes it.
+    std::span<PointX4> points_;
     std::pmr::vector<std::array<Float4, 3>> tangent_response_;  // per point quad: K_tt (11, 12, 22)
     std::pmr::vector<std::uint32_t> place_;                     // per row: its point quad * 4 + its lane
     std::pmr::vector<std::uint32_t> row_of_;  // per point quad * 4 + lane: its row, or none (an empty lane)

@@ -27,21 +27,29 @@ struct WideOutcome {
     std::vector<WideVisit> kept;  // the last sweep's visits, when kept
 };
 
-// The records of the frame's rows (in colour order, with their `colour`), each row placed as soft step places it.
-WideRecords records_of(const test::FrameRows& frame, std::span<const int> colour, const WideSoftness& softness) {
+std::vector<std::array<int, 2>> pairs_of(const test::FrameRows& frame) {
     std::vector<std::array<int, 2>> pair;
     for (const ContactRow& row : frame.rows) pair.push_back(row.body);
-    WideRecords records(colour, pair, frame.bodies, softness, std::pmr::new_delete_resource());
-    for (std::size_t r = 0; r < frame.rows.size(); ++r) records.place(r, frame.rows[r], frame.penetration[r]);
-    records.prepare();
-    return records;
+    return pair;
 }
+
+// The records of the frame's rows (in colour order, with their `colour`), each row placed as soft step places it.
+// (Made where they are kept: the records own their points' storage, once.)
+struct PlacedRecords {
+    WideRecords records;
+    PlacedRecords(const test::FrameRows& frame, std::span<const int> colour, const WideSoftness& softness)
+        : records(colour, pairs_of(frame), frame.bodies, softness, std::pmr::new_delete_resource()) {
+        for (std::size_t r = 0; r < frame.rows.size(); ++r) records.place(r, frame.rows[r], frame.penetration[r]);
+        records.prepare();
+    }
+};
 
 // One sub-step as soft step runs it: warm start, a solve sweep, the bodies moved (by their velocities over h, turned
 // about a fixed axis), a relax sweep that finds p and one that does not.
 WideOutcome wide_substep(const test::FrameRows& frame, std::span<const int> colour, const WideSoftness& softness,
                          double h, bool keeping) {
-    WideRecords records = records_of(frame, colour, softness);
+    PlacedRecords placed(frame, colour, softness);
+    WideRecords& records = placed.records;
     WideOutcome out;
     out.bodies = frame.bodies;
     out.kept.resize(frame.rows.size());
@@ -92,8 +100,8 @@ TEST_CASE("a pair gets the same numbers in a wide record of four pairs as in one
     const double h = scene.settings.duration / scene.settings.soft_step.substeps;
     const WideSoftness softness(soft_step_softness(scene.settings), scene.settings.soft_step.max_push_velocity, h);
     const std::size_t pair_count = static_cast<std::size_t>(alone.back() + 1);
-    CHECK(records_of(frame, colour, softness).record_count() < pair_count / 3);
-    CHECK(records_of(frame, alone, softness).record_count() == pair_count);
+    CHECK(PlacedRecords(frame, colour, softness).records.record_count() < pair_count / 3);
+    CHECK(PlacedRecords(frame, alone, softness).records.record_count() == pair_count);
 
     const WideOutcome four = wide_substep(frame, colour, softness, h, false);
     const WideOutcome one = wide_substep(frame, alone, softness, h, false);

@@ -61,9 +61,10 @@ AccuracyTracker::AccuracyTracker(const Scene& scene, const BenchScene& spec, int
       dt_(scene.settings.duration),
       top_(highest_body(scene)),
       jitter_from_frame_(std::max(0, frames - static_cast<int>(std::lround(1.0 / scene.settings.duration)))) {
-    previous_energy_ = mechanical_energy(scene.bodies);
-    previous_kinetic_ = 0.0;
-    for (const RigidBody& b : scene.bodies) previous_kinetic_ += kinetic_energy(b);
+    for (const RigidBody& b : scene.bodies) principal_.push_back(principal_inertia(b));
+    const Energy start = energy(scene.bodies);
+    previous_energy_ = start.mechanical;
+    previous_kinetic_ = start.kinetic;
     if (!scene.bodies.empty()) previous_body0_ = scene.bodies[0];
     travel_.assign(scene.bodies.size(), 0.0);
     for (const RigidBody& b : scene.bodies) start_positions_.push_back(b.position);
@@ -99,12 +100,14 @@ double AccuracyTracker::drift(const std::vector<RigidBody>& bodies, const std::v
     return move.norm();
 }
 
-double AccuracyTracker::mechanical_energy(const std::vector<RigidBody>& bodies) const {
-    // E = sum of 1/2 m v^2 + 1/2 w.Iw - m g.p (potential energy against gravity, zero at the origin).
-    double e = 0.0;
-    for (const RigidBody& b : bodies) {
-        e += kinetic_energy(b);
-        if (b.inverse_mass > 0.0) e -= scene_.world.gravity.dot(b.position) / b.inverse_mass;
+AccuracyTracker::Energy AccuracyTracker::energy(const std::vector<RigidBody>& bodies) const {
+    Energy e;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const RigidBody& b = bodies[i];
+        const double kinetic = kinetic_energy(b, principal_[i]);
+        e.kinetic += kinetic;
+        e.mechanical += kinetic;
+        if (b.inverse_mass > 0.0) e.mechanical -= scene_.world.gravity.dot(b.position) / b.inverse_mass;
     }
     return e;
 }
@@ -156,19 +159,17 @@ bool AccuracyTracker::observe(int frame, const std::vector<RigidBody>& bodies, c
     for (std::size_t i = 0; i < bodies.size(); ++i) previous_positions_[i] = bodies[i].position;
 
     // Energy: the reference is the state arriving at the first contact (the end of the frame before it).
-    const double energy = mechanical_energy(bodies);
-    double kinetic = 0.0;
-    for (const RigidBody& b : bodies) kinetic += kinetic_energy(b);
+    const Energy now = energy(bodies);
     if (report.contacts > 0 && !energy_before_contact_) {
         energy_before_contact_ = previous_energy_;
         kinetic_before_contact_ = previous_kinetic_;
     }
     if (energy_before_contact_ && kinetic_before_contact_ > 0.0) {
-        a_.energy_gain = std::max(a_.energy_gain, (energy - *energy_before_contact_) / kinetic_before_contact_);
+        a_.energy_gain = std::max(a_.energy_gain, (now.mechanical - *energy_before_contact_) / kinetic_before_contact_);
         if (!energy_gain_time_ && a_.energy_gain > spec_.failure_threshold) energy_gain_time_ = time;
     }
-    previous_energy_ = energy;
-    previous_kinetic_ = kinetic;
+    previous_energy_ = now.mechanical;
+    previous_kinetic_ = now.kinetic;
 
     observe_bounce(bodies, report);
     if (spec_.metric == Metric::recovery_time) observe_recovery(time, bodies);
@@ -249,7 +250,7 @@ Accuracy AccuracyTracker::finish(const std::vector<RigidBody>& bodies) const {
     if (!a.nan_time) {
         for (const Contact& c : detect_contacts(scene_, bodies).contacts)
             a.end_penetration = std::max(a.end_penetration, c.penetration);
-        for (const RigidBody& b : bodies) a.end_kinetic_energy += kinetic_energy(b);
+        a.end_kinetic_energy = energy(bodies).kinetic;
         a.jitter = jitter_samples_ > 0 ? std::sqrt(jitter_sum_ / static_cast<double>(jitter_samples_)) : 0.0;
         a.least_travel = travel_.empty() ? 0.0 : *std::min_element(travel_.begin(), travel_.end());
         if (spec_.metric == Metric::slide_error) a.slide_error = slide_error(bodies, (last_frame_ + 1) * dt_);

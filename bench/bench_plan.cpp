@@ -191,14 +191,16 @@ bool is_drift(Metric metric) {
     return metric == Metric::top_drift || metric == Metric::any_drift || metric == Metric::top_sideways_drift;
 }
 
-bool declares_bench_block(std::string_view scene_text) {
-    const nlohmann::ordered_json document = formats::parse_json_text(scene_text);
+bool declares_bench_block(const formats::json& document) {
     return document.is_object() && document.contains("bench");
 }
 
 BenchScene declared_bench_scene(std::string name, std::string_view scene_text) {
-    const nlohmann::ordered_json document = formats::parse_json_text(scene_text);
-    const Scene scene = formats::read_scene(document);  // validates the whole file, the bench block with it
+    const formats::json document = formats::parse_json_text(scene_text);
+    return declared_bench_scene_of_document(std::move(name), document, formats::read_scene(document));
+}
+
+BenchScene declared_bench_scene_of_document(std::string name, const formats::json& document, const Scene& scene) {
     const int own_frames = scene.world.frames;
     if (!document.contains("bench"))
         return {std::move(name),

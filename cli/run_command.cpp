@@ -90,9 +90,10 @@ int run_command(const RunOptions& options, std::ostream& out, std::ostream& err,
     // A scene with a "bench" block (docs/scenes.md) is judged by it at the end, as `bench` judges it.
     std::optional<bench::BenchScene> judged;
     try {
-        const std::string text = formats::read_input_file(options.scene_file);
-        trace.scene = formats::read_scene_text(text, options.preset);
-        if (bench::declares_bench_block(text)) judged = bench::declared_bench_scene(scene_name, text);
+        const formats::json document = formats::parse_json_text(formats::read_input_file(options.scene_file));
+        trace.scene = formats::read_scene(document, options.preset);
+        if (bench::declares_bench_block(document))
+            judged = bench::declared_bench_scene_of_document(scene_name, document, trace.scene);
     } catch (const formats::InputError& e) {
         throw formats::FileError{scene_name, e.where(), e.problem()};
     }

@@ -5,6 +5,7 @@
 #include "derivation/velocity_change.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <new>
 #include <type_traits>
@@ -22,6 +23,17 @@ struct Velocities {
 
 void set_lane(Vec3x4& to, int lane, const Vec3& from) {
     for (int k = 0; k < 3; ++k) to.v[k][lane] = static_cast<float>(from[k]);
+}
+
+// Whether two matrices' lane `lane` have the same bits: equal, and -0 is not 0 (a NaN is never the same). (The
+// WebAssembly build's library has no std::bit_cast.)
+bool same_lane(const Mat3x4& a, const Mat3x4& b, int lane) {
+    for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) {
+            const float x = a.column[c].v[k][lane], y = b.column[c].v[k][lane];
+            if (!(x == y && std::signbit(x) == std::signbit(y))) return false;
+        }
+    return true;
 }
 
 Axes lane_of(const AxesOf<Float4>& a, int lane) {
@@ -64,22 +76,23 @@ IMPULSE_KERNEL void scatter(const RecordX4& record, Body* bodies, const Velociti
 
 // Step 4 (contact_rows.hpp's row_velocity, lane by lane): body 0's point velocity less body 1's, in the contact's
 // axes.
-IMPULSE_KERNEL AxesOf<Float4> contact_velocity(const Velocities& s, const PointX4& point) {
+IMPULSE_KERNEL AxesOf<Float4> contact_velocity(const Velocities& s, const PointX4& point, const Mat3x4& basis) {
     const Vec3x4 p0 = point_velocity_of<Vec3x4>(s.v[0], s.w[0], point.anchor[0]);
     const Vec3x4 p1 = point_velocity_of<Vec3x4>(s.v[1], s.w[1], point.anchor[1]);
-    const Vec3x4 v = transposed_times(point.basis, Vec3x4{p0.x() - p1.x(), p0.y() - p1.y(), p0.z() - p1.z()});
+    const Vec3x4 v = transposed_times(basis, Vec3x4{p0.x() - p1.x(), p0.y() - p1.y(), p0.z() - p1.z()});
     return {v.x(), v.y(), v.z()};
 }
 
 // The contact-axes impulse `a` in world coordinates, g = C a (contact_rows.hpp's world_impulse, lane by lane).
-IMPULSE_KERNEL Vec3x4 world_impulse(const PointX4& point, const AxesOf<Float4>& a) {
-    return times(point.basis, Vec3x4{a.n, a.t1, a.t2});
+IMPULSE_KERNEL Vec3x4 world_impulse(const Mat3x4& basis, const AxesOf<Float4>& a) {
+    return times(basis, Vec3x4{a.n, a.t1, a.t2});
 }
 
 // Step 7 (contact_rows.hpp's apply_impulse, lane by lane): the contact-axes impulse `a` as g = C a, +g to body 0 at
 // its anchor and -g to body 1 at its.
-IMPULSE_KERNEL void apply(const RecordX4& record, const PointX4& point, Velocities& s, const AxesOf<Float4>& a) {
-    const Vec3x4 impulse = world_impulse(point, a);
+IMPULSE_KERNEL void apply(const RecordX4& record, const PointX4& point, const Mat3x4& basis, Velocities& s,
+                          const AxesOf<Float4>& a) {
+    const Vec3x4 impulse = world_impulse(basis, a);
     const Vec3x4 opposite{-impulse.x(), -impulse.y(), -impulse.z()};
     for (int side = 0; side < 2; ++side) {
         const BodyVelocityChangeOf<Vec3x4> c =
@@ -185,26 +198,31 @@ WideRecords::WideRecords(std::span<const int> colour, std::span<const std::array
         r = end;
     }
     points_ = {static_cast<PointX4*>(scratch->allocate(point_count * sizeof(PointX4), alignof(PointX4))), point_count};
+    bases_ = {static_cast<Mat3x4*>(scratch->allocate(point_count * sizeof(Mat3x4), alignof(Mat3x4))), point_count};
     tangent_response_.resize(point_count);
     row_of_.resize(std::size_t{point_count} * 4, no_row);
     for (std::size_t row = 0; row < place_.size(); ++row) row_of_[place_[row]] = static_cast<std::uint32_t>(row);
     // A lane with no point is zero throughout, so its visits apply nothing; the other lanes are placed.
     for (std::size_t q = 0; q < points_.size(); ++q) {
         const auto lanes = std::span(row_of_).subspan(q * 4, 4);
-        if (std::find(lanes.begin(), lanes.end(), no_row) != lanes.end()) new (&points_[q]) PointX4{};
+        if (std::find(lanes.begin(), lanes.end(), no_row) != lanes.end()) {
+            new (&points_[q]) PointX4{};
+            new (&bases_[q]) Mat3x4{};
+        }
     }
 }
 
 WideRecords::~WideRecords() {
-    static_assert(std::is_trivially_destructible_v<PointX4>);
+    static_assert(std::is_trivially_destructible_v<PointX4> && std::is_trivially_destructible_v<Mat3x4>);
     scratch_->deallocate(points_.data(), points_.size() * sizeof(PointX4), alignof(PointX4));
+    scratch_->deallocate(bases_.data(), bases_.size() * sizeof(Mat3x4), alignof(Mat3x4));
 }
 
 void WideRecords::place(std::size_t r, const ContactRow& row, double prepared_penetration) {
     PointX4& point = points_[place_[r] / 4];
     const int lane = static_cast<int>(place_[r] % 4);
     for (std::size_t side = 0; side < 2; ++side) set_lane(point.anchor[side], lane, row.anchor[side]);
-    for (int c = 0; c < 3; ++c) set_lane(point.basis.column[c], lane, row.basis.col(c));
+    for (int c = 0; c < 3; ++c) set_lane(bases_[place_[r] / 4].column[c], lane, row.basis.col(c));
     point.normal_mass[lane] = static_cast<float>(row.normal_mass);
     point.friction[lane] = static_cast<float>(row.friction);
     point.prepared_penetration[lane] = static_cast<float>(prepared_penetration);
@@ -213,19 +231,49 @@ void WideRecords::place(std::size_t r, const ContactRow& row, double prepared_pe
     point.total.t2[lane] = static_cast<float>(row.total_impulse.t2);
 }
 
+// A record's points' bases, kept once where each lane's points all have the bits of its first point's (and the same
+// lanes hold a point: an empty lane's basis is zero), else one a point quad; moved down over the bases as placed, one
+// record after another, so that a sweep reads them in order.
+void WideRecords::keep_bases_once() {
+    std::uint32_t kept = 0;
+    for (RecordX4& record : records_) {
+        const std::uint32_t first = record.first_point;
+        bool shared = true;
+        for (std::uint32_t p = 1; p < record.point_count && shared; ++p)
+            for (std::uint32_t lane = 0; lane < 4 && shared; ++lane) {
+                const bool placed = row_of_[(first + p) * 4 + lane] != no_row;
+                shared = placed == (row_of_[first * 4 + lane] != no_row) &&
+                         (!placed || same_lane(bases_[first + p], bases_[first], static_cast<int>(lane)));
+            }
+        const std::uint32_t count = shared ? 1 : record.point_count;
+        std::copy_n(bases_.begin() + first, count, bases_.begin() + kept);  // kept <= first: a copy down, in order
+        record.basis = kept;
+        record.basis_step = shared ? 0 : 1;
+        kept += count;
+    }
+}
+
+std::size_t WideRecords::basis_count() const {
+    std::size_t count = 0;
+    for (const RecordX4& record : records_) count += record.basis_step == 0 ? 1 : record.point_count;
+    return count;
+}
+
 void WideRecords::prepare() {
+    keep_bases_once();
     const Float4 zero = splat<Float4>(0.0);
     for (const RecordX4& record : records_) {
         // Body 1's share is added in every lane: a static body's (and an empty lane's) masses and anchor are zero.
         for (std::uint32_t p = 0; p < record.point_count; ++p) {
             PointX4& point = points_[record.first_point + p];
+            const Mat3x4& basis = bases_[record.basis + p * record.basis_step];
             std::array<Float4, 3>& tangent_response = tangent_response_[record.first_point + p];
             const Mat3x4 body_0 = world_delta_velocity_matrix_of<Mat3x4>(point.anchor[0], record.inverse_inertia[0],
                                                                          record.inverse_mass[0]);
             const Mat3x4 body_1 = world_delta_velocity_matrix_of<Mat3x4>(point.anchor[1], record.inverse_inertia[1],
                                                                          record.inverse_mass[1]);
             const FrictionMatrixOf<Float4> f =
-                friction_matrix<Float4>(delta_velocity_matrix_of<Mat3x4, Float4>(point.basis, body_0, &body_1));
+                friction_matrix<Float4>(delta_velocity_matrix_of<Mat3x4, Float4>(basis, body_0, &body_1));
             // A lane without friction keeps no friction rows (fill_contact_row's zeros).
             const Mask4 rows = point.friction != zero;
             for (int k = 0; k < 2; ++k) point.normal_to_tangent[k] = select(rows, f.normal_to_tangent[k], zero);
@@ -295,14 +343,15 @@ void WideRecords::warm_start_records(WideVisit* kept) {
         for (std::uint32_t p = 0; p < record.point_count; ++p) {
             const std::uint32_t q = record.first_point + p;
             PointX4& point = points_[q];
+            const Mat3x4& basis = bases_[record.basis + p * record.basis_step];
             if constexpr (keeping)
                 for (int lane = 0; lane < 4; ++lane)
                     if (const std::uint32_t r = row_of_[q * 4 + static_cast<std::uint32_t>(lane)]; r != no_row) {
-                        kept[r].velocity = lane_of(contact_velocity(s, point), lane);
+                        kept[r].velocity = lane_of(contact_velocity(s, point, basis), lane);
                         kept[r].visit = RowVisit{};  // from 0: the total counts what this sub-step has applied
                         kept[r].visit.unclamped = kept[r].visit.after = lane_of(point.total, lane);
                     }
-            apply(record, point, s, point.total);
+            apply(record, point, basis, s, point.total);
             keep_most_pushed(point, point.total.n);  // the total itself is unchanged: its lines stay clean
         }
         scatter(record, velocities_.data(), s);
@@ -329,16 +378,17 @@ void WideRecords::sweep_records(WideVisit* kept) {
         for (std::uint32_t p = 0; p < record.point_count; ++p) {
             const std::uint32_t q = record.first_point + p;
             PointX4& point = points_[q];
+            const Mat3x4& basis = bases_[record.basis + p * record.basis_step];
             if constexpr (moved) {
                 // p = p0 - n . [(dx0 + R0 r0 - r0) - (dx1 + R1 r1 - r1)]; a static body's move is zero.
                 const Vec3x4 m0 = anchor_move(moved_by[0], turned_by[0], point.anchor[0]);
                 const Vec3x4 m1 = anchor_move(moved_by[1], turned_by[1], point.anchor[1]);
                 const Vec3x4 separated{m0.x() - m1.x(), m0.y() - m1.y(), m0.z() - m1.z()};
-                point.penetration = point.prepared_penetration - dot(separated, point.basis.column[0]);
+                point.penetration = point.prepared_penetration - dot(separated, basis.column[0]);
             }
             const SoftAimOf<Float4> aim = soft_aim<Float4>(point.penetration, softness_.bias_rate,
                                                            softness_.max_push_velocity, softness_.substep);
-            const AxesOf<Float4> velocity = contact_velocity(s, point);
+            const AxesOf<Float4> velocity = contact_velocity(s, point, basis);
             // soft_step.cpp's target_of, lane by lane.
             NormalTargetOf<Float4> target;
             if constexpr (biased)
@@ -347,7 +397,7 @@ void WideRecords::sweep_records(WideVisit* kept) {
             else
                 target = {aim.relax_velocity, one, zero};
             const RowVisitOf<Float4> v = solve_rows<Float4>(point, tangent_response_[q], point.total, velocity, target);
-            apply(record, point, s, v.increment());
+            apply(record, point, basis, s, v.increment());
             keep_total(point, v.after);
             if constexpr (keeping)
                 for (int lane = 0; lane < 4; ++lane)
@@ -362,17 +412,19 @@ void WideRecords::sweep_records(WideVisit* kept) {
 }
 
 void WideRecords::totals(std::span<Axes> total, std::span<double> most_pushed, std::span<Vec3> world) const {
-    for (std::size_t q = 0; q < points_.size(); ++q) {
-        const PointX4& point = points_[q];
-        const Vec3x4 g = world_impulse(point, point.total);  // as apply's
-        for (int lane = 0; lane < 4; ++lane) {
-            const std::uint32_t r = row_of_[q * 4 + static_cast<std::uint32_t>(lane)];
-            if (r == no_row) continue;
-            total[r] = lane_of(point.total, lane);
-            most_pushed[r] = std::max(most_pushed[r], double(point.most_pushed[lane]));
-            world[r] = Vec3(g.x()[lane], g.y()[lane], g.z()[lane]);
+    for (const RecordX4& record : records_)
+        for (std::uint32_t p = 0; p < record.point_count; ++p) {
+            const std::uint32_t q = record.first_point + p;
+            const PointX4& point = points_[q];
+            const Vec3x4 g = world_impulse(bases_[record.basis + p * record.basis_step], point.total);  // as apply's
+            for (int lane = 0; lane < 4; ++lane) {
+                const std::uint32_t r = row_of_[q * 4 + static_cast<std::uint32_t>(lane)];
+                if (r == no_row) continue;
+                total[r] = lane_of(point.total, lane);
+                most_pushed[r] = std::max(most_pushed[r], double(point.most_pushed[lane]));
+                world[r] = Vec3(g.x()[lane], g.y()[lane], g.z()[lane]);
+            }
         }
-    }
 }
 
 }  // namespace impulse

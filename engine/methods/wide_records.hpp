@@ -31,12 +31,11 @@
 namespace impulse {
 
 // Point p of four pairs, lane by lane: what a visit reads, by ContactRow's names, and the total it keeps. A lane with
-// no point p is zero throughout, so its visit applies nothing. Every sweep reads all of it, 14,964 of them (7 MB) on
-// Box3D's large pyramid: what a visit can do without is kept elsewhere (K_tt, which only a sliding visit reads) or
-// found again (the aim, from p).
+// no point p is zero throughout, so its visit applies nothing. Every sweep reads all of it, 14,964 of them (5 MB) on
+// Box3D's large pyramid: what a visit can do without is kept elsewhere (K_tt, which only a sliding visit reads), found
+// again (the aim, from p) or kept once for the four pairs' points (the basis, RecordX4::basis).
 struct PointX4 {
     Vec3x4 anchor[2];  // r_i (zero for a static body)
-    Mat3x4 basis;      // step 1's contact_to_world
     Float4 normal_mass, friction;
     Float4 normal_to_tangent[2];  // K_tn
     Float4 tangent_mass[3];       // K_tt^-1 (11, 12, 22)
@@ -53,6 +52,10 @@ struct RecordX4 {
     Float4 inverse_mass[2];
     SymmetricMat3x4 inverse_inertia[2];  // I^-1 (world)
     std::uint32_t first_point, point_count;
+    // Point p's step 1 contact_to_world is bases[basis + p * basis_step]: a step of 0 when each pair's points have
+    // one basis (a face's points share its normal: every record of Box3D's large pyramid), so a sweep reads 144 bytes
+    // a record where it read them for every point quad (WideRecords::prepare).
+    std::uint32_t basis, basis_step;
 };
 
 // A lane's visit as the recorder is shown it: the velocity it read, its totals, the normal velocity it aimed for.
@@ -79,13 +82,14 @@ public:
     WideRecords(const WideRecords&) = delete;
     WideRecords& operator=(const WideRecords&) = delete;
 
-    // Row r's lanes: what a visit reads, its total so far (row.total_impulse) and p0. The friction rows' entries of
-    // K are not read from the row (fill_contact_row's FrictionFill::coefficient leaves them out): prepare finds them.
-    // Every row is placed once: its lanes are written nowhere else (the points' storage is not cleared first, only
-    // the points with an empty lane).
+    // Row r's lanes: what a visit reads (its basis among them), its total so far (row.total_impulse) and p0. The
+    // friction rows' entries of K are not read from the row (fill_contact_row's FrictionFill::coefficient leaves them
+    // out): prepare finds them. Every row is placed once: its lanes are written nowhere else (the points' storage is
+    // not cleared first, only the points with an empty lane).
     void place(std::size_t r, const ContactRow& row, double prepared_penetration);
-    // Once every row is placed: each point's friction rows' K (friction_matrix of delta_velocity_matrix_of, in its
-    // lanes, from its anchors, basis and bodies' masses as placed), and p0 as its p for the first solve.
+    // Once every row is placed: a record's bases kept once if each of its pairs' points share one; each point's
+    // friction rows' K (friction_matrix of delta_velocity_matrix_of, in its lanes, from its anchors, basis and bodies'
+    // masses as placed), and p0 as its p for the first solve.
     void prepare();
 
     // The bodies' velocities in, and each body's change since back out, added to its double velocities.
@@ -106,8 +110,11 @@ public:
     void totals(std::span<Axes> total, std::span<double> most_pushed, std::span<Vec3> world) const;
 
     std::size_t record_count() const { return records_.size(); }
+    // The bases the records keep once prepared: one a record where each of its pairs' points share one.
+    std::size_t basis_count() const;
 
 private:
+    void keep_bases_once();
     template <bool keeping>
     void warm_start_records(WideVisit* kept);
     template <bool biased, bool moved, bool keeping>
@@ -117,8 +124,11 @@ private:
     std::pmr::memory_resource* scratch_;
     std::pmr::vector<RecordX4> records_;
     // From the scratch, written by place and prepare alone: a vector's resize would write every point once more
-    // (7 MB on Box3D's large pyramid) before place writes it.
+    // (5 MB on Box3D's large pyramid) before place writes it.
     std::span<PointX4> points_;
+    // Per point quad as placed, then per record, or per point quad where a pair's points have bases of their own
+    // (RecordX4::basis); from the scratch as the points.
+    std::span<Mat3x4> bases_;
     std::pmr::vector<std::array<Float4, 3>> tangent_response_;  // per point quad: K_tt (11, 12, 22)
     std::pmr::vector<std::uint32_t> place_;                     // per row: its point quad * 4 + its lane
     std::pmr::vector<std::uint32_t> row_of_;  // per point quad * 4 + lane: its row, or none (an empty lane)

@@ -74,32 +74,47 @@ bool same_axes(const Axes& a, const Axes& b) {
     return a.n == b.n && a.t1 == b.t1 && a.t2 == b.t2;
 }
 
+// pyramid_20's rows at frame 30 in colour order, as soft step places them, with each row's colour, and the colours
+// that give each pair a record of its own (`alone`).
+struct ColouredRows {
+    Scene scene = test::shipped_under("pyramid_20", "soft_step_wide");
+    test::FrameRows frame;
+    std::vector<int> colour, alone;
+    double h = scene.settings.duration / scene.settings.soft_step.substeps;
+    WideSoftness softness{soft_step_softness(scene.settings), scene.settings.soft_step.max_push_velocity, h};
+
+    ColouredRows() {
+        const test::FrameRows detected = test::frame_rows(scene, 30);
+        std::vector<std::array<int, 2>> pairs;
+        for (const ContactRow& row : detected.rows) pairs.push_back(row.body);
+        const std::pmr::vector<int> colours = pair_colours(pairs, detected.bodies, std::pmr::new_delete_resource());
+        const std::pmr::vector<std::uint32_t> slots = slots_of_colours(colours, std::pmr::new_delete_resource());
+        frame = detected;
+        colour.resize(detected.rows.size());
+        for (std::size_t k = 0; k < slots.size(); ++k) {
+            frame.rows[slots[k]] = detected.rows[k];
+            frame.penetration[slots[k]] = detected.penetration[k];
+            colour[slots[k]] = colours[k];
+        }
+        alone.resize(colour.size());
+        for (std::size_t r = 1; r < alone.size(); ++r)
+            alone[r] = alone[r - 1] + (frame.rows[r].body != frame.rows[r - 1].body || colour[r] != colour[r - 1]);
+    }
+    std::size_t pair_count() const { return static_cast<std::size_t>(alone.back() + 1); }
+};
+
 }  // namespace
 
 TEST_CASE("a pair gets the same numbers in a wide record of four pairs as in one of its own, kept or not") {
-    const Scene scene = test::shipped_under("pyramid_20", "soft_step_wide");
-    test::FrameRows detected = test::frame_rows(scene, 30);
-    // The rows in colour order, as soft step places them.
-    std::vector<std::array<int, 2>> pairs;
-    for (const ContactRow& row : detected.rows) pairs.push_back(row.body);
-    const std::pmr::vector<int> colours = pair_colours(pairs, detected.bodies, std::pmr::new_delete_resource());
-    const std::pmr::vector<std::uint32_t> slots = slots_of_colours(colours, std::pmr::new_delete_resource());
-    test::FrameRows frame = detected;
-    std::vector<int> colour(detected.rows.size());
-    for (std::size_t k = 0; k < slots.size(); ++k) {
-        frame.rows[slots[k]] = detected.rows[k];
-        frame.penetration[slots[k]] = detected.penetration[k];
-        colour[slots[k]] = colours[k];
-    }
+    const ColouredRows coloured;
+    const test::FrameRows& frame = coloured.frame;
+    const std::vector<int>& colour = coloured.colour;
+    const std::vector<int>& alone = coloured.alone;
+    const WideSoftness& softness = coloured.softness;
+    const double h = coloured.h;
     REQUIRE(frame.rows.size() > 100);
     for (const int c : colour) REQUIRE(c >= 0);  // no overflow: every pair could share a record
-    // Each pair a colour of its own: a record each.
-    std::vector<int> alone(colour.size());
-    for (std::size_t r = 1; r < alone.size(); ++r)
-        alone[r] = alone[r - 1] + (frame.rows[r].body != frame.rows[r - 1].body || colour[r] != colour[r - 1]);
-    const double h = scene.settings.duration / scene.settings.soft_step.substeps;
-    const WideSoftness softness(soft_step_softness(scene.settings), scene.settings.soft_step.max_push_velocity, h);
-    const std::size_t pair_count = static_cast<std::size_t>(alone.back() + 1);
+    const std::size_t pair_count = coloured.pair_count();
     CHECK(PlacedRecords(frame, colour, softness).records.record_count() < pair_count / 3);
     CHECK(PlacedRecords(frame, alone, softness).records.record_count() == pair_count);
 
@@ -133,6 +148,43 @@ TEST_CASE("a pair gets the same numbers in a wide record of four pairs as in one
     CHECK(pushing > frame.rows.size() / 2);
     CHECK(sliding > frame.rows.size() / 10);
     MESSAGE("rows ", frame.rows.size(), ", pairs ", pair_count, ", pushing ", pushing, ", sliding ", sliding);
+}
+
+TEST_CASE("a record keeps its pairs' basis once where their points share one, and each point's where they do not") {
+    const ColouredRows coloured;
+    const WideSoftness& softness = coloured.softness;
+    // A box on a box or the ground touches at a face's points, which share the face's normal and so its basis.
+    const PlacedRecords shared(coloured.frame, coloured.colour, softness);
+    CHECK(shared.records.basis_count() == shared.records.record_count());
+    // Every point after a pair's first with its tangents turned about the normal (a basis as good, not the same):
+    // each point quad then keeps its own, and a pair still gets in a record of four what it gets alone.
+    test::FrameRows turned = coloured.frame;
+    for (std::size_t r = 1; r < turned.rows.size(); ++r) {
+        if (turned.rows[r].body != turned.rows[r - 1].body) continue;
+        Mat3& basis = turned.rows[r].basis;
+        const Mat3 turn(Eigen::AngleAxisd(0.3, basis.col(0)));
+        basis.col(1) = turn * basis.col(1);
+        basis.col(2) = turn * basis.col(2);
+    }
+    const PlacedRecords own(turned, coloured.colour, softness);
+    CHECK(own.records.basis_count() > 3 * own.records.record_count());
+    const WideOutcome four = wide_substep(turned, coloured.colour, softness, coloured.h, false);
+    const WideOutcome one = wide_substep(turned, coloured.alone, softness, coloured.h, false);
+    const WideOutcome before = wide_substep(coloured.frame, coloured.colour, softness, coloured.h, false);
+    std::size_t moved = 0;
+    for (std::size_t r = 0; r < turned.rows.size(); ++r) {
+        CAPTURE(r);
+        CHECK(same_axes(four.totals[r], one.totals[r]));
+        CHECK(four.world[r] == one.world[r]);
+        // Each point's own basis was read: the totals in turned tangents are other numbers.
+        moved += !same_axes(four.totals[r], before.totals[r]);
+    }
+    for (std::size_t b = 0; b < turned.bodies.size(); ++b) {
+        CAPTURE(b);
+        CHECK(four.bodies[b].velocity == one.bodies[b].velocity);
+        CHECK(four.bodies[b].angular_velocity == one.bodies[b].angular_velocity);
+    }
+    CHECK(moved > turned.rows.size() / 2);
 }
 
 namespace {

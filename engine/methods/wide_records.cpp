@@ -367,14 +367,19 @@ void WideRecords::sweep_records(WideVisit* kept) {
         Vec3x4 moved_by[2];
         Mat3x4 turned_by[2];
         if constexpr (moved)
-            for (int side = 0; side < 2; ++side)
-                for (int lane = 0; lane < 4; ++lane) {
-                    const BodyMove& body = body_of(record, side, lane, moves_.data(), none);
-                    for (int i = 0; i < 3; ++i) {
-                        moved_by[side].v[i][lane] = body.moved[i];
-                        for (int j = 0; j < 3; ++j) turned_by[side].column[j].v[i][lane] = body.turned[3 * j + i];
-                    }
+            for (int side = 0; side < 2; ++side) {
+                // Each of the four lanes at once (a lane written alone reads as the register's others unset).
+                const BodyMove* body[4];
+                for (int lane = 0; lane < 4; ++lane) body[lane] = &body_of(record, side, lane, moves_.data(), none);
+                const auto lanes = [&body](int k, auto of) {
+                    return Float4{of(*body[0])[k], of(*body[1])[k], of(*body[2])[k], of(*body[3])[k]};
+                };
+                for (int i = 0; i < 3; ++i) {
+                    moved_by[side].v[i] = lanes(i, [](const BodyMove& m) { return m.moved; });
+                    for (int j = 0; j < 3; ++j)
+                        turned_by[side].column[j].v[i] = lanes(3 * j + i, [](const BodyMove& m) { return m.turned; });
                 }
+            }
         for (std::uint32_t p = 0; p < record.point_count; ++p) {
             const std::uint32_t q = record.first_point + p;
             PointX4& point = points_[q];

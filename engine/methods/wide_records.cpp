@@ -246,7 +246,8 @@ void WideRecords::keep_bases_once() {
                          (!placed || same_lane(bases_[first + p], bases_[first], static_cast<int>(lane)));
             }
         const std::uint32_t count = shared ? 1 : record.point_count;
-        std::copy_n(bases_.begin() + first, count, bases_.begin() + kept);  // kept <= first: a copy down, in order
+        if (kept != first)  // kept < first: a copy down, in order (std::copy's destination outside its source)
+            std::copy(bases_.begin() + first, bases_.begin() + first + count, bases_.begin() + kept);
         record.basis = kept;
         record.basis_step = shared ? 0 : 1;
         kept += count;
